@@ -1,0 +1,80 @@
+// BVH build time on random soups, and CPU reference closest-hit throughput.
+// Run: bench_bvh_build (Release build); figures go to docs/PERFORMANCE.md with the machine.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "bvh/builder.h"
+#include "bvh/stats.h"
+#include "bvh/traverse_cpu.h"
+#include "core/parallel.h"
+
+namespace penumbra::bvh {
+namespace {
+
+// The same kind of soup the tests use: triangles around random centres in the unit cube,
+// shrinking with the count so the density resembles a mesh.
+std::vector<Triangle> soup(std::size_t count, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f), u11(-1.0f, 1.0f);
+    float size = 0.5f / std::cbrt(float(count));
+    std::vector<Triangle> tris(count);
+    for (auto& t : tris) {
+        Vec3 c(u01(rng), u01(rng), u01(rng));
+        t.v0 = c + Vec3(u11(rng), u11(rng), u11(rng)) * size;
+        t.v1 = c + Vec3(u11(rng), u11(rng), u11(rng)) * size;
+        t.v2 = c + Vec3(u11(rng), u11(rng), u11(rng)) * size;
+    }
+    return tris;
+}
+
+void BM_BuildRandomSoup(benchmark::State& state) {
+    auto tris = soup(std::size_t(state.range(0)), 1);
+    BuildOptions options;
+    Bvh bvh;
+    for (auto _ : state) {
+        bvh = buildTriangles(tris, options);
+        benchmark::DoNotOptimize(bvh.nodes.data());
+    }
+    BvhStats s = computeStats(bvh, options);
+    state.counters["tris/s"] =
+        benchmark::Counter(double(tris.size()), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["sah"] = s.sahCost;
+    state.counters["depth"] = double(s.maxDepth);
+    state.counters["threads"] = hardwareThreads();
+}
+BENCHMARK(BM_BuildRandomSoup)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Arg(1'000'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// One thread, primary-like rays from outside the cube at random points inside it.
+void BM_ClosestHitCpu(benchmark::State& state) {
+    auto tris = soup(std::size_t(state.range(0)), 2);
+    Bvh bvh = buildTriangles(tris);
+    auto leafTris = leafOrderTriVerts(bvh, tris);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<Ray> rays(4096);
+    for (auto& r : rays) {
+        r.origin = Vec3(u(rng) * 3 - 1, u(rng) * 3 - 1, -1.0f);
+        r.direction = Vec3(u(rng), u(rng), u(rng)) - r.origin;
+    }
+    std::size_t hits = 0;
+    for (auto _ : state)
+        for (const Ray& r : rays) hits += closestHit(bvh.nodes, leafTris, r).triangle != PN_NO_HIT;
+    benchmark::DoNotOptimize(hits);
+    state.counters["rays/s"] =
+        benchmark::Counter(double(rays.size()), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["hit%"] = 100.0 * double(hits) / double(rays.size() * state.iterations());
+}
+BENCHMARK(BM_ClosestHitCpu)->Arg(100'000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace penumbra::bvh
+
+BENCHMARK_MAIN();

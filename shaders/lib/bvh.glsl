@@ -1,0 +1,79 @@
+// Scene traversal: the BVH (explicit stack, near child first) and brute force, which is the
+// oracle for tests and shows what the BVH buys. Include after scene_bindings.glsl.
+#ifndef PN_BVH_GLSL
+#define PN_BVH_GLSL
+
+#include "lib/intersect.glsl"
+
+struct Hit {
+    float t;
+    uint triangle;  // PN_NO_HIT on a miss
+    float u;
+    float v;
+};
+
+// anyHit: stop at the first hit below tMax (shadow rays) instead of finding the closest.
+Hit traverseBvh(vec3 o, vec3 d, float tMax, bool anyHit) {
+    Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0);
+    if (frame.nodeCount == 0u) return hit;
+    vec3 invD = safeInverse(d);
+    if (slabEntry(nodes[0].boundsMin, nodes[0].boundsMax, o, invD, tMax) == PN_INFINITY) return hit;
+
+    uint stack[PN_BVH_STACK_SIZE];
+    uint depth = 0u;
+    uint current = 0u;
+    while (true) {
+        BvhNode node = nodes[current];
+        if (node.triCount > 0u) {
+            for (uint i = node.firstOrRight; i < node.firstOrRight + node.triCount; ++i) {
+                float t, u, v;
+                if (intersectTriangle(triVerts[i], o, d, hit.t, t, u, v)) {
+                    hit = Hit(t, i, u, v);
+                    if (anyHit) return hit;
+                }
+            }
+            if (depth == 0u) break;
+            current = stack[--depth];
+            continue;
+        }
+        uint near = current + 1u;
+        uint far = node.firstOrRight;
+        float dNear = slabEntry(nodes[near].boundsMin, nodes[near].boundsMax, o, invD, hit.t);
+        float dFar = slabEntry(nodes[far].boundsMin, nodes[far].boundsMax, o, invD, hit.t);
+        if (dFar < dNear) {
+            uint swapNode = near; near = far; far = swapNode;
+            float swapDist = dNear; dNear = dFar; dFar = swapDist;
+        }
+        if (dNear == PN_INFINITY) {
+            if (depth == 0u) break;
+            current = stack[--depth];
+        } else {
+            current = near;
+            if (dFar != PN_INFINITY) stack[depth++] = far;
+        }
+    }
+    return hit;
+}
+
+Hit traverseBrute(vec3 o, vec3 d, float tMax, bool anyHit) {
+    Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0);
+    for (uint i = 0u; i < frame.triCount; ++i) {
+        float t, u, v;
+        if (intersectTriangle(triVerts[i], o, d, hit.t, t, u, v)) {
+            hit = Hit(t, i, u, v);
+            if (anyHit) return hit;
+        }
+    }
+    return hit;
+}
+
+Hit traceClosest(vec3 o, vec3 d, float tMax) {
+    return frame.accel == PN_ACCEL_BRUTE ? traverseBrute(o, d, tMax, false) : traverseBvh(o, d, tMax, false);
+}
+
+bool traceOccluded(vec3 o, vec3 d, float tMax) {
+    Hit h = frame.accel == PN_ACCEL_BRUTE ? traverseBrute(o, d, tMax, true) : traverseBvh(o, d, tMax, true);
+    return h.triangle != PN_NO_HIT;
+}
+
+#endif

@@ -1,0 +1,13 @@
+// The scene's buffers, as every tracing kernel sees them. Include after shared/types.h.
+#ifndef PN_SCENE_BINDINGS_GLSL
+#define PN_SCENE_BINDINGS_GLSL
+
+layout(std430, set = 0, binding = PN_BINDING_NODES) readonly buffer NodeBuffer { BvhNode nodes[]; };
+layout(std430, set = 0, binding = PN_BINDING_TRI_VERTS) readonly buffer TriVertBuffer { TriVerts triVerts[]; };
+layout(std430, set = 0, binding = PN_BINDING_TRI_ATTRIBS) readonly buffer TriAttribBuffer { TriAttribs triAttribs[]; };
+layout(std430, set = 0, binding = PN_BINDING_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
+layout(std430, set = 0, binding = PN_BINDING_LIGHTS) readonly buffer LightBuffer { LightAlias lights[]; };
+layout(std140, set = 0, binding = PN_BINDING_FRAME) uniform FrameBuffer { FrameUniforms frame; };
+layout(push_constant) uniform PushBlock { PassPush push; };
+
+#endif

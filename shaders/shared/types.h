@@ -1,0 +1,190 @@
+// Every struct and constant that crosses between host and shader. This file is valid GLSL and
+// valid C++; it is the only place these layouts are written (see ../../../shared/design.md).
+// Layouts follow std430 by hand: each vec3 is followed by a 4-byte scalar so that nothing is
+// padded implicitly, and the C++ side checks every size and offset below.
+#ifndef PENUMBRA_SHADER_TYPES_H
+#define PENUMBRA_SHADER_TYPES_H
+
+#ifdef __cplusplus
+#include "core/gpu_types.h"
+#define PN_STRUCT(name) struct alignas(16) name
+namespace penumbra::shader {
+using namespace penumbra::gpu_types;
+#else
+#define PN_STRUCT(name) struct name
+#endif
+
+// ---- limits and workgroup sizes (macros so GLSL layout qualifiers can use them) ----
+#define PN_TRACE_GROUP_X 8
+#define PN_TRACE_GROUP_Y 8
+#define PN_LINEAR_GROUP 64
+#define PN_BVH_STACK_SIZE 64  // the builder refuses trees deeper than this
+#define PN_BVH_MAX_DEPTH 60
+
+// ---- binding indices of the scene descriptor set (set 0) ----
+#define PN_BINDING_NODES 0
+#define PN_BINDING_TRI_VERTS 1
+#define PN_BINDING_TRI_ATTRIBS 2
+#define PN_BINDING_MATERIALS 3
+#define PN_BINDING_LIGHTS 4
+#define PN_BINDING_FRAME 5
+#define PN_BINDING_ACCUM 6
+#define PN_BINDING_COUNTERS 7
+#define PN_BINDING_SCRATCH 8  // pass-specific buffer (bench hits, test rays)
+#define PN_BINDING_SCRATCH2 9
+
+// ---- acceleration modes ----
+#define PN_ACCEL_BVH 0u
+#define PN_ACCEL_BRUTE 1u
+
+// ---- ray benchmark modes (raybench.comp) ----
+#define PN_RAYBENCH_PRIMARY 0u
+#define PN_RAYBENCH_SHADOW 1u
+#define PN_RAYBENCH_DIFFUSE 2u
+
+// ---- material flags ----
+#define PN_MATERIAL_EMISSIVE 1u
+
+#define PN_NO_HIT 0xffffffffu
+
+// BVH node, 32 bytes. Nodes are stored depth-first, so an interior node's left child is the node
+// right after it.
+//   triCount == 0 (interior): firstOrRight = index of the right child
+//   triCount  > 0 (leaf):     firstOrRight = index of the first triangle (triangles are stored in
+//                             leaf order, so a leaf's triangles are contiguous)
+PN_STRUCT(BvhNode) {
+    vec3 boundsMin;     // 12
+    uint firstOrRight;  //  4
+    vec3 boundsMax;     // 12
+    uint triCount;      //  4
+};
+
+// Hot triangle data, read on every traversal step: 48 bytes. Edges are precomputed for
+// Moller-Trumbore (e1 = v1 - v0, e2 = v2 - v0).
+PN_STRUCT(TriVerts) {
+    vec3 v0;
+    float pad0;
+    vec3 e1;
+    float pad1;
+    vec3 e2;
+    float pad2;
+};
+
+// Cold triangle data, read once for the closest hit: 80 bytes.
+PN_STRUCT(TriAttribs) {
+    vec3 n0;          // per-vertex shading normals
+    uint materialId;
+    vec3 n1;
+    float lightPmf;   // probability that light sampling picks this triangle (0: not a light)
+    vec3 n2;
+    float area;       // world-space area, for converting light pdfs
+    vec2 uv0;
+    vec2 uv1;
+    vec2 uv2;
+    vec2 pad;
+};
+
+// 32 bytes.
+PN_STRUCT(Material) {
+    vec3 albedo;      // diffuse reflectance, each channel in [0, 1]
+    uint flags;       // PN_MATERIAL_*
+    vec3 emission;    // emitted radiance from the front face (winding order), W/(m^2 sr) per channel
+    float pad;
+};
+
+// One entry of the alias table over emissive triangles, 16 bytes (Vose's method).
+PN_STRUCT(LightAlias) {
+    uint triangle;    // triangle index (in BVH leaf order)
+    float threshold;  // keep this entry when u < threshold, else take the alias
+    uint alias;       // index of the alias entry
+    float pmf;        // probability of this entry's triangle being chosen
+};
+
+// Per-frame constants (uniform buffer), 128 bytes.
+PN_STRUCT(FrameUniforms) {
+    vec3 cameraPosition;
+    float tanHalfFovY;
+    vec3 cameraRight;    // unit
+    float aspect;        // width / height
+    vec3 cameraUp;       // unit
+    uint width;
+    vec3 cameraForward;  // unit
+    uint height;
+    uint maxBounces;     // path segments after the camera ray (pbrt's maxdepth)
+    uint rouletteStart;  // bounce from which Russian roulette may end paths
+    uint lightCount;     // entries in the alias table
+    uint triCount;
+    uint nodeCount;
+    uint accel;          // PN_ACCEL_*
+    uint seed;
+    uint samplesPerPass;
+    vec4 pad[2];
+};
+
+// Per-dispatch constants, 16 bytes.
+PN_STRUCT(PassPush) {
+    uint passIndex;      // which progressive pass this is; with seed it decorrelates samples
+    uint mode;           // pass-specific (raybench mode, test kernel mode)
+    uint itemCount;      // pass-specific (rays in a test batch)
+    uint countRays;      // nonzero: add traced rays to the counters buffer
+};
+
+// Counters written by the trace pass: rays only when PassPush.countRays is set.
+PN_STRUCT(RayCounters) {
+    uint closestRays;
+    uint shadowRays;
+    uint invalidSamples;  // NaN or infinite path samples (always counted; dropped from the image)
+    uint pad;
+};
+
+// A ray for the test and benchmark kernels, 32 bytes.
+PN_STRUCT(RayDesc) {
+    vec3 origin;
+    float tMax;
+    vec3 direction;
+    float pad;
+};
+
+// A hit from the test and benchmark kernels, 16 bytes.
+PN_STRUCT(HitRecord) {
+    float t;
+    uint triangle;   // PN_NO_HIT when nothing was hit
+    float u;
+    float v;
+};
+
+// A primary hit kept by the ray benchmark for its shadow and bounce passes, 32 bytes.
+PN_STRUCT(SurfacePoint) {
+    vec3 position;
+    uint valid;
+    vec3 normal;
+    float pad;
+};
+
+#ifdef __cplusplus
+// Layout checks: every offset the shader relies on. A failure here means a field moved.
+static_assert(sizeof(BvhNode) == 32 && offsetof(BvhNode, firstOrRight) == 12 &&
+              offsetof(BvhNode, boundsMax) == 16 && offsetof(BvhNode, triCount) == 28);
+static_assert(sizeof(TriVerts) == 48 && offsetof(TriVerts, e1) == 16 && offsetof(TriVerts, e2) == 32);
+static_assert(sizeof(TriAttribs) == 80 && offsetof(TriAttribs, materialId) == 12 &&
+              offsetof(TriAttribs, n1) == 16 && offsetof(TriAttribs, lightPmf) == 28 &&
+              offsetof(TriAttribs, n2) == 32 && offsetof(TriAttribs, area) == 44 &&
+              offsetof(TriAttribs, uv0) == 48 && offsetof(TriAttribs, uv2) == 64);
+static_assert(sizeof(Material) == 32 && offsetof(Material, flags) == 12 &&
+              offsetof(Material, emission) == 16);
+static_assert(sizeof(LightAlias) == 16 && offsetof(LightAlias, pmf) == 12);
+static_assert(sizeof(FrameUniforms) == 128 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
+              offsetof(FrameUniforms, cameraRight) == 16 && offsetof(FrameUniforms, aspect) == 28 &&
+              offsetof(FrameUniforms, cameraUp) == 32 && offsetof(FrameUniforms, width) == 44 &&
+              offsetof(FrameUniforms, cameraForward) == 48 && offsetof(FrameUniforms, height) == 60 &&
+              offsetof(FrameUniforms, maxBounces) == 64 && offsetof(FrameUniforms, samplesPerPass) == 92 &&
+              offsetof(FrameUniforms, pad) == 96);
+static_assert(sizeof(PassPush) == 16 && offsetof(PassPush, countRays) == 12);
+static_assert(sizeof(RayCounters) == 16);
+static_assert(sizeof(RayDesc) == 32 && offsetof(RayDesc, tMax) == 12 && offsetof(RayDesc, direction) == 16);
+static_assert(sizeof(HitRecord) == 16 && offsetof(HitRecord, v) == 12);
+static_assert(sizeof(SurfacePoint) == 32 && offsetof(SurfacePoint, valid) == 12 &&
+              offsetof(SurfacePoint, normal) == 16);
+}  // namespace penumbra::shader
+#endif
+#endif

@@ -1,0 +1,51 @@
+#include "app/common_options.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/error.h"
+#include "scene/presets/presets.h"
+
+namespace penumbra::app {
+
+void addDeviceOption(CLI::App& cmd, std::string& device) {
+    cmd.add_option("--device", device,
+                   "Vulkan device: index from 'penumbra info' or part of its name (default: best; env PENUMBRA_DEVICE)");
+}
+
+void addCameraOptions(CLI::App& cmd, CameraOverrides& o) {
+    cmd.add_option("--camera", o.position, "camera position x,y,z");
+    cmd.add_option("--look-at", o.lookAt, "point the camera looks at, x,y,z");
+    cmd.add_option("--up", o.up, "camera up vector x,y,z");
+    cmd.add_option("--fov", o.fov, "vertical field of view in degrees");
+}
+
+Vec3 parseVec3(const std::string& text, const std::string& flag) {
+    Vec3 v;
+    std::istringstream in(text);
+    char c1 = 0, c2 = 0;
+    std::string rest;
+    if (!(in >> v.x >> c1 >> v.y >> c2 >> v.z) || c1 != ',' || c2 != ',' || (in >> rest) || !isFinite(v))
+        throw UsageError(flag + " expects three numbers separated by commas, like 1,2.5,-3 (got '" + text + "')");
+    return v;
+}
+
+Scene loadScene(const std::string& name, const CameraOverrides& o) {
+    Scene scene = makePreset(name);
+    if (!o.position.empty()) scene.camera.position = parseVec3(o.position, "--camera");
+    if (!o.lookAt.empty()) scene.camera.lookAt = parseVec3(o.lookAt, "--look-at");
+    if (!o.up.empty()) scene.camera.up = parseVec3(o.up, "--up");
+    if (o.fov) scene.camera.fovYDegrees = *o.fov;
+    validateCamera(scene.camera);
+    return scene;
+}
+
+std::unique_ptr<gpu::Context> openDevice(const std::string& selector) {
+    gpu::ContextOptions options;
+    options.deviceSelector = selector;
+    gpu::ContextResult result = gpu::Context::create(options);
+    if (!result.context) throw Error(result.error);
+    return std::move(result.context);
+}
+
+}  // namespace penumbra::app

@@ -1,0 +1,63 @@
+// penumbra info [SCENE]: Vulkan devices, which one would be chosen, limits; with a scene, its
+// size and BVH statistics.
+#include <cstdio>
+#include <memory>
+
+#include "app/commands.h"
+#include "app/common_options.h"
+#include "render/gpu_scene.h"
+
+namespace penumbra::app {
+namespace {
+
+struct InfoArgs {
+    std::string scene;
+    std::string device;
+};
+
+void printScene(const std::string& name) {
+    Scene scene = loadScene(name, {});
+    SceneArrays arrays = buildSceneArrays(scene);
+    const bvh::BvhStats& s = arrays.stats;
+    const std::size_t tris = arrays.triVerts.size();
+    const std::size_t gpuBytes = arrays.nodes.size() * sizeof(shader::BvhNode) + tris * (sizeof(shader::TriVerts) + sizeof(shader::TriAttribs)) +
+                                 arrays.materials.size() * sizeof(shader::Material) + arrays.lights.size() * sizeof(shader::LightAlias);
+    std::printf("scene %s: %zu triangles, %zu materials, %zu emissive triangles\n", scene.name.c_str(), tris,
+                scene.materials.size(), arrays.lights.size());
+    std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, built in %.2f ms\n", s.nodes,
+                s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.buildMilliseconds);
+    std::printf("  gpu memory: %zu bytes (%.1f per triangle)\n", gpuBytes, tris ? double(gpuBytes) / double(tris) : 0.0);
+}
+
+void runInfo(const InfoArgs& args) {
+    std::string error;
+    std::vector<gpu::DeviceInfo> devices = gpu::Context::listDevices(&error);
+    if (devices.empty()) std::printf("no Vulkan devices: %s\n", error.empty() ? "none found" : error.c_str());
+    for (const gpu::DeviceInfo& d : devices) {
+        std::printf("device %u: %s (%s), Vulkan %s, %s, %.1f GiB device-local%s%s\n", d.index, d.name.c_str(),
+                    gpu::deviceTypeName(d.type), gpu::versionString(d.apiVersion).c_str(), d.driverInfo.c_str(),
+                    double(d.deviceLocalBytes) / (1u << 30), d.suitable ? "" : ", unusable: ",
+                    d.suitable ? "" : d.unsuitableWhy.c_str());
+    }
+    if (!devices.empty()) {
+        auto ctx = openDevice(args.device);
+        const VkPhysicalDeviceLimits& l = ctx->info().limits;
+        std::printf("chosen: device %u, %s\n", ctx->info().index, ctx->info().name.c_str());
+        std::printf("  max workgroup invocations %u, max storage buffer range %u bytes, timestamps %s (%.3f ns/tick)\n",
+                    l.maxComputeWorkGroupInvocations, l.maxStorageBufferRange,
+                    ctx->timestampsSupported() ? "yes" : "no", double(l.timestampPeriod));
+    }
+    if (!args.scene.empty()) printScene(args.scene);
+}
+
+}  // namespace
+
+void registerInfo(CLI::App& app, Action& action) {
+    auto args = std::make_shared<InfoArgs>();
+    CLI::App* cmd = app.add_subcommand("info", "list Vulkan devices and the one chosen; with a scene, its statistics");
+    cmd->add_option("scene", args->scene, "built-in scene name");
+    addDeviceOption(*cmd, args->device);
+    cmd->callback([args, &action] { action = [args] { runInfo(*args); }; });
+}
+
+}  // namespace penumbra::app

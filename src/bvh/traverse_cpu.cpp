@@ -1,0 +1,169 @@
+#include "bvh/traverse_cpu.h"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+
+namespace penumbra::bvh {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// Per-ray slab-test setup. A zero direction component gives an infinite inverse; the near and
+// far planes are chosen by the sign bit (so -0 counts as negative), which keeps every product
+// either a signed infinity (origin outside the slab on that side: the box is missed, or the
+// axis does not limit t) or NaN (origin exactly on a face). NaN is then dropped by the argument
+// order of std::max/std::min below, i.e. an axis-parallel ray through a face counts as inside
+// that slab, which is what a closed box needs for triangles lying in the face.
+struct RaySetup {
+    Vec3 origin, invDir;
+    bool negative[3];
+
+    explicit RaySetup(const Ray& ray) : origin(ray.origin) {
+        for (int a = 0; a < 3; ++a) {
+            invDir[a] = 1.0f / ray.direction[a];
+            negative[a] = std::signbit(ray.direction[a]);
+        }
+    }
+
+    // Entry distance of the box clipped to [0, tMax], or +inf when the ray misses it.
+    float enter(const shader::BvhNode& node, float tMax) const {
+        float entry = 0.0f, exit = tMax;
+        for (int a = 0; a < 3; ++a) {
+            float lo = node.boundsMin[a], hi = node.boundsMax[a];
+            float tNear = ((negative[a] ? hi : lo) - origin[a]) * invDir[a];
+            float tFar = ((negative[a] ? lo : hi) - origin[a]) * invDir[a];
+            entry = std::max(entry, tNear);  // (entry < NaN) is false: keeps entry
+            exit = std::min(exit, tFar);     // (NaN < exit) is false: keeps exit
+        }
+        return entry <= exit * kSlabExitScale ? entry : kInf;
+    }
+};
+
+// Shared by closest and any hit: visits leaves near-first and prunes boxes beyond the current
+// closest t. onLeaf returns true to stop the whole traversal.
+template <typename OnLeaf>
+void traverse(std::span<const shader::BvhNode> nodes, const Ray& ray, const float& tMax,
+              TraversalCounts* counts, OnLeaf&& onLeaf) {
+    if (nodes.empty()) return;
+    const auto nodeCount = std::uint32_t(nodes.size());
+    RaySetup setup(ray);
+    if (setup.enter(nodes[0], tMax) == kInf) {
+        if (counts) ++counts->nodesVisited;
+        return;
+    }
+    // Far children wait with their entry distance, so a closer hit found meanwhile discards them
+    // without another box test.
+    std::uint32_t stack[PN_BVH_STACK_SIZE];
+    float stackEntry[PN_BVH_STACK_SIZE];
+    int sp = 0;
+    std::uint32_t current = 0;
+    for (;;) {
+        if (counts) ++counts->nodesVisited;
+        const shader::BvhNode& node = nodes[current];
+        if (node.triCount > 0) {
+            if (onLeaf(node.firstOrRight, node.triCount)) return;
+        } else {
+            std::uint32_t left = current + 1, right = node.firstOrRight;
+            PN_CHECK(left < nodeCount && right < nodeCount);
+            float tLeft = setup.enter(nodes[left], tMax);
+            float tRight = setup.enter(nodes[right], tMax);
+            if (tLeft != kInf || tRight != kInf) {
+                if (tRight < tLeft) {
+                    std::swap(left, right);
+                    std::swap(tLeft, tRight);
+                }
+                if (tRight != kInf) {
+                    // A deeper stack than the builder can produce means a foreign, broken tree.
+                    PN_CHECK(sp < PN_BVH_STACK_SIZE);
+                    stack[sp] = right;
+                    stackEntry[sp++] = tRight;
+                }
+                current = left;
+                continue;
+            }
+        }
+        for (;;) {
+            if (sp == 0) return;
+            --sp;
+            if (stackEntry[sp] <= tMax * kSlabExitScale) break;
+        }
+        current = stack[sp];
+    }
+}
+
+void checkLeafRange(std::uint32_t first, std::uint32_t count, std::size_t triCount) {
+    if (std::uint64_t(first) + count > triCount)
+        throw Error("BVH leaf references triangles [" + std::to_string(first) + ", " +
+                    std::to_string(std::uint64_t(first) + count) + ") but only " +
+                    std::to_string(triCount) + " exist");
+}
+
+}  // namespace
+
+bool intersectTriangle(const shader::TriVerts& tri, const Ray& ray, float tMax, float& t, float& u,
+                       float& v) {
+    // Solve origin + t*dir = v0 + u*e1 + v*e2 by Cramer's rule; the determinant is -dir.n.
+    Vec3 n = cross(tri.e1, tri.e2);
+    float det = -dot(ray.direction, n);
+    if (!(det != 0.0f) || !std::isfinite(det)) return false;  // parallel, degenerate, or NaN
+    float inv = 1.0f / det;
+    Vec3 s = ray.origin - tri.v0;
+    Vec3 c = cross(s, ray.direction);
+    float uu = dot(tri.e2, c) * inv;
+    if (!(uu >= 0.0f && uu <= 1.0f)) return false;
+    float vv = -dot(tri.e1, c) * inv;
+    if (!(vv >= 0.0f && uu + vv <= 1.0f)) return false;
+    float tt = dot(s, n) * inv;
+    if (!(tt > 0.0f && tt < tMax)) return false;
+    t = tt;
+    u = uu;
+    v = vv;
+    return true;
+}
+
+Hit closestHit(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris,
+               const Ray& ray, TraversalCounts* counts) {
+    Hit hit;
+    hit.t = ray.tMax;
+    traverse(nodes, ray, hit.t, counts, [&](std::uint32_t first, std::uint32_t count) {
+        checkLeafRange(first, count, tris.size());
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            if (counts) ++counts->trianglesTested;
+            float t, u, v;
+            if (intersectTriangle(tris[i], ray, hit.t, t, u, v)) hit = {t, i, u, v};
+        }
+        return false;
+    });
+    return hit;
+}
+
+bool anyHit(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris,
+            const Ray& ray, TraversalCounts* counts) {
+    bool found = false;
+    const float tMax = ray.tMax;
+    traverse(nodes, ray, tMax, counts, [&](std::uint32_t first, std::uint32_t count) {
+        checkLeafRange(first, count, tris.size());
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            if (counts) ++counts->trianglesTested;
+            float t, u, v;
+            if (intersectTriangle(tris[i], ray, tMax, t, u, v)) return found = true;
+        }
+        return false;
+    });
+    return found;
+}
+
+Hit closestHitBrute(std::span<const shader::TriVerts> tris, const Ray& ray) {
+    Hit hit;
+    hit.t = ray.tMax;
+    for (std::uint32_t i = 0; i < tris.size(); ++i) {
+        float t, u, v;
+        if (intersectTriangle(tris[i], ray, hit.t, t, u, v)) hit = {t, i, u, v};
+    }
+    return hit;
+}
+
+}  // namespace penumbra::bvh

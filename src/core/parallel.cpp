@@ -1,0 +1,44 @@
+#include "core/parallel.h"
+
+#include <algorithm>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace penumbra {
+
+unsigned hardwareThreads() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+void parallelFor(std::size_t count, std::size_t minChunk,
+                 const std::function<void(std::size_t, std::size_t)>& body) {
+    if (count == 0) return;
+    minChunk = std::max<std::size_t>(1, minChunk);
+    std::size_t threads = std::min<std::size_t>(hardwareThreads(), (count + minChunk - 1) / minChunk);
+    if (threads <= 1) {
+        body(0, count);
+        return;
+    }
+    std::size_t chunk = (count + threads - 1) / threads;
+    std::exception_ptr failure;
+    std::mutex failureMutex;
+    std::vector<std::thread> workers;
+    workers.reserve(threads - 1);
+    auto run = [&](std::size_t begin, std::size_t end) {
+        try {
+            body(begin, end);
+        } catch (...) {
+            std::lock_guard lock(failureMutex);
+            if (!failure) failure = std::current_exception();
+        }
+    };
+    for (std::size_t t = 1; t < threads; ++t) {
+        std::size_t begin = t * chunk, end = std::min(count, begin + chunk);
+        if (begin < end) workers.emplace_back(run, begin, end);
+    }
+    run(0, std::min(count, chunk));
+    for (auto& w : workers) w.join();
+    if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace penumbra

@@ -1,0 +1,40 @@
+#include "image/tonemap.h"
+
+#include <cmath>
+
+namespace penumbra {
+
+float reinhard(float x) {
+    // Written so that NaN fails the comparison and maps to 0, and +inf maps to 1 rather than
+    // inf / inf = NaN.
+    if (!(x > 0)) return 0;
+    if (std::isinf(x)) return 1;
+    return x / (1 + x);
+}
+
+float srgbOetf(float x) {
+    // IEC 61966-2-1: the linear toe and the power segment meet at 0.0031308.
+    if (x <= 0.0031308f) return 12.92f * x;
+    return 1.055f * std::pow(x, 1 / 2.4f) - 0.055f;
+}
+
+std::uint8_t toSrgb8(float linear) {
+    float v = linear > 0 ? (linear < 1 ? linear : 1) : 0;  // also sends NaN to 0
+    return static_cast<std::uint8_t>(std::lround(srgbOetf(v) * 255.0f));
+}
+
+float toneMapChannel(float x, const ToneMapSettings& settings) {
+    return reinhard(x * std::exp2(settings.exposure));
+}
+
+std::vector<std::uint8_t> toneMapToSrgb8(const ImageRgb& image, const ToneMapSettings& settings) {
+    std::vector<std::uint8_t> out;
+    out.reserve(image.pixels.size() * 3);
+    float scale = std::exp2(settings.exposure);
+    for (const Vec3& p : image.pixels) {
+        for (int c = 0; c < 3; ++c) out.push_back(toSrgb8(reinhard(p[c] * scale)));
+    }
+    return out;
+}
+
+}  // namespace penumbra

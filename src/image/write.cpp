@@ -1,0 +1,134 @@
+#include "image/write.h"
+
+#include <stb_image_write.h>
+#include <tinyexr.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+
+namespace penumbra {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lowercase(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+// Encoders write to memory and atomic_file does the I/O: neither stb nor tinyexr reports why
+// a file write failed, while our own write() reports errno (disk full, permission denied).
+std::vector<unsigned char> encodePng(const ImageRgb& image, const ToneMapSettings& settings) {
+    std::vector<std::uint8_t> rgb = toneMapToSrgb8(image, settings);
+    std::vector<unsigned char> out;
+    auto append = [](void* context, void* data, int size) {
+        auto* bytes = static_cast<unsigned char*>(data);
+        static_cast<std::vector<unsigned char>*>(context)->insert(
+            static_cast<std::vector<unsigned char>*>(context)->end(), bytes, bytes + size);
+    };
+    if (!stbi_write_png_to_func(append, &out, image.width, image.height, 3, rgb.data(),
+                                image.width * 3)) {
+        throw Error("PNG encoding failed");
+    }
+    return out;
+}
+
+struct MallocFree {
+    void operator()(void* p) const { std::free(p); }
+};
+
+std::vector<unsigned char> encodeExr(const ImageRgb& image) {
+    // EXR readers expect channels sorted by name, so the planes go B, G, R.
+    const std::size_t n = image.pixels.size();
+    std::vector<float> planes[3];
+    for (auto& plane : planes) plane.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        planes[0][i] = image.pixels[i].z;
+        planes[1][i] = image.pixels[i].y;
+        planes[2][i] = image.pixels[i].x;
+    }
+    unsigned char* planePtrs[3] = {reinterpret_cast<unsigned char*>(planes[0].data()),
+                                   reinterpret_cast<unsigned char*>(planes[1].data()),
+                                   reinterpret_cast<unsigned char*>(planes[2].data())};
+
+    EXRImage exr;
+    InitEXRImage(&exr);
+    exr.num_channels = 3;
+    exr.images = planePtrs;
+    exr.width = image.width;
+    exr.height = image.height;
+
+    EXRChannelInfo channels[3] = {};
+    const char* names[3] = {"B", "G", "R"};
+    int types[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
+    for (int c = 0; c < 3; ++c) {
+        std::snprintf(channels[c].name, sizeof channels[c].name, "%s", names[c]);
+    }
+    EXRHeader header;
+    InitEXRHeader(&header);
+    header.num_channels = 3;
+    header.channels = channels;
+    header.pixel_types = types;            // what the planes hold
+    header.requested_pixel_types = types;  // what the file stores: float32, so round trips are exact
+    header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;  // lossless
+
+    unsigned char* memory = nullptr;
+    const char* err = nullptr;
+    std::size_t size = SaveEXRImageToMemory(&exr, &header, &memory, &err);
+    std::unique_ptr<unsigned char, MallocFree> owned(memory);
+    if (size == 0) {
+        std::string reason = err ? err : "unknown tinyexr error";
+        if (err) FreeEXRErrorMessage(err);
+        throw Error("EXR encoding failed: " + reason);
+    }
+    return std::vector<unsigned char>(memory, memory + size);
+}
+
+}  // namespace
+
+ImageFormat formatFromPath(const fs::path& path) {
+    std::string ext = lowercase(path.extension().string());
+    if (ext == ".png") return ImageFormat::Png;
+    if (ext == ".exr") return ImageFormat::Exr;
+    throw UsageError("cannot tell the image format of '" + path.string() +
+                     "': use a .png or .exr file name");
+}
+
+void writeImage(const fs::path& path, const ImageRgb& image, const ToneMapSettings& settings) {
+    PN_CHECK(image.pixels.size() ==
+             static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height));
+    if (image.empty()) throw Error("cannot write '" + path.string() + "': the image is empty");
+    ImageFormat format = formatFromPath(path);
+    std::vector<unsigned char> bytes =
+        format == ImageFormat::Png ? encodePng(image, settings) : encodeExr(image);
+    writeBytesAtomically(path, bytes);
+}
+
+ImageRgb readExr(const fs::path& path) {
+    float* rgba = nullptr;
+    int width = 0, height = 0;
+    const char* err = nullptr;
+    int rc = LoadEXR(&rgba, &width, &height, path.c_str(), &err);
+    std::unique_ptr<float, MallocFree> owned(rgba);
+    if (rc != TINYEXR_SUCCESS) {
+        std::string reason = err ? err : "tinyexr error " + std::to_string(rc);
+        if (err) FreeEXRErrorMessage(err);
+        throw Error("cannot read EXR '" + path.string() + "': " + reason);
+    }
+    ImageRgb image(width, height);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        image.pixels[i] = {rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]};
+    }
+    return image;
+}
+
+}  // namespace penumbra

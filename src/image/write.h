@@ -1,0 +1,26 @@
+// Image files: PNG (tone-mapped sRGB, for looking at) and EXR (linear float32, for comparing).
+// Every write goes through writeFileAtomically, so a failed write leaves no partial file and
+// never damages an existing one.
+#pragma once
+
+#include <filesystem>
+
+#include "image/image.h"
+#include "image/tonemap.h"
+
+namespace penumbra {
+
+enum class ImageFormat { Png, Exr };
+
+// By extension, case-insensitive. Anything else throws UsageError.
+ImageFormat formatFromPath(const std::filesystem::path& path);
+
+// PNG: tone mapped with settings, RGB8. EXR: linear RGB float32, ZIP-compressed; settings ignored
+// (an EXR keeps the radiance the renderer computed; exposure is a viewing choice).
+void writeImage(const std::filesystem::path& path, const ImageRgb& image,
+                const ToneMapSettings& settings);
+
+// Reads the RGB channels of a single-part EXR (alpha dropped; a one-channel file becomes grey).
+ImageRgb readExr(const std::filesystem::path& path);
+
+}  // namespace penumbra

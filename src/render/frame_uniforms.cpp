@@ -1,0 +1,35 @@
+#include "render/frame_uniforms.h"
+
+#include <cmath>
+
+namespace penumbra {
+
+shader::FrameUniforms makeFrameUniforms(const Camera& camera, const RenderSettings& settings,
+                                        std::uint32_t lightCount, std::uint32_t triCount,
+                                        std::uint32_t nodeCount) {
+    validateCamera(camera);
+    shader::FrameUniforms f{};
+    Vec3 forward = normalize(camera.lookAt - camera.position);
+    // Right-handed: with +y up and looking down +z, +x is on the left of the image.
+    Vec3 right = normalize(cross(forward, camera.up));
+    Vec3 up = cross(right, forward);
+    f.cameraPosition = camera.position;
+    f.cameraForward = forward;
+    f.cameraRight = right;
+    f.cameraUp = up;
+    f.tanHalfFovY = std::tan(camera.fovYDegrees * 0.5f * 3.14159265358979f / 180.0f);
+    f.aspect = float(settings.width) / float(settings.height);
+    f.width = settings.width;
+    f.height = settings.height;
+    f.maxBounces = settings.maxBounces;
+    f.rouletteStart = settings.rouletteStart;
+    f.lightCount = lightCount;
+    f.triCount = triCount;
+    f.nodeCount = nodeCount;
+    f.accel = settings.accel == Accel::Brute ? PN_ACCEL_BRUTE : PN_ACCEL_BVH;
+    f.seed = settings.seed;
+    f.samplesPerPass = settings.samplesPerPass;
+    return f;
+}
+
+}  // namespace penumbra

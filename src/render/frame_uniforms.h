@@ -1,0 +1,14 @@
+// Turns a scene camera and render settings into the shaders' per-frame constants.
+#pragma once
+
+#include "render/settings.h"
+#include "scene/scene.h"
+#include "shared/types.h"
+
+namespace penumbra {
+
+shader::FrameUniforms makeFrameUniforms(const Camera& camera, const RenderSettings& settings,
+                                        std::uint32_t lightCount, std::uint32_t triCount,
+                                        std::uint32_t nodeCount);
+
+}  // namespace penumbra

@@ -1,0 +1,77 @@
+#include "render/gpu_scene.h"
+
+#include <chrono>
+
+#include "bvh/triangle.h"
+#include "core/error.h"
+#include "render/light_table.h"
+
+namespace penumbra {
+
+SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options) {
+    scene.validate();
+    std::vector<SceneTriangle> tris = flattenTriangles(scene);
+    if (tris.size() >= PN_NO_HIT) throw Error("scene '" + scene.name + "' has too many triangles");
+
+    std::vector<bvh::Triangle> geometry(tris.size());
+    for (std::size_t i = 0; i < tris.size(); ++i) geometry[i] = {tris[i].p[0], tris[i].p[1], tris[i].p[2]};
+
+    SceneArrays out;
+    auto start = std::chrono::steady_clock::now();
+    bvh::Bvh tree = bvh::buildTriangles(geometry, options);
+    out.buildMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    out.stats = bvh::computeStats(tree, options);
+    out.nodes = std::move(tree.nodes);
+
+    out.triVerts.resize(tris.size());
+    out.triAttribs.resize(tris.size());
+    std::vector<std::uint32_t> emissive;
+    std::vector<double> power;
+    for (std::size_t i = 0; i < tree.primOrder.size(); ++i) {
+        const SceneTriangle& t = tris[tree.primOrder[i]];
+        out.triVerts[i] = bvh::toTriVerts(geometry[tree.primOrder[i]]);
+        shader::TriAttribs& a = out.triAttribs[i];
+        a = {};
+        a.n0 = t.n[0];
+        a.n1 = t.n[1];
+        a.n2 = t.n[2];
+        a.uv0 = t.uv[0];
+        a.uv1 = t.uv[1];
+        a.uv2 = t.uv[2];
+        a.materialId = t.material;
+        a.area = 0.5f * length(cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
+        const Material& m = scene.materials[t.material];
+        if (m.isEmissive() && a.area > 0) {
+            emissive.push_back(static_cast<std::uint32_t>(i));
+            // Power up to a constant factor (pi): what NEE should be proportional to.
+            power.push_back(double(luminance(m.emission)) * a.area);
+        }
+    }
+    out.lights = buildAliasTable(emissive, power);
+    for (const shader::LightAlias& l : out.lights) out.triAttribs[l.triangle].lightPmf = l.pmf;
+
+    for (const Material& m : scene.materials) {
+        shader::Material gm{};
+        gm.albedo = m.albedo;
+        gm.emission = m.emission;
+        gm.flags = m.isEmissive() ? PN_MATERIAL_EMISSIVE : 0u;
+        out.materials.push_back(gm);
+    }
+    return out;
+}
+
+GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& a)
+    : nodes(gpu::uploadStorageBuffer<shader::BvhNode>(ctx, commands, a.nodes)),
+      triVerts(gpu::uploadStorageBuffer<shader::TriVerts>(ctx, commands, a.triVerts)),
+      triAttribs(gpu::uploadStorageBuffer<shader::TriAttribs>(ctx, commands, a.triAttribs)),
+      materials(gpu::uploadStorageBuffer<shader::Material>(ctx, commands, a.materials)),
+      lights(gpu::uploadStorageBuffer<shader::LightAlias>(ctx, commands, a.lights)),
+      nodeCount(static_cast<std::uint32_t>(a.nodes.size())),
+      triCount(static_cast<std::uint32_t>(a.triVerts.size())),
+      lightCount(static_cast<std::uint32_t>(a.lights.size())) {}
+
+std::size_t GpuScene::deviceBytes() const {
+    return nodes.size() + triVerts.size() + triAttribs.size() + materials.size() + lights.size();
+}
+
+}  // namespace penumbra

@@ -1,0 +1,39 @@
+// The scene as the GPU sees it: BVH nodes, hot and cold triangle arrays in leaf order,
+// materials and the light alias table. Built on the CPU (BVH included), uploaded once.
+#pragma once
+
+#include <vector>
+
+#include "bvh/builder.h"
+#include "bvh/stats.h"
+#include "gpu/buffer.h"
+#include "gpu/commands.h"
+#include "scene/scene.h"
+#include "shared/types.h"
+
+namespace penumbra {
+
+// The host-side arrays, kept separate from the upload so tests and tools can use them on the CPU.
+struct SceneArrays {
+    std::vector<shader::BvhNode> nodes;
+    std::vector<shader::TriVerts> triVerts;      // leaf order
+    std::vector<shader::TriAttribs> triAttribs;  // leaf order
+    std::vector<shader::Material> materials;
+    std::vector<shader::LightAlias> lights;
+    bvh::BvhStats stats{};
+    double buildMilliseconds = 0;
+};
+
+SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options = {});
+
+class GpuScene {
+public:
+    GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& arrays);
+
+    gpu::Buffer nodes, triVerts, triAttribs, materials, lights;
+    std::uint32_t nodeCount = 0, triCount = 0, lightCount = 0;
+
+    std::size_t deviceBytes() const;
+};
+
+}  // namespace penumbra

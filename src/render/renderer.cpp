@@ -1,0 +1,87 @@
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+#include "render/frame_uniforms.h"
+
+namespace penumbra {
+
+Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSettings& settings)
+    : ctx_(ctx), settings_(settings), arrays_(buildSceneArrays(scene)), commands_(ctx), timer_(ctx, 1) {
+    validateSettings(settings_);
+    gpuScene_ = std::make_unique<GpuScene>(ctx, commands_, arrays_);
+    shader::FrameUniforms frame = makeFrameUniforms(scene.camera, settings_, gpuScene_->lightCount,
+                                                    gpuScene_->triCount, gpuScene_->nodeCount);
+    frameUniforms_ = gpu::Buffer(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryKind::HostVisible);
+    std::memcpy(frameUniforms_.mapped(), &frame, sizeof(frame));
+
+    const VkDeviceSize pixels = VkDeviceSize(settings_.width) * settings_.height;
+    accumulation_ = gpu::Buffer(ctx, pixels * sizeof(Vec4),
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                gpu::MemoryKind::DeviceLocal);
+    counters_ = gpu::Buffer(ctx, sizeof(shader::RayCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                            gpu::MemoryKind::HostVisible);
+    std::memset(counters_.mapped(), 0, sizeof(shader::RayCounters));
+    commands_.run([&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0); });
+    trace_ = std::make_unique<TracePass>(ctx, *gpuScene_, frameUniforms_, accumulation_, counters_);
+}
+
+Renderer::~Renderer() = default;
+
+double Renderer::renderPasses(std::uint32_t passes, bool countRays) {
+    timer_.reset();
+    commands_.run([&](VkCommandBuffer cmd) {
+        // The fill that cleared the buffer, and earlier passes, must land before we add to it.
+        gpu::computeBarrier(cmd);
+        timer_.begin(cmd, 0);
+        for (std::uint32_t i = 0; i < passes; ++i) {
+            trace_->record(cmd, settings_.width, settings_.height, passesDone_ + i, countRays);
+            gpu::computeBarrier(cmd);
+        }
+        timer_.end(cmd, 0);
+    });
+    passesDone_ += passes;
+    stats_.samplesPerPixel = passesDone_ * settings_.samplesPerPass;
+    const double ms = timer_.milliseconds(0);
+    stats_.gpuMilliseconds += std::max(0.0, ms);
+    auto* counts = static_cast<shader::RayCounters*>(counters_.mapped());
+    stats_.closestRays += counts->closestRays;
+    stats_.shadowRays += counts->shadowRays;
+    stats_.invalidSamples += counts->invalidSamples;
+    std::memset(counts, 0, sizeof(*counts));
+    return ms;
+}
+
+void Renderer::render(const std::function<void(std::uint32_t)>& onProgress) {
+    const std::uint32_t totalPasses = (settings_.samplesPerPixel + settings_.samplesPerPass - 1) / settings_.samplesPerPass;
+    // Submissions of about a tenth of a second: responsive progress, little per-submit overhead,
+    // and no single submission long enough to trip a driver watchdog. The ray counters are 32-bit
+    // per submission, which this also keeps far from overflowing.
+    std::uint32_t batch = 1;
+    while (passesDone_ < totalPasses) {
+        std::uint32_t n = std::min(batch, totalPasses - passesDone_);
+        auto start = std::chrono::steady_clock::now();
+        renderPasses(n);
+        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        double perPass = seconds / n;
+        batch = perPass > 0 ? std::clamp<std::uint32_t>(std::uint32_t(0.1 / perPass), 1, 32) : 32;
+        if (onProgress) onProgress(stats_.samplesPerPixel);
+    }
+}
+
+std::vector<Vec4> Renderer::accumulation() {
+    return gpu::downloadBuffer<Vec4>(ctx_, commands_, accumulation_, std::size_t(settings_.width) * settings_.height);
+}
+
+ImageRgb Renderer::image() {
+    std::vector<Vec4> sums = accumulation();
+    ImageRgb img(static_cast<int>(settings_.width), static_cast<int>(settings_.height));
+    const float inv = stats_.samplesPerPixel ? 1.0f / float(stats_.samplesPerPixel) : 0.0f;
+    for (std::size_t i = 0; i < sums.size(); ++i) img.pixels[i] = Vec3{sums[i].x, sums[i].y, sums[i].z} * inv;
+    return img;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,61 @@
+// Headless progressive rendering: owns the GPU scene, the accumulation buffer and the passes.
+#pragma once
+
+#include <functional>
+#include <memory>
+
+#include "gpu/timer.h"
+#include "image/image.h"
+#include "render/gpu_scene.h"
+#include "render/passes/trace_pass.h"
+#include "render/settings.h"
+
+namespace penumbra {
+
+struct RenderStats {
+    std::uint32_t samplesPerPixel = 0;  // accumulated so far
+    std::uint64_t closestRays = 0;
+    std::uint64_t shadowRays = 0;
+    std::uint64_t invalidSamples = 0;   // NaN/inf path samples (dropped); should stay 0
+    double gpuMilliseconds = 0;         // GPU time of the trace passes, from timestamps
+};
+
+class Renderer {
+public:
+    Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSettings& settings);
+    ~Renderer();
+
+    // Renders until settings.samplesPerPixel samples are accumulated, calling onProgress with the
+    // sample count after each submission.
+    void render(const std::function<void(std::uint32_t)>& onProgress = {});
+    // Adds `passes` more passes in one submission; returns its GPU milliseconds (-1 if the device
+    // has no timestamps). countRays=false keeps the ray-count atomics out of timed runs.
+    double renderPasses(std::uint32_t passes, bool countRays = true);
+
+    // Mean radiance per pixel so far (top row first).
+    ImageRgb image();
+    // Raw accumulation: rgb = sum of samples, a = sum of squared luminance.
+    std::vector<Vec4> accumulation();
+
+    const RenderStats& stats() const { return stats_; }
+    const SceneArrays& sceneArrays() const { return arrays_; }
+    const GpuScene& gpuScene() const { return *gpuScene_; }
+    const RenderSettings& settings() const { return settings_; }
+    const gpu::Buffer& frameUniforms() const { return frameUniforms_; }
+
+private:
+    const gpu::Context& ctx_;
+    RenderSettings settings_;
+    SceneArrays arrays_;
+    gpu::Commands commands_;
+    std::unique_ptr<GpuScene> gpuScene_;
+    gpu::Buffer frameUniforms_;
+    gpu::Buffer accumulation_;
+    gpu::Buffer counters_;
+    std::unique_ptr<TracePass> trace_;
+    gpu::GpuTimer timer_;
+    std::uint32_t passesDone_ = 0;
+    RenderStats stats_;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,26 @@
+#include "render/scene_pipeline.h"
+
+#include "shared/types.h"
+
+namespace penumbra {
+
+std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx, const std::string& shader,
+                                                        const GpuScene& scene, const gpu::Buffer& frameUniforms,
+                                                        const std::vector<std::uint32_t>& extraStorageBindings) {
+    constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    std::vector<gpu::BindingSpec> bindings = {
+        {PN_BINDING_NODES, storage},     {PN_BINDING_TRI_VERTS, storage},
+        {PN_BINDING_TRI_ATTRIBS, storage}, {PN_BINDING_MATERIALS, storage},
+        {PN_BINDING_LIGHTS, storage},    {PN_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+    for (std::uint32_t b : extraStorageBindings) bindings.push_back({b, storage});
+    auto pipeline = std::make_unique<gpu::ComputePipeline>(ctx, shader, bindings, sizeof(shader::PassPush));
+    pipeline->bind(PN_BINDING_NODES, scene.nodes);
+    pipeline->bind(PN_BINDING_TRI_VERTS, scene.triVerts);
+    pipeline->bind(PN_BINDING_TRI_ATTRIBS, scene.triAttribs);
+    pipeline->bind(PN_BINDING_MATERIALS, scene.materials);
+    pipeline->bind(PN_BINDING_LIGHTS, scene.lights);
+    pipeline->bind(PN_BINDING_FRAME, frameUniforms);
+    return pipeline;
+}
+
+}  // namespace penumbra

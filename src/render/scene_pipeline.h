@@ -1,0 +1,19 @@
+// The bindings every scene-tracing kernel shares, and a helper that makes such a pipeline
+// with its scene buffers already bound.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gpu/pipeline.h"
+#include "render/gpu_scene.h"
+
+namespace penumbra {
+
+// extraStorageBindings: pass-specific storage buffers (accumulation, scratch, ...).
+std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx, const std::string& shader,
+                                                        const GpuScene& scene, const gpu::Buffer& frameUniforms,
+                                                        const std::vector<std::uint32_t>& extraStorageBindings);
+
+}  // namespace penumbra

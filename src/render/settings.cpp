@@ -1,0 +1,32 @@
+#include "render/settings.h"
+
+#include "core/error.h"
+
+namespace penumbra {
+
+void validateSettings(const RenderSettings& s) {
+    auto bad = [](const std::string& what) { throw UsageError(what); };
+    if (s.width == 0 || s.height == 0 || s.width > kMaxImageSide || s.height > kMaxImageSide)
+        bad("image size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+            " is out of range; width and height must be between 1 and " + std::to_string(kMaxImageSide));
+    if (std::uint64_t(s.width) * s.height > kMaxPixels)
+        bad("image of " + std::to_string(std::uint64_t(s.width) * s.height) + " pixels is too large; the limit is " +
+            std::to_string(kMaxPixels) + " pixels");
+    if (s.samplesPerPixel == 0 || s.samplesPerPixel > kMaxSamplesPerPixel)
+        bad("--spp must be between 1 and " + std::to_string(kMaxSamplesPerPixel) + " (got " +
+            std::to_string(s.samplesPerPixel) + ")");
+    if (s.samplesPerPass == 0 || s.samplesPerPass > s.samplesPerPixel)
+        bad("samples per pass must be between 1 and --spp");
+    if (s.maxBounces > kMaxBounces)
+        bad("--bounces must be at most " + std::to_string(kMaxBounces) + " (got " + std::to_string(s.maxBounces) + ")");
+}
+
+Accel parseAccel(const std::string& name) {
+    if (name == "bvh") return Accel::Bvh;
+    if (name == "brute") return Accel::Brute;
+    throw UsageError("unknown --accel '" + name + "'; use bvh or brute");
+}
+
+const char* accelName(Accel accel) { return accel == Accel::Bvh ? "bvh" : "brute"; }
+
+}  // namespace penumbra

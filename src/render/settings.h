@@ -1,0 +1,34 @@
+// What a render is asked to do; validated once, at the edge, with messages that say the fix.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace penumbra {
+
+enum class Accel { Bvh, Brute };
+
+struct RenderSettings {
+    std::uint32_t width = 640;
+    std::uint32_t height = 480;
+    std::uint32_t samplesPerPixel = 64;
+    std::uint32_t samplesPerPass = 1;  // paths per pixel in one dispatch
+    std::uint32_t maxBounces = 16;     // path segments after the camera ray
+    std::uint32_t rouletteStart = 3;   // Russian roulette from this bounce on
+    std::uint32_t seed = 1;
+    Accel accel = Accel::Bvh;
+};
+
+// Limits that keep absurd requests from allocating unbounded memory or running forever.
+constexpr std::uint32_t kMaxImageSide = 16384;
+constexpr std::uint64_t kMaxPixels = 16384ull * 16384ull / 4;  // 64 Mpixel: 1 GiB accumulation
+constexpr std::uint32_t kMaxSamplesPerPixel = 1u << 20;
+constexpr std::uint32_t kMaxBounces = 1024;
+
+// Throws UsageError naming the bad value and the allowed range.
+void validateSettings(const RenderSettings& settings);
+
+Accel parseAccel(const std::string& name);  // "bvh" | "brute"; UsageError otherwise
+const char* accelName(Accel accel);
+
+}  // namespace penumbra

@@ -1,0 +1,24 @@
+// Built-in scenes, made in code so the binary needs no asset files.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace penumbra {
+
+// The Cornell box from the measurements published by the Cornell Program of Computer Graphics,
+// in metres, with its ceiling light.
+Scene makeCornellBox();
+
+// A closed box seen from inside: every wall has diffuse albedo `albedo` and emits `emission`
+// toward the inside. Every pixel's exact value is emission / (1 - albedo) (the furnace test).
+Scene makeFurnace(float albedo, Vec3 emission);
+
+std::vector<std::string> presetNames();
+bool isPreset(const std::string& name);
+// Throws UsageError listing the built-in names when `name` is not one.
+Scene makePreset(const std::string& name);
+
+}  // namespace penumbra

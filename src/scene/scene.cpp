@@ -1,0 +1,85 @@
+#include "scene/scene.h"
+
+#include <cmath>
+
+#include "core/error.h"
+
+namespace penumbra {
+
+std::size_t Scene::triangleCount() const {
+    std::size_t n = 0;
+    for (const Mesh& m : meshes) n += m.triangleCount();
+    return n;
+}
+
+Aabb Scene::bounds() const {
+    Aabb box;
+    for (const Mesh& m : meshes)
+        for (Vec3 p : m.positions) box.grow(p);
+    return box;
+}
+
+void Scene::validate() const {
+    if (materials.empty()) throw Error("scene '" + name + "' has no materials");
+    for (const Material& mat : materials) {
+        if (!isFinite(mat.albedo) || minComponent(mat.albedo) < 0 || maxComponent(mat.albedo) > 1)
+            throw Error("material '" + mat.name + "': albedo must be finite and within [0, 1]");
+        if (!isFinite(mat.emission) || minComponent(mat.emission) < 0)
+            throw Error("material '" + mat.name + "': emission must be finite and >= 0");
+    }
+    for (const Mesh& m : meshes) {
+        const std::string where = "mesh '" + m.name + "' in scene '" + name + "'";
+        if (m.indices.size() % 3 != 0)
+            throw Error(where + ": index count " + std::to_string(m.indices.size()) +
+                        " is not a multiple of 3");
+        if (m.material >= materials.size())
+            throw Error(where + ": material " + std::to_string(m.material) + " does not exist");
+        if (!m.normals.empty() && m.normals.size() != m.positions.size())
+            throw Error(where + ": normal count differs from position count");
+        if (!m.uvs.empty() && m.uvs.size() != m.positions.size())
+            throw Error(where + ": uv count differs from position count");
+        for (std::uint32_t i : m.indices)
+            if (i >= m.positions.size())
+                throw Error(where + ": index " + std::to_string(i) + " is past the " +
+                            std::to_string(m.positions.size()) + " vertices");
+        for (Vec3 p : m.positions)
+            if (!isFinite(p)) throw Error(where + ": a vertex position is not finite");
+    }
+}
+
+std::vector<SceneTriangle> flattenTriangles(const Scene& scene) {
+    std::vector<SceneTriangle> out;
+    out.reserve(scene.triangleCount());
+    for (const Mesh& m : scene.meshes) {
+        for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+            SceneTriangle tri;
+            tri.material = m.material;
+            for (int k = 0; k < 3; ++k) tri.p[k] = m.positions[m.indices[3 * t + k]];
+            Vec3 geometric = normalize(cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]));
+            for (int k = 0; k < 3; ++k) {
+                std::uint32_t i = m.indices[3 * t + k];
+                Vec3 n = m.normals.empty() ? geometric : normalize(m.normals[i]);
+                // A zero or broken normal falls back to the face's own.
+                tri.n[k] = (isFinite(n) && dot(n, n) > 0.5f) ? n : geometric;
+                tri.uv[k] = m.uvs.empty() ? Vec2{} : m.uvs[i];
+            }
+            out.push_back(tri);
+        }
+    }
+    return out;
+}
+
+void validateCamera(const Camera& camera) {
+    Vec3 forward = camera.lookAt - camera.position;
+    if (!isFinite(camera.position) || !isFinite(camera.lookAt) || !isFinite(camera.up))
+        throw UsageError("camera position, look-at and up must be finite numbers");
+    if (length(forward) <= 0)
+        throw UsageError("camera look-at point equals its position; give --look-at a different point");
+    if (length(cross(normalize(forward), normalize(camera.up))) < 1e-4f)
+        throw UsageError("camera up vector is zero or parallel to the view direction; pass another --up");
+    if (!(camera.fovYDegrees > 0 && camera.fovYDegrees < 180))
+        throw UsageError("field of view must be between 0 and 180 degrees (got " +
+                         std::to_string(camera.fovYDegrees) + "); pass e.g. --fov 40");
+}
+
+}  // namespace penumbra

@@ -1,0 +1,133 @@
+// The penumbra executable as a user meets it: outputs, exit codes, one-line errors, no partial
+// files.
+#include <stb/stb_image.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "gpu_fixture.h"
+#include "image/write.h"
+
+namespace penumbra::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+    int exitCode;
+    std::string err;
+};
+
+class CliTest : public GpuTest {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        dir = fs::temp_directory_path() / ("penumbra-cli-" + std::to_string(::getpid()) + "-" +
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override {
+        fs::remove_all(dir);
+        GpuTest::TearDown();
+    }
+
+    // Runs penumbra in `dir` with `args`; env is a prefix of VAR=value assignments.
+    RunResult run(const std::string& args, const std::string& env = "") {
+        const char* device = std::getenv("PENUMBRA_TEST_DEVICE");
+        std::string cmd = "cd '" + dir.string() + "' && env PENUMBRA_DEVICE=" + (device ? device : "llvmpipe") +
+                          " PENUMBRA_VALIDATION=1 " + env + " '" + PENUMBRA_BINARY_PATH + "' " + args +
+                          " >/dev/null 2>stderr.txt";
+        int status = std::system(cmd.c_str());
+        std::ifstream in(dir / "stderr.txt");
+        std::stringstream ss;
+        ss << in.rdbuf();
+        fs::remove(dir / "stderr.txt");
+        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
+    }
+
+    static void expectOneLineError(const RunResult& r, int code, const std::string& mentions) {
+        EXPECT_EQ(r.exitCode, code) << r.err;
+        EXPECT_EQ(r.err.rfind("penumbra: error: ", 0), 0u) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(mentions), std::string::npos) << "expected '" << mentions << "' in: " << r.err;
+    }
+
+    std::vector<fs::path> filesIn(const fs::path& d) {
+        std::vector<fs::path> out;
+        for (const auto& e : fs::recursive_directory_iterator(d)) out.push_back(e.path());
+        return out;
+    }
+
+    fs::path dir;
+};
+
+TEST_F(CliTest, RenderWithoutSceneOrOutputWritesTheCornellBoxToOut) {
+    RunResult r = run("render --width 40 --height 30 --spp 4 --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+    int w = 0, h = 0, channels = 0;
+    unsigned char* pixels = stbi_load((dir / "out" / "cornell.png").c_str(), &w, &h, &channels, 3);
+    ASSERT_NE(pixels, nullptr);
+    EXPECT_EQ(w, 40);
+    EXPECT_EQ(h, 30);
+    long sum = 0;
+    for (int i = 0; i < w * h * 3; ++i) sum += pixels[i];
+    stbi_image_free(pixels);
+    EXPECT_GT(sum, 0) << "the image is black";
+}
+
+TEST_F(CliTest, ExrOutputHoldsLinearRadiance) {
+    RunResult r = run("render cornell -o img.exr --width 16 --height 16 --spp 2 --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    ImageRgb img = readExr(dir / "img.exr");
+    EXPECT_EQ(img.width, 16);
+    EXPECT_FALSE(img.hasNonFinite());
+    EXPECT_GT(luminance(img.mean()), 0.0f);
+    // Only the image: no temporary left beside it.
+    EXPECT_EQ(filesIn(dir).size(), 1u);
+}
+
+TEST_F(CliTest, UnknownSceneIsAUsageError) { expectOneLineError(run("render nosuchscene"), 2, "cornell"); }
+
+TEST_F(CliTest, BadFlagsAreUsageErrors) {
+    expectOneLineError(run("render --bogus"), 2, "--bogus");
+    expectOneLineError(run("render --spp lots"), 2, "--spp");
+    expectOneLineError(run("render --camera 1,2"), 2, "--camera");
+    expectOneLineError(run("render --look-at 0,0,-800 --camera 0,0,-800"), 2, "look-at");
+    expectOneLineError(run("render --accel octree"), 2, "bvh");
+    expectOneLineError(run("render -o picture.jpg"), 2, ".png");
+    EXPECT_TRUE(filesIn(dir).empty());
+}
+
+TEST_F(CliTest, ZeroOrAbsurdSizesAreRefusedBeforeAnyWork) {
+    expectOneLineError(run("render --width 0 -o a.png"), 2, "width");
+    expectOneLineError(run("render --height 1000000 -o a.png"), 2, "16384");
+    expectOneLineError(run("render --spp 0 -o a.png"), 2, "--spp");
+    expectOneLineError(run("render --bounces 100000 -o a.png"), 2, "--bounces");
+    EXPECT_TRUE(filesIn(dir).empty());
+}
+
+TEST_F(CliTest, UnwritableOutputFailsCleanlyAndKeepsTheOldFile) {
+    expectOneLineError(run("render --spp 1 -o missing-dir/a.png"), 1, "missing-dir");
+    fs::create_directory(dir / "adir");
+    expectOneLineError(run("render --spp 1 -o adir"), 2, "adir");
+    {
+        std::ofstream(dir / "keep.png") << "old contents";
+    }
+    expectOneLineError(run("render --width 0 -o keep.png"), 2, "width");
+    std::ifstream in(dir / "keep.png");
+    std::string kept((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_EQ(kept, "old contents");
+}
+
+TEST_F(CliTest, NoVulkanDeviceSaysHowToGetOne) {
+    RunResult r = run("render --spp 1 -o a.png", "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json");
+    expectOneLineError(r, 1, "mesa-vulkan-drivers");
+    EXPECT_FALSE(fs::exists(dir / "a.png"));
+}
+
+}  // namespace
+}  // namespace penumbra::test

@@ -1,0 +1,77 @@
+// The host/shader layout check, both ways: the C++ offsets (static_asserts in types.h pin them
+// at compile time) must equal the offsets glslc actually gave each member, read back from the
+// embedded SPIR-V's OpMemberDecorate Offset decorations.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gpu/shaders.h"
+#include "shared/types.h"
+
+namespace penumbra {
+namespace {
+
+using Offsets = std::map<std::string, std::map<std::uint32_t, std::uint32_t>>;  // struct -> member -> offset
+
+Offsets readMemberOffsets(std::span<const std::uint32_t> spv) {
+    constexpr std::uint32_t kOpName = 5, kOpMemberDecorate = 72, kDecorationOffset = 35;
+    std::map<std::uint32_t, std::string> names;
+    std::map<std::uint32_t, std::map<std::uint32_t, std::uint32_t>> byId;
+    for (std::size_t i = 5; i < spv.size();) {
+        std::uint32_t count = spv[i] >> 16, op = spv[i] & 0xffff;
+        if (count == 0 || i + count > spv.size()) break;
+        if (op == kOpName) names[spv[i + 1]] = reinterpret_cast<const char*>(&spv[i + 2]);
+        if (op == kOpMemberDecorate && spv[i + 3] == kDecorationOffset) byId[spv[i + 1]][spv[i + 2]] = spv[i + 4];
+        i += count;
+    }
+    Offsets out;
+    for (auto& [id, members] : byId)
+        if (names.count(id)) out[names[id]] = members;
+    return out;
+}
+
+void expectMembers(const Offsets& spv, const std::string& name, const std::vector<std::uint32_t>& cpp) {
+    auto it = spv.find(name);
+    if (it == spv.end()) return;  // not used by this shader
+    for (std::uint32_t m = 0; m < cpp.size(); ++m) {
+        auto member = it->second.find(m);
+        if (member != it->second.end()) {
+            EXPECT_EQ(member->second, cpp[m]) << name << " member " << m << " differs between C++ and GLSL";
+        }
+    }
+}
+
+TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
+    using namespace shader;
+    int structsChecked = 0;
+    for (const char* shaderName : {"trace", "raybench", "test_ray_query"}) {
+        Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
+        expectMembers(spv, "BvhNode", {0, offsetof(BvhNode, firstOrRight), offsetof(BvhNode, boundsMax), offsetof(BvhNode, triCount)});
+        expectMembers(spv, "TriVerts", {0, 12, offsetof(TriVerts, e1), 28, offsetof(TriVerts, e2), 44});
+        expectMembers(spv, "TriAttribs", {0, offsetof(TriAttribs, materialId), offsetof(TriAttribs, n1), offsetof(TriAttribs, lightPmf),
+                                          offsetof(TriAttribs, n2), offsetof(TriAttribs, area), offsetof(TriAttribs, uv0),
+                                          offsetof(TriAttribs, uv1), offsetof(TriAttribs, uv2), offsetof(TriAttribs, pad)});
+        expectMembers(spv, "Material", {0, offsetof(Material, flags), offsetof(Material, emission), offsetof(Material, pad)});
+        expectMembers(spv, "LightAlias", {0, offsetof(LightAlias, threshold), offsetof(LightAlias, alias), offsetof(LightAlias, pmf)});
+        expectMembers(spv, "FrameUniforms",
+                      {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight), offsetof(FrameUniforms, aspect),
+                       offsetof(FrameUniforms, cameraUp), offsetof(FrameUniforms, width), offsetof(FrameUniforms, cameraForward),
+                       offsetof(FrameUniforms, height), offsetof(FrameUniforms, maxBounces), offsetof(FrameUniforms, rouletteStart),
+                       offsetof(FrameUniforms, lightCount), offsetof(FrameUniforms, triCount), offsetof(FrameUniforms, nodeCount),
+                       offsetof(FrameUniforms, accel), offsetof(FrameUniforms, seed), offsetof(FrameUniforms, samplesPerPass),
+                       offsetof(FrameUniforms, pad)});
+        expectMembers(spv, "PassPush", {0, 4, 8, offsetof(PassPush, countRays)});
+        expectMembers(spv, "RayCounters", {0, 4, offsetof(RayCounters, invalidSamples), 12});
+        expectMembers(spv, "RayDesc", {0, offsetof(RayDesc, tMax), offsetof(RayDesc, direction), 28});
+        expectMembers(spv, "HitRecord", {0, offsetof(HitRecord, triangle), 8, offsetof(HitRecord, v)});
+        expectMembers(spv, "SurfacePoint", {0, offsetof(SurfacePoint, valid), offsetof(SurfacePoint, normal), 28});
+        for (const char* s : {"BvhNode", "TriVerts", "FrameUniforms", "Material"}) structsChecked += int(spv.count(s));
+    }
+    // The reflection must actually have found the structs, or this test proves nothing.
+    EXPECT_GE(structsChecked, 8);
+}
+
+}  // namespace
+}  // namespace penumbra
