@@ -18,7 +18,7 @@ using namespace penumbra::gpu_types;
 #define PN_TRACE_GROUP_X 8
 #define PN_TRACE_GROUP_Y 8
 #define PN_LINEAR_GROUP 64
-#define PN_BVH_STACK_SIZE 64  // the builder refuses trees deeper than this
+#define PN_BVH_STACK_SIZE 64  // traversal stack entries; > PN_BVH_MAX_DEPTH, which the builder guarantees
 #define PN_BVH_MAX_DEPTH 60
 
 // ---- binding indices of the scene descriptor set (set 0) ----

@@ -1,5 +1,7 @@
 #include "core/parallel.h"
 
+#include <sched.h>
+
 #include <algorithm>
 #include <exception>
 #include <mutex>
@@ -8,7 +10,14 @@
 
 namespace penumbra {
 
-unsigned hardwareThreads() { return std::max(1u, std::thread::hardware_concurrency()); }
+// The CPUs this process may run on (taskset, container limits), not the machine's total:
+// oversubscribing a 2-core allowance with 16 threads makes parallel builds slower, not faster.
+unsigned hardwareThreads() {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (sched_getaffinity(0, sizeof(set), &set) == 0) return std::max(1, CPU_COUNT(&set));
+    return std::max(1u, std::thread::hardware_concurrency());
+}
 
 void parallelFor(std::size_t count, std::size_t minChunk,
                  const std::function<void(std::size_t, std::size_t)>& body) {
