@@ -8,7 +8,10 @@ packages=(
   libvulkan-dev glslc spirv-tools
   mesa-vulkan-drivers vulkan-validationlayers   # lavapipe (CPU Vulkan) + validation for tests
   libstb-dev libtinyexr-dev libcli11-dev
+  libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
+  clang libclang-rt-14-dev                      # libFuzzer targets (tests/fuzz)
+  freedoom glmark2-data assimp-testmodels       # real scenes the tests load (never committed)
 )
 
 missing=()

@@ -21,7 +21,19 @@ Aabb Scene::bounds() const {
 
 void Scene::validate() const {
     if (materials.empty()) throw Error("scene '" + name + "' has no materials");
+    auto checkTexture = [&](const Material& mat, const TextureRef& ref) {
+        if (ref.texture >= static_cast<int>(textures.size()))
+            throw Error("material '" + mat.name + "' uses texture " + std::to_string(ref.texture) +
+                        ", which does not exist");
+    };
+    for (const Texture& tex : textures)
+        if (tex.width <= 0 || tex.height <= 0 ||
+            tex.rgba.size() != std::size_t(tex.width) * std::size_t(tex.height) * 4)
+            throw Error("texture '" + tex.name + "' has inconsistent size or pixel data");
     for (const Material& mat : materials) {
+        for (const TextureRef* ref : {&mat.albedoTexture, &mat.emissionTexture, &mat.normalTexture,
+                                      &mat.metallicRoughnessTexture})
+            checkTexture(mat, *ref);
         if (!isFinite(mat.albedo) || minComponent(mat.albedo) < 0 || maxComponent(mat.albedo) > 1)
             throw Error("material '" + mat.name + "': albedo must be finite and within [0, 1]");
         if (!isFinite(mat.emission) || minComponent(mat.emission) < 0)

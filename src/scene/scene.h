@@ -1,5 +1,7 @@
 // The scene model: plain data, no GPU types. Loaders and presets produce it; bvh/ and render/
-// consume it. Lights are emissive materials on triangles (area lights).
+// consume it. Area lights are emissive materials on triangles; punctual lights (point, spot,
+// directional) are carried in `lights`. Everything a loader can read is kept here, even what the
+// integrator cannot shade yet (it then shades the closest supported material).
 #pragma once
 
 #include <cstdint>
@@ -11,12 +13,60 @@
 
 namespace penumbra {
 
+// An 8-bit RGBA image, top row first.
+struct Texture {
+    std::string name;  // file or lump name, for messages
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
+    bool srgb = true;                // colour data (base colour, emission); false for data maps
+};
+
+enum class Wrap { Repeat, ClampToEdge, MirroredRepeat };
+
+// A material's use of a texture; texture < 0 means none.
+struct TextureRef {
+    int texture = -1;
+    Wrap wrapU = Wrap::Repeat;
+    Wrap wrapV = Wrap::Repeat;
+
+    bool present() const { return texture >= 0; }
+};
+
+// One principled model (glTF metallic-roughness plus transmission); OBJ/MTL and WAD map onto it.
 struct Material {
     std::string name;
-    Vec3 albedo{0.8f};  // diffuse reflectance per channel, [0, 1]
+    Vec3 albedo{0.8f};  // base colour / diffuse reflectance per channel, [0, 1]
     Vec3 emission{0};   // radiance leaving the front face (counter-clockwise winding), >= 0
+    float metallic = 0.0f;      // [0, 1]
+    float roughness = 1.0f;     // perceptual roughness, [0, 1]
+    float ior = 1.5f;           // index of refraction of a dielectric, >= 1
+    float transmission = 0.0f;  // [0, 1]: 1 is clear glass
+    float opacity = 1.0f;       // [0, 1] coverage (MTL d, glTF alpha)
+    float alphaCutoff = 0.0f;   // > 0: texels with alpha below it are holes (glTF MASK, Doom)
+    bool twoSided = true;
+    TextureRef albedoTexture;             // sRGB; alpha is coverage
+    TextureRef emissionTexture;           // sRGB, multiplies emission
+    TextureRef normalTexture;             // tangent-space normal map, linear
+    TextureRef metallicRoughnessTexture;  // linear; G = roughness, B = metallic (glTF)
 
     bool isEmissive() const { return maxComponent(emission) > 0.0f; }
+};
+
+enum class LightType { Point, Spot, Directional };
+
+// A punctual light (glTF KHR_lights_punctual, Doom lamps). Area lights are emissive triangles.
+struct Light {
+    std::string name;
+    LightType type = LightType::Point;
+    Vec3 position{0};
+    Vec3 direction{0, -1, 0};  // spot and directional: where the light travels
+    Vec3 color{1};
+    float intensity = 1.0f;    // candela (point, spot) or lux (directional), as glTF defines
+    float range = 0.0f;        // 0: unlimited
+    float radius = 0.0f;       // > 0: a sphere light of this radius (soft shadows)
+    float innerConeRadians = 0.0f;
+    float outerConeRadians = 0.7853982f;
 };
 
 // An indexed triangle mesh with one material. normals and uvs are either empty or one per
@@ -28,6 +78,7 @@ struct Mesh {
     std::vector<Vec2> uvs;
     std::vector<std::uint32_t> indices;  // three per triangle
     std::uint32_t material = 0;
+    float lightLevel = -1.0f;  // Doom sector light level in [0, 1]; -1 when the format has none
 
     std::size_t triangleCount() const { return indices.size() / 3; }
 };
@@ -43,7 +94,10 @@ struct Scene {
     std::string name;
     std::vector<Material> materials;
     std::vector<Mesh> meshes;
+    std::vector<Texture> textures;
+    std::vector<Light> lights;
     Camera camera;
+    Vec3 background{0};  // radiance of rays that leave the scene
 
     std::size_t triangleCount() const;
     Aabb bounds() const;

@@ -19,7 +19,9 @@ TEST(Scene, CornellBoxMatchesThePublishedGeometry) {
     // The light faces down into the room, and is 130 x 105 mm.
     for (const Mesh& m : s.meshes) {
         if (m.name != "light") continue;
-        auto tris = flattenTriangles(Scene{s.name, s.materials, {m}, s.camera});
+        Scene lightOnly = s;
+        lightOnly.meshes = {m};
+        auto tris = flattenTriangles(lightOnly);
         double area = 0;
         for (const SceneTriangle& t : tris) {
             Vec3 n = cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
