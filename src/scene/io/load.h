@@ -1,0 +1,24 @@
+// Opening scene files: the format is chosen by extension and checked against the content.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace penumbra {
+
+struct LoadOptions {
+    std::string map;  // WAD: E1M1, MAP01, ...; empty picks the first map in the file
+};
+
+// Loads .obj, .gltf, .glb, .wad or .json. Throws Error naming the file and the problem.
+Scene loadSceneFile(const std::filesystem::path& path, const LoadOptions& options = {});
+
+// A built-in preset name, or a path to a file.
+Scene loadSceneByName(const std::string& nameOrPath, const LoadOptions& options = {});
+
+// Reads a whole file, refusing files over `maxBytes` (so hostile inputs cannot exhaust memory).
+std::string readFileBytes(const std::filesystem::path& path, std::size_t maxBytes = std::size_t(2) << 30);
+
+}  // namespace penumbra
