@@ -60,7 +60,10 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
     for (uint depth = 0u;; ++depth) {
         ++closestRays;
         Hit hit = traceClosest(origin, direction, PN_INFINITY);
-        if (hit.triangle == PN_NO_HIT) break;
+        if (hit.triangle == PN_NO_HIT) {
+            result += throughput * frame.background;
+            break;
+        }
         Surface s = surfaceAt(hit, origin, direction);
         Material m = materials[s.material];
 
@@ -75,14 +78,15 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
         }
         if (depth >= frame.maxBounces) break;
 
-        if (frame.lightCount > 0u) result += throughput * sampleDirect(s, m.albedo, rng);
+        vec3 albedo = materialBaseColor(m, s.uv).rgb;
+        if (frame.lightCount > 0u) result += throughput * sampleDirect(s, albedo, rng);
 
         vec3 wi = sampleCosineHemisphere(s.shadingNormal, rngNext2(rng));
         // A sample under the true surface (possible with shading normals) carries no light.
         if (dot(wi, s.geometricNormal) <= 0.0) break;
         bsdfPdf = lambertPdf(s.shadingNormal, wi);
         if (!(bsdfPdf > 0.0)) break;
-        throughput *= lambertEval(m.albedo) * dot(s.shadingNormal, wi) / bsdfPdf;
+        throughput *= lambertEval(albedo) * dot(s.shadingNormal, wi) / bsdfPdf;
 
         if (depth + 1u >= frame.rouletteStart) {
             float survive = min(max(throughput.r, max(throughput.g, throughput.b)), 1.0);

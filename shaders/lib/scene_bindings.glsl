@@ -8,6 +8,8 @@ layout(std430, set = 0, binding = PN_BINDING_TRI_ATTRIBS) readonly buffer TriAtt
 layout(std430, set = 0, binding = PN_BINDING_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
 layout(std430, set = 0, binding = PN_BINDING_LIGHTS) readonly buffer LightBuffer { LightAlias lights[]; };
 layout(std140, set = 0, binding = PN_BINDING_FRAME) uniform FrameBuffer { FrameUniforms frame; };
+layout(std430, set = 0, binding = PN_BINDING_TEXTURES) readonly buffer TextureBuffer { TextureInfo textures[]; };
+layout(std430, set = 0, binding = PN_BINDING_TEXELS) readonly buffer TexelBuffer { uint texels[]; };
 layout(push_constant) uniform PushBlock { PassPush push; };
 
 #endif

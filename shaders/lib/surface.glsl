@@ -10,6 +10,7 @@ struct Surface {
     uint material;
     float lightPmf;
     float area;
+    vec2 uv;
 };
 
 Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
@@ -27,6 +28,7 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     s.material = ta.materialId;
     s.lightPmf = ta.lightPmf;
     s.area = ta.area;
+    s.uv = interpolateUv(ta, hit.u, hit.v);
     return s;
 }
 

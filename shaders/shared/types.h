@@ -32,6 +32,8 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_COUNTERS 7
 #define PN_BINDING_SCRATCH 8  // pass-specific buffer (bench hits, test rays)
 #define PN_BINDING_SCRATCH2 9
+#define PN_BINDING_TEXTURES 10  // TextureInfo per texture
+#define PN_BINDING_TEXELS 11    // every texture's RGBA8 texels, one uint each
 
 // ---- acceleration modes ----
 #define PN_ACCEL_BVH 0u
@@ -44,6 +46,17 @@ using namespace penumbra::gpu_types;
 
 // ---- material flags ----
 #define PN_MATERIAL_EMISSIVE 1u
+#define PN_MATERIAL_ALPHA_TESTED 2u  // texels with alpha below alphaCutoff are holes
+
+// ---- triangle flags (TriVerts.flags, read during traversal) ----
+#define PN_TRI_ALPHA_TESTED 1u  // its material is alpha tested: check the texture before accepting a hit
+
+// ---- texture flags and wrap modes ----
+#define PN_TEXTURE_SRGB 1u
+#define PN_WRAP_REPEAT 0u
+#define PN_WRAP_CLAMP 1u
+#define PN_WRAP_MIRROR 2u
+#define PN_NO_TEXTURE 0xffffffffu
 
 #define PN_NO_HIT 0xffffffffu
 
@@ -63,7 +76,7 @@ PN_STRUCT(BvhNode) {
 // Moller-Trumbore (e1 = v1 - v0, e2 = v2 - v0).
 PN_STRUCT(TriVerts) {
     vec3 v0;
-    float pad0;
+    uint flags;  // PN_TRI_*
     vec3 e1;
     float pad1;
     vec3 e2;
@@ -84,12 +97,24 @@ PN_STRUCT(TriAttribs) {
     vec2 pad;
 };
 
-// 32 bytes.
+// 48 bytes.
 PN_STRUCT(Material) {
-    vec3 albedo;      // diffuse reflectance, each channel in [0, 1]
-    uint flags;       // PN_MATERIAL_*
-    vec3 emission;    // emitted radiance from the front face (winding order), W/(m^2 sr) per channel
-    float pad;
+    vec3 albedo;          // diffuse reflectance, each channel in [0, 1]; multiplies the texture
+    uint flags;           // PN_MATERIAL_*
+    vec3 emission;        // emitted radiance from the front face (winding order), W/(m^2 sr) per channel
+    float alphaCutoff;    // with PN_MATERIAL_ALPHA_TESTED
+    uint albedoTexture;   // PN_NO_TEXTURE or an index into the texture table
+    uint albedoWrap;      // PN_WRAP_* for u | (PN_WRAP_* for v) << 8
+    uint pad0;
+    uint pad1;
+};
+
+// Where one texture's texels are in the texel buffer, 16 bytes.
+PN_STRUCT(TextureInfo) {
+    uint firstTexel;
+    uint width;
+    uint height;
+    uint flags;  // PN_TEXTURE_*
 };
 
 // One entry of the alias table over emissive triangles, 16 bytes (Vose's method).
@@ -118,7 +143,9 @@ PN_STRUCT(FrameUniforms) {
     uint accel;          // PN_ACCEL_*
     uint seed;
     uint samplesPerPass;
-    vec4 pad[2];
+    vec3 background;     // radiance of rays that leave the scene
+    float pad0;
+    vec4 pad1;
 };
 
 // Per-dispatch constants, 16 bytes.
@@ -165,20 +192,23 @@ PN_STRUCT(SurfacePoint) {
 // Layout checks: every offset the shader relies on. A failure here means a field moved.
 static_assert(sizeof(BvhNode) == 32 && offsetof(BvhNode, firstOrRight) == 12 &&
               offsetof(BvhNode, boundsMax) == 16 && offsetof(BvhNode, triCount) == 28);
-static_assert(sizeof(TriVerts) == 48 && offsetof(TriVerts, e1) == 16 && offsetof(TriVerts, e2) == 32);
+static_assert(sizeof(TriVerts) == 48 && offsetof(TriVerts, flags) == 12 && offsetof(TriVerts, e1) == 16 &&
+              offsetof(TriVerts, e2) == 32);
 static_assert(sizeof(TriAttribs) == 80 && offsetof(TriAttribs, materialId) == 12 &&
               offsetof(TriAttribs, n1) == 16 && offsetof(TriAttribs, lightPmf) == 28 &&
               offsetof(TriAttribs, n2) == 32 && offsetof(TriAttribs, area) == 44 &&
               offsetof(TriAttribs, uv0) == 48 && offsetof(TriAttribs, uv2) == 64);
-static_assert(sizeof(Material) == 32 && offsetof(Material, flags) == 12 &&
-              offsetof(Material, emission) == 16);
+static_assert(sizeof(Material) == 48 && offsetof(Material, flags) == 12 &&
+              offsetof(Material, emission) == 16 && offsetof(Material, alphaCutoff) == 28 &&
+              offsetof(Material, albedoTexture) == 32 && offsetof(Material, albedoWrap) == 36);
+static_assert(sizeof(TextureInfo) == 16 && offsetof(TextureInfo, flags) == 12);
 static_assert(sizeof(LightAlias) == 16 && offsetof(LightAlias, pmf) == 12);
 static_assert(sizeof(FrameUniforms) == 128 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
               offsetof(FrameUniforms, cameraRight) == 16 && offsetof(FrameUniforms, aspect) == 28 &&
               offsetof(FrameUniforms, cameraUp) == 32 && offsetof(FrameUniforms, width) == 44 &&
               offsetof(FrameUniforms, cameraForward) == 48 && offsetof(FrameUniforms, height) == 60 &&
               offsetof(FrameUniforms, maxBounces) == 64 && offsetof(FrameUniforms, samplesPerPass) == 92 &&
-              offsetof(FrameUniforms, pad) == 96);
+              offsetof(FrameUniforms, background) == 96 && offsetof(FrameUniforms, pad1) == 112);
 static_assert(sizeof(PassPush) == 16 && offsetof(PassPush, countRays) == 12);
 static_assert(sizeof(RayCounters) == 16);
 static_assert(sizeof(RayDesc) == 32 && offsetof(RayDesc, tMax) == 12 && offsetof(RayDesc, direction) == 16);

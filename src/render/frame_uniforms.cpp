@@ -4,7 +4,7 @@
 
 namespace penumbra {
 
-shader::FrameUniforms makeFrameUniforms(const Camera& camera, const RenderSettings& settings,
+shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, const RenderSettings& settings,
                                         std::uint32_t lightCount, std::uint32_t triCount,
                                         std::uint32_t nodeCount) {
     validateCamera(camera);
@@ -29,6 +29,7 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, const RenderSettin
     f.accel = settings.accel == Accel::Brute ? PN_ACCEL_BRUTE : PN_ACCEL_BVH;
     f.seed = settings.seed;
     f.samplesPerPass = settings.samplesPerPass;
+    f.background = background;
     return f;
 }
 

@@ -7,7 +7,8 @@
 
 namespace penumbra {
 
-shader::FrameUniforms makeFrameUniforms(const Camera& camera, const RenderSettings& settings,
+// background: radiance of rays that leave the scene (Scene::background).
+shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, const RenderSettings& settings,
                                         std::uint32_t lightCount, std::uint32_t triCount,
                                         std::uint32_t nodeCount);
 

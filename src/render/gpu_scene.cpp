@@ -1,12 +1,36 @@
 #include "render/gpu_scene.h"
 
 #include <chrono>
+#include <cstring>
 
 #include "bvh/triangle.h"
 #include "core/error.h"
 #include "render/light_table.h"
 
 namespace penumbra {
+namespace {
+
+std::uint32_t wrapCode(Wrap w) {
+    switch (w) {
+        case Wrap::ClampToEdge: return PN_WRAP_CLAMP;
+        case Wrap::MirroredRepeat: return PN_WRAP_MIRROR;
+        default: return PN_WRAP_REPEAT;
+    }
+}
+
+shader::Material toGpuMaterial(const Material& m) {
+    shader::Material gm{};
+    gm.albedo = m.albedo;
+    gm.emission = m.emission;
+    gm.flags = m.isEmissive() ? PN_MATERIAL_EMISSIVE : 0u;
+    gm.albedoTexture = m.albedoTexture.present() ? std::uint32_t(m.albedoTexture.texture) : PN_NO_TEXTURE;
+    gm.albedoWrap = wrapCode(m.albedoTexture.wrapU) | (wrapCode(m.albedoTexture.wrapV) << 8);
+    gm.alphaCutoff = m.alphaCutoff;
+    if (m.alphaCutoff > 0 && m.albedoTexture.present()) gm.flags |= PN_MATERIAL_ALPHA_TESTED;
+    return gm;
+}
+
+}  // namespace
 
 SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options) {
     scene.validate();
@@ -50,13 +74,21 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
     out.lights = buildAliasTable(emissive, power);
     for (const shader::LightAlias& l : out.lights) out.triAttribs[l.triangle].lightPmf = l.pmf;
 
-    for (const Material& m : scene.materials) {
-        shader::Material gm{};
-        gm.albedo = m.albedo;
-        gm.emission = m.emission;
-        gm.flags = m.isEmissive() ? PN_MATERIAL_EMISSIVE : 0u;
-        out.materials.push_back(gm);
+    for (const Texture& t : scene.textures) {
+        const std::size_t texels = std::size_t(t.width) * std::size_t(t.height);
+        if (out.texels.size() + texels > std::size_t(UINT32_MAX))
+            throw Error("scene '" + scene.name + "' has more texture data than fits in one buffer (4 Gi texels)");
+        out.textures.push_back({static_cast<std::uint32_t>(out.texels.size()), std::uint32_t(t.width),
+                                std::uint32_t(t.height), t.srgb ? PN_TEXTURE_SRGB : 0u});
+        const std::size_t first = out.texels.size();
+        out.texels.resize(first + texels);
+        std::memcpy(out.texels.data() + first, t.rgba.data(), texels * 4);
     }
+    for (const Material& m : scene.materials) out.materials.push_back(toGpuMaterial(m));
+    // Traversal checks alpha only where the flag says so, keeping the common path cheap.
+    for (std::size_t i = 0; i < out.triVerts.size(); ++i)
+        if (out.materials[out.triAttribs[i].materialId].flags & PN_MATERIAL_ALPHA_TESTED)
+            out.triVerts[i].flags |= PN_TRI_ALPHA_TESTED;
     return out;
 }
 
@@ -66,12 +98,15 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       triAttribs(gpu::uploadStorageBuffer<shader::TriAttribs>(ctx, commands, a.triAttribs)),
       materials(gpu::uploadStorageBuffer<shader::Material>(ctx, commands, a.materials)),
       lights(gpu::uploadStorageBuffer<shader::LightAlias>(ctx, commands, a.lights)),
+      textures(gpu::uploadStorageBuffer<shader::TextureInfo>(ctx, commands, a.textures)),
+      texels(gpu::uploadStorageBuffer<std::uint32_t>(ctx, commands, a.texels)),
       nodeCount(static_cast<std::uint32_t>(a.nodes.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
       lightCount(static_cast<std::uint32_t>(a.lights.size())) {}
 
 std::size_t GpuScene::deviceBytes() const {
-    return nodes.size() + triVerts.size() + triAttribs.size() + materials.size() + lights.size();
+    return nodes.size() + triVerts.size() + triAttribs.size() + materials.size() + lights.size() +
+           textures.size() + texels.size();
 }
 
 }  // namespace penumbra

@@ -20,6 +20,8 @@ struct SceneArrays {
     std::vector<shader::TriAttribs> triAttribs;  // leaf order
     std::vector<shader::Material> materials;
     std::vector<shader::LightAlias> lights;
+    std::vector<shader::TextureInfo> textures;
+    std::vector<std::uint32_t> texels;  // RGBA8, one texel per word
     bvh::BvhStats stats{};
     double buildMilliseconds = 0;
 };
@@ -30,7 +32,7 @@ class GpuScene {
 public:
     GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& arrays);
 
-    gpu::Buffer nodes, triVerts, triAttribs, materials, lights;
+    gpu::Buffer nodes, triVerts, triAttribs, materials, lights, textures, texels;
     std::uint32_t nodeCount = 0, triCount = 0, lightCount = 0;
 
     std::size_t deviceBytes() const;

@@ -49,11 +49,14 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
     for (const char* shaderName : {"trace", "raybench", "test_ray_query"}) {
         Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
         expectMembers(spv, "BvhNode", {0, offsetof(BvhNode, firstOrRight), offsetof(BvhNode, boundsMax), offsetof(BvhNode, triCount)});
-        expectMembers(spv, "TriVerts", {0, 12, offsetof(TriVerts, e1), 28, offsetof(TriVerts, e2), 44});
+        expectMembers(spv, "TriVerts", {0, offsetof(TriVerts, flags), offsetof(TriVerts, e1), 28, offsetof(TriVerts, e2), 44});
         expectMembers(spv, "TriAttribs", {0, offsetof(TriAttribs, materialId), offsetof(TriAttribs, n1), offsetof(TriAttribs, lightPmf),
                                           offsetof(TriAttribs, n2), offsetof(TriAttribs, area), offsetof(TriAttribs, uv0),
                                           offsetof(TriAttribs, uv1), offsetof(TriAttribs, uv2), offsetof(TriAttribs, pad)});
-        expectMembers(spv, "Material", {0, offsetof(Material, flags), offsetof(Material, emission), offsetof(Material, pad)});
+        expectMembers(spv, "Material", {0, offsetof(Material, flags), offsetof(Material, emission), offsetof(Material, alphaCutoff),
+                                        offsetof(Material, albedoTexture), offsetof(Material, albedoWrap),
+                                        offsetof(Material, pad0), offsetof(Material, pad1)});
+        expectMembers(spv, "TextureInfo", {0, offsetof(TextureInfo, width), offsetof(TextureInfo, height), offsetof(TextureInfo, flags)});
         expectMembers(spv, "LightAlias", {0, offsetof(LightAlias, threshold), offsetof(LightAlias, alias), offsetof(LightAlias, pmf)});
         expectMembers(spv, "FrameUniforms",
                       {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight), offsetof(FrameUniforms, aspect),
@@ -61,7 +64,7 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, height), offsetof(FrameUniforms, maxBounces), offsetof(FrameUniforms, rouletteStart),
                        offsetof(FrameUniforms, lightCount), offsetof(FrameUniforms, triCount), offsetof(FrameUniforms, nodeCount),
                        offsetof(FrameUniforms, accel), offsetof(FrameUniforms, seed), offsetof(FrameUniforms, samplesPerPass),
-                       offsetof(FrameUniforms, pad)});
+                       offsetof(FrameUniforms, background), offsetof(FrameUniforms, pad0), offsetof(FrameUniforms, pad1)});
         expectMembers(spv, "PassPush", {0, 4, 8, offsetof(PassPush, countRays)});
         expectMembers(spv, "RayCounters", {0, 4, offsetof(RayCounters, invalidSamples), 12});
         expectMembers(spv, "RayDesc", {0, offsetof(RayDesc, tMax), offsetof(RayDesc, direction), 28});

@@ -1,0 +1,63 @@
+// Texture lookups from the texel buffer: bilinear filtering, wrap modes and sRGB decoding done
+// by hand, which works on every Vulkan 1.2 device with no descriptor-indexing features.
+#ifndef PN_TEXTURES_GLSL
+#define PN_TEXTURES_GLSL
+
+float srgbToLinear(float c) {
+    return c <= 0.04045 ? c * (1.0 / 12.92) : pow((c + 0.055) * (1.0 / 1.055), 2.4);
+}
+
+int wrapTexel(int i, int size, uint mode) {
+    if (mode == PN_WRAP_CLAMP) return clamp(i, 0, size - 1);
+    if (mode == PN_WRAP_MIRROR) {
+        int period = 2 * size;
+        int m = ((i % period) + period) % period;
+        return m < size ? m : period - 1 - m;
+    }
+    return ((i % size) + size) % size;
+}
+
+// Colour texels are decoded to linear before filtering, as sRGB texture hardware does.
+vec4 texelAt(TextureInfo info, int x, int y) {
+    vec4 c = unpackUnorm4x8(texels[info.firstTexel + uint(y) * info.width + uint(x)]);
+    if ((info.flags & PN_TEXTURE_SRGB) != 0u) c.rgb = vec3(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
+    return c;
+}
+
+// Linear RGBA at uv (v = 0 is the top row, as glTF and our Texture store it).
+vec4 sampleTexture(uint index, vec2 uv, uint wrap) {
+    TextureInfo info = textures[index];
+    int w = int(info.width), h = int(info.height);
+    vec2 p = uv * vec2(w, h) - 0.5;
+    if (any(isnan(p)) || any(isinf(p))) p = vec2(0.0);
+    vec2 base = floor(p);
+    vec2 f = p - base;
+    // Keep the integer range sane for huge uv values before wrapping.
+    ivec2 i0 = ivec2(clamp(base, vec2(-1e8), vec2(1e8)));
+    uint wrapU = wrap & 0xffu, wrapV = wrap >> 8;
+    int x0 = wrapTexel(i0.x, w, wrapU), x1 = wrapTexel(i0.x + 1, w, wrapU);
+    int y0 = wrapTexel(i0.y, h, wrapV), y1 = wrapTexel(i0.y + 1, h, wrapV);
+    return mix(mix(texelAt(info, x0, y0), texelAt(info, x1, y0), f.x),
+               mix(texelAt(info, x0, y1), texelAt(info, x1, y1), f.x), f.y);
+}
+
+vec2 interpolateUv(TriAttribs ta, float u, float v) {
+    return (1.0 - u - v) * ta.uv0 + u * ta.uv1 + v * ta.uv2;
+}
+
+// Base colour (rgb) and coverage (a) of a material at uv.
+vec4 materialBaseColor(Material m, vec2 uv) {
+    if (m.albedoTexture == PN_NO_TEXTURE) return vec4(m.albedo, 1.0);
+    vec4 t = sampleTexture(m.albedoTexture, uv, m.albedoWrap);
+    return vec4(m.albedo * t.rgb, t.a);
+}
+
+// For alpha-tested triangles: is the point (u, v) of triangle `tri` a hole?
+bool isAlphaHole(uint tri, float u, float v) {
+    TriAttribs ta = triAttribs[tri];
+    Material m = materials[ta.materialId];
+    if ((m.flags & PN_MATERIAL_ALPHA_TESTED) == 0u || m.albedoTexture == PN_NO_TEXTURE) return false;
+    return sampleTexture(m.albedoTexture, interpolateUv(ta, u, v), m.albedoWrap).a < m.alphaCutoff;
+}
+
+#endif

@@ -1,0 +1,80 @@
+// Textures on the GPU: a quad with a 2x2 texture under a uniform white sky. A diffuse surface lit
+// by a uniform unit background reflects exactly its albedo, so each quadrant of the image must
+// show its texel's linear colour; alpha-tested texels must show the sky through them.
+#include "gpu_fixture.h"
+#include "render/renderer.h"
+#include "scene/presets/mesh_builder.h"
+
+namespace penumbra::test {
+namespace {
+
+float srgbToLinear(std::uint8_t c8) {
+    float c = c8 / 255.0f;
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+Scene texturedQuad(float alphaCutoff) {
+    Scene scene;
+    scene.name = "textured quad";
+    scene.background = Vec3{1.0f};
+    // 8x8 texels in four 4x4 blocks, so bilinear filtering inside a block returns the block's
+    // colour exactly: top-left red, top-right green, bottom-left blue (transparent), bottom-right grey.
+    Texture tex;
+    tex.name = "quadrants";
+    tex.width = 8;
+    tex.height = 8;
+    const std::uint8_t blocks[4][4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 0}, {128, 128, 128, 255}};
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            tex.rgba.insert(tex.rgba.end(), blocks[(y / 4) * 2 + x / 4], blocks[(y / 4) * 2 + x / 4] + 4);
+    scene.textures.push_back(tex);
+    std::uint32_t mat = addMaterial(scene, "textured", Vec3{1.0f});
+    scene.materials[mat].albedoTexture.texture = 0;
+    scene.materials[mat].alphaCutoff = alphaCutoff;
+    Mesh quad;
+    quad.name = "quad";
+    quad.material = mat;
+    addQuad(quad, {-1, 1, 0}, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0});
+    quad.uvs = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
+    scene.meshes.push_back(quad);
+    scene.camera.position = {0, 0, 2};
+    scene.camera.lookAt = {0, 0, 0};
+    scene.camera.fovYDegrees = 90;  // the quad fills the middle half of the view
+    return scene;
+}
+
+ImageRgb renderQuad(const gpu::Context& ctx, float alphaCutoff) {
+    RenderSettings s;
+    s.width = 32;
+    s.height = 32;
+    s.samplesPerPixel = 16;
+    s.samplesPerPass = 16;
+    s.maxBounces = 2;
+    Renderer r(ctx, texturedQuad(alphaCutoff), s);
+    r.render();
+    return r.image();
+}
+
+void expectColor(const ImageRgb& img, int x, int y, Vec3 expected) {
+    Vec3 got = img.at(x, y);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], expected[c], 2e-3f) << "pixel " << x << "," << y << " channel " << c;
+}
+
+TEST_F(GpuTest, TexturedQuadShowsEachTexelUnderAUniformSky) {
+    ImageRgb img = renderQuad(*ctx, 0.0f);
+    const float grey = srgbToLinear(128);
+    expectColor(img, 12, 12, {1, 0, 0});
+    expectColor(img, 20, 12, {0, 1, 0});
+    expectColor(img, 12, 20, {0, 0, 1});
+    expectColor(img, 20, 20, {grey, grey, grey});
+    expectColor(img, 0, 0, {1, 1, 1});  // the corner sees the sky past the quad
+}
+
+TEST_F(GpuTest, AlphaTestedTexelsAreHoles) {
+    ImageRgb img = renderQuad(*ctx, 0.5f);
+    expectColor(img, 12, 20, {1, 1, 1});  // the transparent blue block shows the sky
+    expectColor(img, 12, 12, {1, 0, 0});
+}
+
+}  // namespace
+}  // namespace penumbra::test
