@@ -27,8 +27,27 @@ layout(std430, set = 0, binding = PN_BINDING_COUNTERS) buffer CounterBuffer { Ra
 uint closestRays = 0u;
 uint shadowRays = 0u;
 
+// Direct light from a punctual light (a delta light: no MIS, BSDF sampling never hits it).
+vec3 sampleDirectPunctual(Surface s, vec3 albedo, inout uint rng) {
+    float pmf;
+    uint index = pickPunctual(rngNext(rng), pmf);
+    PunctualLight l = punctualLights[index];
+    vec3 wi;
+    float dist;
+    vec3 incident = punctualIncident(l, s.position, wi, dist);
+    float cosSurface = dot(s.shadingNormal, wi);
+    if (cosSurface <= 0.0 || dot(s.geometricNormal, wi) <= 0.0 || !(pmf > 0.0) || max(incident.r, max(incident.g, incident.b)) <= 0.0)
+        return vec3(0.0);
+    vec3 origin = offsetRayOrigin(s.position, s.geometricNormal);
+    ++shadowRays;
+    if (traceOccluded(origin, wi, dist == PN_INFINITY ? PN_INFINITY : dist * (1.0 - 1e-4))) return vec3(0.0);
+    return lambertEval(albedo) * cosSurface * incident / (pmf * frame.punctualProbability);
+}
+
 // Direct light at surface s by light sampling, MIS-weighted against the BSDF.
 vec3 sampleDirect(Surface s, vec3 albedo, inout uint rng) {
+    if (frame.punctualCount > 0u && rngNext(rng) < frame.punctualProbability) return sampleDirectPunctual(s, albedo, rng);
+    if (frame.lightCount == 0u) return vec3(0.0);
     LightSample ls = sampleLight(rng);
     vec3 toLight = ls.position - s.position;
     float dist2 = dot(toLight, toLight);
@@ -71,7 +90,7 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
             float weight = 1.0;
             if (depth > 0u && s.lightPmf > 0.0) {
                 float cosLight = dot(s.geometricNormal, -direction);
-                float lightPdf = s.lightPmf / s.area * hit.t * hit.t / max(cosLight, 1e-12);
+                float lightPdf = s.lightPmf * triangleLightShare() / s.area * hit.t * hit.t / max(cosLight, 1e-12);
                 weight = powerHeuristic(bsdfPdf, lightPdf);
             }
             result += throughput * m.emission * weight;
@@ -79,7 +98,7 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
         if (depth >= frame.maxBounces) break;
 
         vec3 albedo = materialBaseColor(m, s.uv).rgb;
-        if (frame.lightCount > 0u) result += throughput * sampleDirect(s, albedo, rng);
+        if (frame.lightCount + frame.punctualCount > 0u) result += throughput * sampleDirect(s, albedo, rng);
 
         vec3 wi = sampleCosineHemisphere(s.shadingNormal, rngNext2(rng));
         // A sample under the true surface (possible with shading normals) carries no light.

@@ -9,9 +9,13 @@ struct LightSample {
     vec3 position;
     vec3 normal;     // front (emitting) side
     vec3 radiance;
-    float pdfArea;   // pmf of the triangle / its area
+    float pdfArea;   // pmf of the triangle / its area (the triangle table's share included)
 };
 
+// The share of light samples that go to emissive triangles.
+float triangleLightShare() { return frame.lightCount > 0u ? 1.0 - frame.punctualProbability : 0.0; }
+
+// A triangle light point; the caller has already chosen triangles over punctual lights.
 LightSample sampleLight(inout uint rng) {
     float u = rngNext(rng) * float(frame.lightCount);
     uint slot = min(uint(u), frame.lightCount - 1u);
@@ -24,8 +28,45 @@ LightSample sampleLight(inout uint rng) {
     ls.position = tv.v0 + b.x * tv.e1 + b.y * tv.e2;
     ls.normal = normalize(cross(tv.e1, tv.e2));
     ls.radiance = materials[ta.materialId].emission;
-    ls.pdfArea = entry.pmf / ta.area;
+    ls.pdfArea = entry.pmf * triangleLightShare() / ta.area;
     return ls;
+}
+
+// Light from punctual light `index` arriving at p: direction to it, distance, and the radiant
+// intensity falling on p (already divided by distance squared and windowed by range and cone).
+vec3 punctualIncident(PunctualLight l, vec3 p, out vec3 wi, out float dist) {
+    if (l.type == PN_LIGHT_DIRECTIONAL) {
+        wi = -l.direction;
+        dist = PN_INFINITY;
+        return l.intensity;
+    }
+    vec3 d = l.position - p;
+    float dist2 = max(dot(d, d), 1e-12);
+    dist = sqrt(dist2);
+    wi = d / dist;
+    float falloff = 1.0 / dist2;
+    if (l.range > 0.0) {
+        float x = dist / l.range;
+        float window = clamp(1.0 - x * x * x * x, 0.0, 1.0);
+        falloff *= window * window;
+    }
+    if (l.type == PN_LIGHT_SPOT) {
+        float cd = dot(l.direction, -wi);
+        falloff *= smoothstep(l.cosOuter, max(l.cosInner, l.cosOuter + 1e-4), cd);
+    }
+    return l.intensity * falloff;
+}
+
+// Picks a punctual light by its selectPmf (a linear scan: scenes have few).
+uint pickPunctual(float u, out float pmf) {
+    float acc = 0.0;
+    for (uint i = 0u; i < frame.punctualCount; ++i) {
+        pmf = punctualLights[i].selectPmf;
+        acc += pmf;
+        if (u < acc) return i;
+    }
+    pmf = punctualLights[frame.punctualCount - 1u].selectPmf;
+    return frame.punctualCount - 1u;
 }
 
 #endif

@@ -10,6 +10,7 @@ layout(std430, set = 0, binding = PN_BINDING_LIGHTS) readonly buffer LightBuffer
 layout(std140, set = 0, binding = PN_BINDING_FRAME) uniform FrameBuffer { FrameUniforms frame; };
 layout(std430, set = 0, binding = PN_BINDING_TEXTURES) readonly buffer TextureBuffer { TextureInfo textures[]; };
 layout(std430, set = 0, binding = PN_BINDING_TEXELS) readonly buffer TexelBuffer { uint texels[]; };
+layout(std430, set = 0, binding = PN_BINDING_PUNCTUAL) readonly buffer PunctualBuffer { PunctualLight punctualLights[]; };
 layout(push_constant) uniform PushBlock { PassPush push; };
 
 #endif

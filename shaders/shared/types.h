@@ -34,6 +34,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_SCRATCH2 9
 #define PN_BINDING_TEXTURES 10  // TextureInfo per texture
 #define PN_BINDING_TEXELS 11    // every texture's RGBA8 texels, one uint each
+#define PN_BINDING_PUNCTUAL 12  // PunctualLight per point, spot or directional light
 
 // ---- acceleration modes ----
 #define PN_ACCEL_BVH 0u
@@ -57,6 +58,11 @@ using namespace penumbra::gpu_types;
 #define PN_WRAP_CLAMP 1u
 #define PN_WRAP_MIRROR 2u
 #define PN_NO_TEXTURE 0xffffffffu
+
+// ---- punctual light types ----
+#define PN_LIGHT_POINT 0u
+#define PN_LIGHT_SPOT 1u
+#define PN_LIGHT_DIRECTIONAL 2u
 
 #define PN_NO_HIT 0xffffffffu
 
@@ -125,6 +131,20 @@ PN_STRUCT(LightAlias) {
     float pmf;        // probability of this entry's triangle being chosen
 };
 
+// A point, spot or directional light, 64 bytes. Delta lights: reached only by light sampling.
+PN_STRUCT(PunctualLight) {
+    vec3 position;
+    uint type;            // PN_LIGHT_*
+    vec3 intensity;       // colour * intensity: candela (point, spot) or lux (directional)
+    float range;          // 0: unlimited; else glTF's smooth window to zero at this distance
+    vec3 direction;       // unit, where the light travels (spot, directional)
+    float cosOuter;       // spot: cosine of the outer cone angle
+    float cosInner;       // spot: cosine of the inner cone angle
+    float selectPmf;      // probability that light sampling picks this light
+    float pad0;
+    float pad1;
+};
+
 // Per-frame constants (uniform buffer), 128 bytes.
 PN_STRUCT(FrameUniforms) {
     vec3 cameraPosition;
@@ -144,8 +164,11 @@ PN_STRUCT(FrameUniforms) {
     uint seed;
     uint samplesPerPass;
     vec3 background;     // radiance of rays that leave the scene
-    float pad0;
-    vec4 pad1;
+    uint punctualCount;  // entries in the punctual light buffer
+    float punctualProbability;  // chance that light sampling picks a punctual light over a triangle
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 // Per-dispatch constants, 16 bytes.
@@ -208,7 +231,11 @@ static_assert(sizeof(FrameUniforms) == 128 && offsetof(FrameUniforms, tanHalfFov
               offsetof(FrameUniforms, cameraUp) == 32 && offsetof(FrameUniforms, width) == 44 &&
               offsetof(FrameUniforms, cameraForward) == 48 && offsetof(FrameUniforms, height) == 60 &&
               offsetof(FrameUniforms, maxBounces) == 64 && offsetof(FrameUniforms, samplesPerPass) == 92 &&
-              offsetof(FrameUniforms, background) == 96 && offsetof(FrameUniforms, pad1) == 112);
+              offsetof(FrameUniforms, background) == 96 && offsetof(FrameUniforms, punctualCount) == 108 &&
+              offsetof(FrameUniforms, punctualProbability) == 112);
+static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, type) == 12 &&
+              offsetof(PunctualLight, range) == 28 && offsetof(PunctualLight, direction) == 32 &&
+              offsetof(PunctualLight, cosOuter) == 44 && offsetof(PunctualLight, selectPmf) == 52);
 static_assert(sizeof(PassPush) == 16 && offsetof(PassPush, countRays) == 12);
 static_assert(sizeof(RayCounters) == 16);
 static_assert(sizeof(RayDesc) == 32 && offsetof(RayDesc, tMax) == 12 && offsetof(RayDesc, direction) == 16);

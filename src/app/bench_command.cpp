@@ -11,6 +11,7 @@ namespace {
 
 struct BenchArgs {
     std::string scene = "cornell";
+    std::string map;
     std::string device;
     std::string accel = "bvh";
     std::uint32_t width = 1920, height = 1080, bounces = 4;
@@ -29,7 +30,7 @@ void runBench(const BenchArgs& args) {
     settings.samplesPerPixel = 1;
     settings.accel = parseAccel(args.accel);
     validateSettings(settings);
-    Scene scene = loadScene(args.scene, {});
+    Scene scene = loadScene(args.scene, args.map, {});
     auto ctx = openDevice(args.device);
     Renderer renderer(*ctx, scene, settings);
     RayBenchResult r = runRayBench(*ctx, renderer, args.repeats);
@@ -65,7 +66,8 @@ void runBench(const BenchArgs& args) {
 void registerBench(CLI::App& app, Action& action) {
     auto args = std::make_shared<BenchArgs>();
     CLI::App* cmd = app.add_subcommand("bench", "measure BVH build, rays per second and frame time on the GPU");
-    cmd->add_option("scene", args->scene, "built-in scene name");
+    cmd->add_option("scene", args->scene, "built-in scene or scene file");
+    cmd->add_option("--map", args->map, "level of a .wad file");
     cmd->add_option("--width", args->width, "frame width (default 1920)");
     cmd->add_option("--height", args->height, "frame height (default 1080)");
     cmd->add_option("--bounces", args->bounces, "bounces of the timed frame (default 4)");

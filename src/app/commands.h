@@ -12,5 +12,6 @@ using Action = std::function<void()>;
 void registerRender(CLI::App& app, Action& action);
 void registerInfo(CLI::App& app, Action& action);
 void registerBench(CLI::App& app, Action& action);
+void registerExport(CLI::App& app, Action& action);
 
 }  // namespace penumbra::app

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "scene/io/load.h"
 #include "scene/presets/presets.h"
 
 namespace penumbra::app {
@@ -30,8 +31,12 @@ Vec3 parseVec3(const std::string& text, const std::string& flag) {
     return v;
 }
 
-Scene loadScene(const std::string& name, const CameraOverrides& o) {
-    Scene scene = makePreset(name);
+Scene loadScene(const std::string& nameOrPath, const std::string& map, const CameraOverrides& o,
+                SceneFileSettings* fileSettings) {
+    const std::filesystem::path path(nameOrPath);
+    Scene scene = (path.extension() == ".json" && !isPreset(nameOrPath))
+                      ? loadSceneJson(path, fileSettings)
+                      : loadSceneByName(nameOrPath, LoadOptions{map});
     if (!o.position.empty()) scene.camera.position = parseVec3(o.position, "--camera");
     if (!o.lookAt.empty()) scene.camera.lookAt = parseVec3(o.lookAt, "--look-at");
     if (!o.up.empty()) scene.camera.up = parseVec3(o.up, "--up");

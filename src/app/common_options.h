@@ -10,6 +10,7 @@
 
 #include "gpu/context.h"
 #include "render/settings.h"
+#include "scene/io/scene_json.h"
 #include "scene/scene.h"
 
 namespace penumbra::app {
@@ -25,8 +26,10 @@ void addCameraOptions(CLI::App& cmd, CameraOverrides& overrides);
 // Parses "x,y,z"; UsageError naming the flag on anything else.
 Vec3 parseVec3(const std::string& text, const std::string& flag);
 
-// A built-in scene by name, with the camera overrides applied and checked.
-Scene loadScene(const std::string& name, const CameraOverrides& overrides);
+// A built-in scene by name or a scene file (`map` picks a WAD level), with the camera overrides
+// applied and checked. A .json scene file's render settings go to *fileSettings when given.
+Scene loadScene(const std::string& nameOrPath, const std::string& map, const CameraOverrides& overrides,
+                SceneFileSettings* fileSettings = nullptr);
 
 // The Vulkan context, or an Error saying why there is none and how to get one.
 std::unique_ptr<gpu::Context> openDevice(const std::string& selector);

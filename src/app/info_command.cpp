@@ -12,20 +12,26 @@ namespace {
 
 struct InfoArgs {
     std::string scene;
+    std::string map;
     std::string device;
 };
 
-void printScene(const std::string& name) {
-    Scene scene = loadScene(name, {});
+void printScene(const std::string& name, const std::string& map) {
+    Scene scene = loadScene(name, map, {});
+    const std::size_t cpuBytes = sceneBytes(scene);
     SceneArrays arrays = buildSceneArrays(scene);
     const bvh::BvhStats& s = arrays.stats;
     const std::size_t tris = arrays.triVerts.size();
     const std::size_t gpuBytes = arrays.nodes.size() * sizeof(shader::BvhNode) + tris * (sizeof(shader::TriVerts) + sizeof(shader::TriAttribs)) +
-                                 arrays.materials.size() * sizeof(shader::Material) + arrays.lights.size() * sizeof(shader::LightAlias);
+                                 arrays.materials.size() * sizeof(shader::Material) + arrays.lights.size() * sizeof(shader::LightAlias) +
+                                 arrays.textures.size() * sizeof(shader::TextureInfo) + arrays.texels.size() * 4;
     std::printf("scene %s: %zu triangles, %zu materials, %zu emissive triangles\n", scene.name.c_str(), tris,
                 scene.materials.size(), arrays.lights.size());
     std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, built in %.2f ms\n", s.nodes,
                 s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.buildMilliseconds);
+    std::printf("  %zu textures, %zu punctual lights\n", scene.textures.size(), scene.lights.size());
+    std::printf("  cpu memory (scene model): %zu bytes (%.1f per triangle)\n", cpuBytes,
+                tris ? double(cpuBytes) / double(tris) : 0.0);
     std::printf("  gpu memory: %zu bytes (%.1f per triangle)\n", gpuBytes, tris ? double(gpuBytes) / double(tris) : 0.0);
 }
 
@@ -47,7 +53,7 @@ void runInfo(const InfoArgs& args) {
                     l.maxComputeWorkGroupInvocations, l.maxStorageBufferRange,
                     ctx->timestampsSupported() ? "yes" : "no", double(l.timestampPeriod));
     }
-    if (!args.scene.empty()) printScene(args.scene);
+    if (!args.scene.empty()) printScene(args.scene, args.map);
 }
 
 }  // namespace
@@ -55,7 +61,8 @@ void runInfo(const InfoArgs& args) {
 void registerInfo(CLI::App& app, Action& action) {
     auto args = std::make_shared<InfoArgs>();
     CLI::App* cmd = app.add_subcommand("info", "list Vulkan devices and the one chosen; with a scene, its statistics");
-    cmd->add_option("scene", args->scene, "built-in scene name");
+    cmd->add_option("scene", args->scene, "built-in scene or scene file");
+    cmd->add_option("--map", args->map, "level of a .wad file");
     addDeviceOption(*cmd, args->device);
     cmd->callback([args, &action] { action = [args] { runInfo(*args); }; });
 }

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     penumbra::app::registerRender(app, action);
     penumbra::app::registerInfo(app, action);
     penumbra::app::registerBench(app, action);
+    penumbra::app::registerExport(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -18,6 +18,7 @@ namespace {
 
 struct RenderArgs {
     std::string scene = "cornell";
+    std::string map;
     std::string output;  // default: out/<scene>.png
     std::string device;
     std::string accel = "bvh";
@@ -27,15 +28,29 @@ struct RenderArgs {
     RenderSettings settings;
 };
 
-void runRender(const RenderArgs& args) {
+void runRender(const RenderArgs& args, const CLI::App& cmd) {
     RenderSettings settings = args.settings;
     settings.accel = parseAccel(args.accel);
     validateSettings(settings);
-    Scene scene = loadScene(args.scene, args.camera);
+    SceneFileSettings fileSettings;
+    Scene scene = loadScene(args.scene, args.map, args.camera, &fileSettings);
+    // A scene file's render settings apply unless the command line gave the same flag.
+    auto fromFile = [&](const char* flag, const auto& value, auto& target) {
+        if (value && cmd.count(flag) == 0) target = *value;
+    };
+    fromFile("--spp", fileSettings.samplesPerPixel, settings.samplesPerPixel);
+    fromFile("--bounces", fileSettings.maxBounces, settings.maxBounces);
+    fromFile("--width", fileSettings.width, settings.width);
+    fromFile("--height", fileSettings.height, settings.height);
+    float exposure = args.exposure;
+    fromFile("--exposure", fileSettings.exposure, exposure);
+    validateSettings(settings);
 
     std::filesystem::path output = args.output;
     if (output.empty()) {
-        output = std::filesystem::path("out") / (args.scene + ".png");
+        std::string stem = std::filesystem::path(args.scene).stem().string();
+        if (!args.map.empty()) stem += "-" + args.map;
+        output = std::filesystem::path("out") / (stem + ".png");
         std::error_code ec;
         std::filesystem::create_directories(output.parent_path(), ec);  // our own default folder
     }
@@ -52,7 +67,7 @@ void runRender(const RenderArgs& args) {
     progress.finish();
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    writeImage(output, renderer.image(), ToneMapSettings{args.exposure});
+    writeImage(output, renderer.image(), ToneMapSettings{exposure});
     const RenderStats& st = renderer.stats();
     const double rays = double(st.closestRays + st.shadowRays);
     const double gpuSeconds = st.gpuMilliseconds * 1e-3;
@@ -71,7 +86,9 @@ void runRender(const RenderArgs& args) {
 void registerRender(CLI::App& app, Action& action) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "render a scene to a PNG (tone mapped) or EXR (linear HDR) file");
-    cmd->add_option("scene", args->scene, "built-in scene name (cornell, furnace)");
+    cmd->add_option("scene", args->scene,
+                    "built-in scene (cornell, furnace) or a .obj, .gltf, .glb, .wad or .json file (default cornell)");
+    cmd->add_option("--map", args->map, "level of a .wad file, e.g. E1M1 or MAP01 (default: the first)");
     cmd->add_option("-o,--output", args->output, "output file, .png or .exr (default out/SCENE.png)");
     cmd->add_option("--spp", args->settings.samplesPerPixel, "samples per pixel");
     cmd->add_option("--bounces", args->settings.maxBounces, "maximum path segments after the camera ray");
@@ -83,7 +100,7 @@ void registerRender(CLI::App& app, Action& action) {
     cmd->add_flag("-q,--quiet", args->quiet, "no progress bar or summary");
     addDeviceOption(*cmd, args->device);
     addCameraOptions(*cmd, args->camera);
-    cmd->callback([args, &action] { action = [args] { runRender(*args); }; });
+    cmd->callback([args, cmd, &action] { action = [args, cmd] { runRender(*args, *cmd); }; });
 }
 
 }  // namespace penumbra::app

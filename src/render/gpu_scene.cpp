@@ -1,7 +1,9 @@
 #include "render/gpu_scene.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstring>
+#include <numeric>
 
 #include "bvh/triangle.h"
 #include "core/error.h"
@@ -28,6 +30,36 @@ shader::Material toGpuMaterial(const Material& m) {
     gm.alphaCutoff = m.alphaCutoff;
     if (m.alphaCutoff > 0 && m.albedoTexture.present()) gm.flags |= PN_MATERIAL_ALPHA_TESTED;
     return gm;
+}
+
+// Converts the scene's punctual lights and returns their total power (up to the same constant
+// as the triangle lights' power), which splits light samples between the two kinds.
+double addPunctualLights(const Scene& scene, std::vector<shader::PunctualLight>& out) {
+    const Aabb box = scene.bounds();
+    const double sceneRadius = box.empty() ? 1.0 : 0.5 * length(box.extent());
+    std::vector<double> power;
+    for (const Light& l : scene.lights) {
+        shader::PunctualLight p{};
+        p.position = l.position;
+        p.intensity = l.color * l.intensity;
+        p.range = l.range;
+        p.direction = normalize(l.direction);
+        p.type = l.type == LightType::Point ? PN_LIGHT_POINT : (l.type == LightType::Spot ? PN_LIGHT_SPOT : PN_LIGHT_DIRECTIONAL);
+        p.cosOuter = std::cos(l.outerConeRadians);
+        p.cosInner = std::cos(l.innerConeRadians);
+        const double lum = luminance(p.intensity);
+        // Point: 4 pi I. Spot: the cone's solid angle. Directional: irradiance over the scene's
+        // cross-section.
+        double w = l.type == LightType::Point ? 4 * 3.14159265358979 * lum
+                   : l.type == LightType::Spot ? 2 * 3.14159265358979 * (1 - p.cosOuter) * lum
+                                               : 3.14159265358979 * sceneRadius * sceneRadius * lum;
+        if (!(w > 0) || !isFinite(p.position) || !isFinite(p.intensity)) continue;
+        out.push_back(p);
+        power.push_back(w);
+    }
+    const double total = std::accumulate(power.begin(), power.end(), 0.0);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i].selectPmf = float(power[i] / total);
+    return total;
 }
 
 }  // namespace
@@ -72,6 +104,10 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
         }
     }
     out.lights = buildAliasTable(emissive, power);
+    const double trianglePower = 3.14159265358979 * std::accumulate(power.begin(), power.end(), 0.0);
+    const double punctualPower = addPunctualLights(scene, out.punctual);
+    if (!out.punctual.empty())
+        out.punctualProbability = out.lights.empty() ? 1.0f : float(punctualPower / (punctualPower + trianglePower));
     for (const shader::LightAlias& l : out.lights) out.triAttribs[l.triangle].lightPmf = l.pmf;
 
     for (const Texture& t : scene.textures) {
@@ -100,13 +136,16 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       lights(gpu::uploadStorageBuffer<shader::LightAlias>(ctx, commands, a.lights)),
       textures(gpu::uploadStorageBuffer<shader::TextureInfo>(ctx, commands, a.textures)),
       texels(gpu::uploadStorageBuffer<std::uint32_t>(ctx, commands, a.texels)),
+      punctual(gpu::uploadStorageBuffer<shader::PunctualLight>(ctx, commands, a.punctual)),
       nodeCount(static_cast<std::uint32_t>(a.nodes.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
-      lightCount(static_cast<std::uint32_t>(a.lights.size())) {}
+      lightCount(static_cast<std::uint32_t>(a.lights.size())),
+      punctualCount(static_cast<std::uint32_t>(a.punctual.size())),
+      punctualProbability(a.punctualProbability) {}
 
 std::size_t GpuScene::deviceBytes() const {
     return nodes.size() + triVerts.size() + triAttribs.size() + materials.size() + lights.size() +
-           textures.size() + texels.size();
+           textures.size() + texels.size() + punctual.size();
 }
 
 }  // namespace penumbra

@@ -59,6 +59,15 @@ void Scene::validate() const {
     }
 }
 
+std::size_t sceneBytes(const Scene& scene) {
+    std::size_t bytes = sizeof(Scene) + scene.materials.size() * sizeof(Material) + scene.lights.size() * sizeof(Light);
+    for (const Mesh& m : scene.meshes)
+        bytes += sizeof(Mesh) + m.positions.capacity() * sizeof(Vec3) + m.normals.capacity() * sizeof(Vec3) +
+                 m.uvs.capacity() * sizeof(Vec2) + m.indices.capacity() * sizeof(std::uint32_t);
+    for (const Texture& t : scene.textures) bytes += sizeof(Texture) + t.rgba.capacity();
+    return bytes;
+}
+
 std::vector<SceneTriangle> flattenTriangles(const Scene& scene) {
     std::vector<SceneTriangle> out;
     out.reserve(scene.triangleCount());

@@ -114,6 +114,9 @@ struct SceneTriangle {
     std::uint32_t material = 0;
 };
 
+// Bytes the scene model holds in memory (vector payloads), for `penumbra info`.
+std::size_t sceneBytes(const Scene& scene);
+
 // All triangles of the scene in mesh order.
 std::vector<SceneTriangle> flattenTriangles(const Scene& scene);
 

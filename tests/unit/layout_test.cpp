@@ -64,7 +64,12 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, height), offsetof(FrameUniforms, maxBounces), offsetof(FrameUniforms, rouletteStart),
                        offsetof(FrameUniforms, lightCount), offsetof(FrameUniforms, triCount), offsetof(FrameUniforms, nodeCount),
                        offsetof(FrameUniforms, accel), offsetof(FrameUniforms, seed), offsetof(FrameUniforms, samplesPerPass),
-                       offsetof(FrameUniforms, background), offsetof(FrameUniforms, pad0), offsetof(FrameUniforms, pad1)});
+                       offsetof(FrameUniforms, background), offsetof(FrameUniforms, punctualCount),
+                       offsetof(FrameUniforms, punctualProbability)});
+        expectMembers(spv, "PunctualLight", {0, offsetof(PunctualLight, type), offsetof(PunctualLight, intensity),
+                                             offsetof(PunctualLight, range), offsetof(PunctualLight, direction),
+                                             offsetof(PunctualLight, cosOuter), offsetof(PunctualLight, cosInner),
+                                             offsetof(PunctualLight, selectPmf)});
         expectMembers(spv, "PassPush", {0, 4, 8, offsetof(PassPush, countRays)});
         expectMembers(spv, "RayCounters", {0, 4, offsetof(RayCounters, invalidSamples), 12});
         expectMembers(spv, "RayDesc", {0, offsetof(RayDesc, tMax), offsetof(RayDesc, direction), 28});

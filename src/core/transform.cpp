@@ -1,0 +1,63 @@
+#include "core/transform.h"
+
+#include <cmath>
+
+namespace penumbra {
+
+float Affine::determinant() const {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+Vec3 Affine::normal(Vec3 n) const {
+    // The cofactor matrix is det * inverse transpose; its scale does not matter after normalising,
+    // but its sign does, so multiply by the determinant's sign.
+    Vec3 r0{m[0][0], m[0][1], m[0][2]}, r1{m[1][0], m[1][1], m[1][2]}, r2{m[2][0], m[2][1], m[2][2]};
+    Vec3 c0 = cross(r1, r2), c1 = cross(r2, r0), c2 = cross(r0, r1);
+    Vec3 out = c0 * n.x + c1 * n.y + c2 * n.z;
+    return normalize(determinant() < 0 ? -out : out);
+}
+
+Affine Affine::translation(Vec3 t) {
+    Affine a;
+    a.m[0][3] = t.x;
+    a.m[1][3] = t.y;
+    a.m[2][3] = t.z;
+    return a;
+}
+
+Affine Affine::scaling(Vec3 s) {
+    Affine a;
+    a.m[0][0] = s.x;
+    a.m[1][1] = s.y;
+    a.m[2][2] = s.z;
+    return a;
+}
+
+Affine Affine::eulerDegrees(Vec3 d) {
+    const float k = 3.14159265358979f / 180.0f;
+    auto rot = [](int axis, float radians) {
+        Affine a;
+        float c = std::cos(radians), s = std::sin(radians);
+        int i = (axis + 1) % 3, j = (axis + 2) % 3;
+        a.m[i][i] = c;
+        a.m[i][j] = -s;
+        a.m[j][i] = s;
+        a.m[j][j] = c;
+        return a;
+    };
+    return rot(2, d.z * k) * rot(1, d.y * k) * rot(0, d.x * k);
+}
+
+Affine operator*(const Affine& a, const Affine& b) {
+    Affine r;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 4; ++j) {
+            float v = (j == 3) ? a.m[i][3] : 0.0f;
+            for (int k = 0; k < 3; ++k) v += a.m[i][k] * b.m[k][j];
+            r.m[i][j] = v;
+        }
+    return r;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,310 @@
+#include "scene/io/scene_json.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "core/transform.h"
+#include "scene/io/load.h"
+#include "scene/merge.h"
+#include "scene/presets/presets.h"
+
+namespace penumbra {
+namespace {
+
+using Json = nlohmann::json;
+
+// Scene files may include scene files; this bounds the nesting (and catches cycles).
+constexpr int kMaxNesting = 8;
+thread_local int g_nesting = 0;
+
+// Reading with context: every error names the file and the JSON path of the bad value.
+class Reader {
+public:
+    explicit Reader(std::string file) : file_(std::move(file)) {}
+
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw Error(file_ + ": " + where + ": " + what);
+    }
+
+    const Json& member(const Json& obj, const char* key, const std::string& where) const {
+        if (!obj.is_object() || !obj.contains(key)) fail(where, std::string("missing \"") + key + "\"");
+        return obj.at(key);
+    }
+
+    float number(const Json& v, const std::string& where, float lo = -1e30f, float hi = 1e30f) const {
+        if (!v.is_number()) fail(where, "expected a number");
+        double d = v.get<double>();
+        if (!std::isfinite(d) || d < lo || d > hi)
+            fail(where, "must be a finite number between " + fmt(lo) + " and " + fmt(hi));
+        return float(d);
+    }
+
+    Vec3 vec3(const Json& v, const std::string& where, float lo = -1e30f, float hi = 1e30f) const {
+        if (!v.is_array() || v.size() != 3) fail(where, "expected an array of three numbers");
+        return {number(v[0], where + "[0]", lo, hi), number(v[1], where + "[1]", lo, hi), number(v[2], where + "[2]", lo, hi)};
+    }
+
+    std::string string(const Json& v, const std::string& where) const {
+        if (!v.is_string()) fail(where, "expected a string");
+        return v.get<std::string>();
+    }
+
+    std::uint32_t count(const Json& v, const std::string& where, std::uint32_t hi) const {
+        if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > hi)
+            fail(where, "must be a whole number between 1 and " + std::to_string(hi));
+        return std::uint32_t(v.get<long long>());
+    }
+
+private:
+    static std::string fmt(float x) {
+        std::ostringstream s;
+        s << x;
+        return s.str();
+    }
+    std::string file_;
+};
+
+Affine readTransform(const Reader& r, const Json& asset, const std::string& where) {
+    Affine t;
+    if (asset.contains("scale")) {
+        const Json& s = asset["scale"];
+        Vec3 v = s.is_number() ? Vec3{r.number(s, where + ".scale")} : r.vec3(s, where + ".scale");
+        if (v.x == 0 || v.y == 0 || v.z == 0) r.fail(where + ".scale", "must not be zero");
+        t = Affine::scaling(v);
+    }
+    if (asset.contains("rotate")) t = Affine::eulerDegrees(r.vec3(asset["rotate"], where + ".rotate")) * t;
+    if (asset.contains("translate")) t = Affine::translation(r.vec3(asset["translate"], where + ".translate")) * t;
+    return t;
+}
+
+void readMaterial(const Reader& r, const Json& j, const std::string& where, Material& m) {
+    if (j.contains("albedo")) m.albedo = r.vec3(j["albedo"], where + ".albedo", 0, 1);
+    if (j.contains("emission")) m.emission = r.vec3(j["emission"], where + ".emission", 0, 1e9f);
+    if (j.contains("metallic")) m.metallic = r.number(j["metallic"], where + ".metallic", 0, 1);
+    if (j.contains("roughness")) m.roughness = r.number(j["roughness"], where + ".roughness", 0, 1);
+    if (j.contains("ior")) m.ior = r.number(j["ior"], where + ".ior", 1, 4);
+    if (j.contains("transmission")) m.transmission = r.number(j["transmission"], where + ".transmission", 0, 1);
+    if (j.contains("opacity")) m.opacity = r.number(j["opacity"], where + ".opacity", 0, 1);
+}
+
+template <typename T, typename F>
+std::vector<T> readFlat(const Reader& r, const Json& j, const std::string& where, std::size_t arity, F make) {
+    if (!j.is_array() || j.size() % arity != 0)
+        r.fail(where, "expected a flat array whose length is a multiple of " + std::to_string(arity));
+    std::vector<T> out;
+    out.reserve(j.size() / arity);
+    for (std::size_t i = 0; i < j.size(); i += arity) out.push_back(make(i));
+    return out;
+}
+
+Mesh readInlineMesh(const Reader& r, const Json& j, const std::string& where, const Scene& scene) {
+    Mesh m;
+    if (j.contains("name")) m.name = r.string(j["name"], where + ".name");
+    const std::string material = r.string(r.member(j, "material", where), where + ".material");
+    bool found = false;
+    for (std::size_t i = 0; i < scene.materials.size() && !found; ++i)
+        if (scene.materials[i].name == material) m.material = std::uint32_t(i), found = true;
+    if (!found) r.fail(where + ".material", "no material named '" + material + "'");
+    const Json& p = r.member(j, "positions", where);
+    m.positions = readFlat<Vec3>(r, p, where + ".positions", 3, [&](std::size_t i) {
+        return Vec3{r.number(p[i], where + ".positions"), r.number(p[i + 1], where + ".positions"),
+                    r.number(p[i + 2], where + ".positions")};
+    });
+    const Json& idx = r.member(j, "indices", where);
+    m.indices = readFlat<std::uint32_t>(r, idx, where + ".indices", 1, [&](std::size_t i) {
+        if (!idx[i].is_number_unsigned() || idx[i].get<std::uint64_t>() >= m.positions.size())
+            r.fail(where + ".indices[" + std::to_string(i) + "]", "must index one of the " +
+                                                                    std::to_string(m.positions.size()) + " positions");
+        return std::uint32_t(idx[i].get<std::uint64_t>());
+    });
+    if (m.indices.size() % 3) r.fail(where + ".indices", "length must be a multiple of 3");
+    if (j.contains("normals")) {
+        const Json& n = j["normals"];
+        m.normals = readFlat<Vec3>(r, n, where + ".normals", 3, [&](std::size_t i) {
+            return Vec3{r.number(n[i], where + ".normals"), r.number(n[i + 1], where + ".normals"),
+                        r.number(n[i + 2], where + ".normals")};
+        });
+    }
+    if (j.contains("uvs")) {
+        const Json& uv = j["uvs"];
+        m.uvs = readFlat<Vec2>(r, uv, where + ".uvs", 2, [&](std::size_t i) {
+            return Vec2{r.number(uv[i], where + ".uvs"), r.number(uv[i + 1], where + ".uvs")};
+        });
+    }
+    return m;
+}
+
+Light readLight(const Reader& r, const Json& j, const std::string& where) {
+    Light l;
+    std::string type = j.contains("type") ? r.string(j["type"], where + ".type") : "point";
+    if (type == "point") l.type = LightType::Point;
+    else if (type == "spot") l.type = LightType::Spot;
+    else if (type == "directional") l.type = LightType::Directional;
+    else r.fail(where + ".type", "must be point, spot or directional");
+    if (j.contains("name")) l.name = r.string(j["name"], where + ".name");
+    if (j.contains("position")) l.position = r.vec3(j["position"], where + ".position");
+    if (j.contains("direction")) l.direction = normalize(r.vec3(j["direction"], where + ".direction"));
+    if (j.contains("color")) l.color = r.vec3(j["color"], where + ".color", 0, 1e9f);
+    if (j.contains("intensity")) l.intensity = r.number(j["intensity"], where + ".intensity", 0, 1e12f);
+    if (j.contains("range")) l.range = r.number(j["range"], where + ".range", 0);
+    if (j.contains("radius")) l.radius = r.number(j["radius"], where + ".radius", 0);
+    return l;
+}
+
+}  // namespace
+
+Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& baseDir, const std::string& name,
+                            SceneFileSettings* settings) {
+    Reader r(name);
+    if (g_nesting >= kMaxNesting) r.fail("assets", "scene files nest more than 8 deep (does one include itself?)");
+    struct Nest {
+        Nest() { ++g_nesting; }
+        ~Nest() { --g_nesting; }
+    } nest;
+
+    Json doc;
+    try {
+        doc = Json::parse(text.begin(), text.end());
+    } catch (const Json::exception& e) {  // parse errors, and numbers too large for a double
+        throw Error(name + ": not valid JSON: " + e.what());
+    }
+    if (!doc.is_object()) r.fail("top level", "expected an object");
+
+    Scene scene;
+    scene.name = std::filesystem::path(name).stem().string();
+    bool haveCamera = false;
+    if (doc.contains("assets")) {
+        const Json& assets = doc["assets"];
+        if (!assets.is_array()) r.fail("assets", "expected an array");
+        for (std::size_t i = 0; i < assets.size(); ++i) {
+            const std::string where = "assets[" + std::to_string(i) + "]";
+            const Json& a = assets[i];
+            if (!a.is_object()) r.fail(where, "expected an object");
+            Scene part;
+            if (a.contains("preset")) {
+                part = makePreset(r.string(a["preset"], where + ".preset"));
+            } else {
+                std::filesystem::path file = r.string(r.member(a, "file", where), where + ".file");
+                if (file.is_relative()) file = baseDir / file;
+                LoadOptions options;
+                if (a.contains("map")) options.map = r.string(a["map"], where + ".map");
+                part = loadSceneFile(file, options);
+            }
+            if (!haveCamera) {
+                Affine t = readTransform(r, a, where);
+                scene.camera = part.camera;
+                scene.camera.position = t.point(part.camera.position);
+                scene.camera.lookAt = t.point(part.camera.lookAt);
+                scene.camera.up = normalize(t.vector(part.camera.up));
+                scene.background = part.background;
+                haveCamera = true;
+            }
+            appendScene(scene, std::move(part), readTransform(r, a, where));
+        }
+    }
+    if (doc.contains("materials")) {
+        const Json& mats = doc["materials"];
+        if (!mats.is_array()) r.fail("materials", "expected an array");
+        for (std::size_t i = 0; i < mats.size(); ++i) {
+            const std::string where = "materials[" + std::to_string(i) + "]";
+            std::string matName = r.string(r.member(mats[i], "name", where), where + ".name");
+            bool overridden = false;
+            for (Material& m : scene.materials)
+                if (m.name == matName) readMaterial(r, mats[i], where, m), overridden = true;
+            if (!overridden) {
+                Material m;
+                m.name = matName;
+                readMaterial(r, mats[i], where, m);
+                scene.materials.push_back(m);
+            }
+        }
+    }
+    if (doc.contains("meshes")) {
+        const Json& meshes = doc["meshes"];
+        if (!meshes.is_array()) r.fail("meshes", "expected an array");
+        for (std::size_t i = 0; i < meshes.size(); ++i)
+            scene.meshes.push_back(readInlineMesh(r, meshes[i], "meshes[" + std::to_string(i) + "]", scene));
+    }
+    if (doc.contains("lights")) {
+        const Json& lights = doc["lights"];
+        if (!lights.is_array()) r.fail("lights", "expected an array");
+        for (std::size_t i = 0; i < lights.size(); ++i)
+            scene.lights.push_back(readLight(r, lights[i], "lights[" + std::to_string(i) + "]"));
+    }
+    if (doc.contains("background")) scene.background = r.vec3(doc["background"], "background", 0, 1e9f);
+    if (doc.contains("camera")) {
+        const Json& c = doc["camera"];
+        if (!c.is_object()) r.fail("camera", "expected an object");
+        if (c.contains("position")) scene.camera.position = r.vec3(c["position"], "camera.position");
+        if (c.contains("look_at")) scene.camera.lookAt = r.vec3(c["look_at"], "camera.look_at");
+        if (c.contains("up")) scene.camera.up = r.vec3(c["up"], "camera.up");
+        if (c.contains("fov")) scene.camera.fovYDegrees = r.number(c["fov"], "camera.fov", 0.01f, 179.99f);
+    }
+    if (doc.contains("render")) {
+        // Checked even when the caller does not want them: a bad file is bad either way.
+        SceneFileSettings read;
+        const Json& s = doc["render"];
+        if (!s.is_object()) r.fail("render", "expected an object");
+        if (s.contains("spp")) read.samplesPerPixel = r.count(s["spp"], "render.spp", 1u << 20);
+        if (s.contains("bounces")) read.maxBounces = r.count(s["bounces"], "render.bounces", 1024);
+        if (s.contains("width")) read.width = r.count(s["width"], "render.width", 16384);
+        if (s.contains("height")) read.height = r.count(s["height"], "render.height", 16384);
+        if (s.contains("exposure")) read.exposure = r.number(s["exposure"], "render.exposure", -64, 64);
+        if (settings) *settings = read;
+    }
+    if (scene.meshes.empty()) r.fail("top level", "the scene has no geometry (add \"assets\" or \"meshes\")");
+    scene.validate();
+    try {
+        validateCamera(scene.camera);
+    } catch (const Error& e) {
+        r.fail("camera", e.what());
+    }
+    return scene;
+}
+
+Scene loadSceneJson(const std::filesystem::path& path, SceneFileSettings* settings) {
+    std::string text = readFileBytes(path, std::size_t(1) << 30);
+    return loadSceneJsonFromText(text, path.parent_path(), path.string(), settings);
+}
+
+std::string sceneToJson(const Scene& scene) {
+    Json doc;
+    auto v3 = [](Vec3 v) { return Json::array({v.x, v.y, v.z}); };
+    doc["camera"] = {{"position", v3(scene.camera.position)}, {"look_at", v3(scene.camera.lookAt)},
+                     {"up", v3(scene.camera.up)}, {"fov", scene.camera.fovYDegrees}};
+    doc["background"] = v3(scene.background);
+    if (!scene.textures.empty())
+        logWarning("scene '" + scene.name + "' has textures, which scene files do not carry yet; they are left out");
+    for (const Material& m : scene.materials)
+        doc["materials"].push_back({{"name", m.name}, {"albedo", v3(m.albedo)}, {"emission", v3(m.emission)},
+                                    {"metallic", m.metallic}, {"roughness", m.roughness}, {"ior", m.ior},
+                                    {"transmission", m.transmission}, {"opacity", m.opacity}});
+    for (const Mesh& mesh : scene.meshes) {
+        Json j = {{"name", mesh.name}, {"material", scene.materials.at(mesh.material).name}};
+        Json& p = j["positions"] = Json::array();
+        for (Vec3 v : mesh.positions) p.insert(p.end(), {v.x, v.y, v.z});
+        j["indices"] = mesh.indices;
+        if (!mesh.normals.empty()) {
+            Json& n = j["normals"] = Json::array();
+            for (Vec3 v : mesh.normals) n.insert(n.end(), {v.x, v.y, v.z});
+        }
+        if (!mesh.uvs.empty()) {
+            Json& uv = j["uvs"] = Json::array();
+            for (Vec2 v : mesh.uvs) uv.insert(uv.end(), {v.x, v.y});
+        }
+        doc["meshes"].push_back(j);
+    }
+    for (const Light& l : scene.lights) {
+        const char* type = l.type == LightType::Point ? "point" : (l.type == LightType::Spot ? "spot" : "directional");
+        doc["lights"].push_back({{"name", l.name}, {"type", type}, {"position", v3(l.position)},
+                                 {"direction", v3(l.direction)}, {"color", v3(l.color)}, {"intensity", l.intensity},
+                                 {"range", l.range}, {"radius", l.radius}});
+    }
+    return doc.dump(1) + "\n";
+}
+
+}  // namespace penumbra

@@ -1,0 +1,112 @@
+// JSON scene files: round trips, transforms, overrides and one-line errors that say where.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+#include "scene/io/scene_json.h"
+#include "scene/presets/presets.h"
+
+namespace penumbra {
+namespace {
+
+Scene parse(const std::string& text, SceneFileSettings* settings = nullptr) {
+    return loadSceneJsonFromText(text, ".", "test.json", settings);
+}
+
+std::string errorOf(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(SceneJson, ExportedPresetLoadsBackAsTheSameScene) {
+    Scene cornell = makeCornellBox();
+    Scene back = parse(sceneToJson(cornell));
+    EXPECT_EQ(back.triangleCount(), cornell.triangleCount());
+    EXPECT_EQ(back.materials.size(), cornell.materials.size());
+    EXPECT_EQ(back.bounds().lo, cornell.bounds().lo);
+    EXPECT_EQ(back.bounds().hi, cornell.bounds().hi);
+    EXPECT_EQ(back.camera.position, cornell.camera.position);
+    EXPECT_FLOAT_EQ(back.camera.fovYDegrees, cornell.camera.fovYDegrees);
+    for (std::size_t i = 0; i < cornell.materials.size(); ++i) {
+        EXPECT_EQ(back.materials[i].emission, cornell.materials[i].emission);
+        EXPECT_EQ(back.materials[i].albedo, cornell.materials[i].albedo);
+    }
+}
+
+TEST(SceneJson, AssetTransformsApplyScaleThenRotateThenTranslate) {
+    Scene s = parse(R"({"assets": [{"preset": "furnace", "scale": 2, "rotate": [0, 0, 90], "translate": [10, 0, 0]}]})");
+    // The furnace cube spans [-1, 1]^3: scaled to [-2, 2], rotated in place, moved to x = 10.
+    EXPECT_NEAR(s.bounds().lo.x, 8.0f, 1e-4f);
+    EXPECT_NEAR(s.bounds().hi.x, 12.0f, 1e-4f);
+    EXPECT_NEAR(s.bounds().hi.y, 2.0f, 1e-4f);
+}
+
+TEST(SceneJson, MirroringKeepsFrontFacesPointingTheSameWay) {
+    Scene plain = makeFurnace(0.5f, Vec3{1});
+    Scene mirrored = parse(R"({"assets": [{"preset": "furnace", "scale": [-1, 1, 1]}]})");
+    auto tris = flattenTriangles(mirrored);
+    for (const SceneTriangle& t : tris) {
+        Vec3 n = cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+        EXPECT_LT(dot(n, (t.p[0] + t.p[1] + t.p[2]) / 3.0f), 0.0f) << "a mirrored wall now faces outward";
+    }
+    EXPECT_EQ(tris.size(), plain.triangleCount());
+}
+
+TEST(SceneJson, MaterialOverridesChangeOnlyTheGivenFields) {
+    Scene s = parse(R"({"assets": [{"preset": "cornell"}], "materials": [{"name": "red", "albedo": [0.1, 0.2, 0.3]}]})");
+    for (const Material& m : s.materials)
+        if (m.name == "red") {
+            EXPECT_EQ(m.albedo, (Vec3{0.1f, 0.2f, 0.3f}));
+            EXPECT_EQ(m.emission, Vec3{0});
+        }
+}
+
+TEST(SceneJson, RenderSettingsAreRead) {
+    SceneFileSettings settings;
+    parse(R"({"assets": [{"preset": "cornell"}], "render": {"spp": 7, "bounces": 3, "width": 20, "height": 10, "exposure": 1.5}})",
+          &settings);
+    EXPECT_EQ(settings.samplesPerPixel, 7u);
+    EXPECT_EQ(settings.maxBounces, 3u);
+    EXPECT_EQ(settings.width, 20u);
+    EXPECT_EQ(settings.height, 10u);
+    EXPECT_FLOAT_EQ(*settings.exposure, 1.5f);
+}
+
+TEST(SceneJson, ErrorsNameTheFileAndThePlace) {
+    EXPECT_NE(errorOf("{").find("not valid JSON"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"assets": [{"preset": "cornell"}], "render": {"spp": 0}})").find("render.spp"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"materials": [{"name": "m"}], "meshes": [{"material": "nope", "positions": [], "indices": []}]})")
+                  .find("no material named 'nope'"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"materials": [{"name": "m"}], "meshes": [{"material": "m", "positions": [0,0,0], "indices": [0,0,5]}]})")
+                  .find("meshes[0].indices[2]"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"assets": [{"preset": "cornell"}], "materials": [{"name": "red", "albedo": [2, 0, 0]}]})")
+                  .find("materials[0].albedo[0]"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"assets": [{"file": "does-not-exist.obj"}]})").find("does-not-exist.obj"), std::string::npos);
+    EXPECT_NE(errorOf(R"({})").find("no geometry"), std::string::npos);
+    for (const std::string& e : {errorOf("{"), errorOf(R"({"camera": 5, "assets": [{"preset": "cornell"}]})")})
+        EXPECT_EQ(e.rfind("test.json: ", 0), 0u) << e;
+}
+
+TEST(SceneJson, AFileThatIncludesItselfIsAnErrorNotAHang) {
+    auto path = std::filesystem::temp_directory_path() / ("penumbra-self-" + std::to_string(::getpid()) + ".json");
+    std::ofstream(path) << R"({"assets": [{"file": ")" << path.filename().string() << R"("}]})";
+    try {
+        loadSceneJson(path);
+        FAIL() << "a self-including scene loaded";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("nest"), std::string::npos) << e.what();
+    }
+    std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace penumbra
