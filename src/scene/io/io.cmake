@@ -4,4 +4,3 @@ target_sources(penumbra_scene PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/load.cpp
   ${CMAKE_CURRENT_LIST_DIR}/scene_json.cpp)
 target_link_libraries(penumbra_scene PRIVATE nlohmann_json::nlohmann_json)
-target_sources(penumbra_scene PRIVATE ${CMAKE_CURRENT_LIST_DIR}/stubs.cpp)
