@@ -1,0 +1,139 @@
+#include "scene/io/wad/map.h"
+
+#include "core/error.h"
+#include "core/log.h"
+
+namespace penumbra::wad {
+namespace {
+
+// The bytes of a map lump and its record count; a missing lump is an error naming it.
+struct Records {
+    const unsigned char* data = nullptr;
+    std::size_t count = 0;
+};
+
+Records records(const WadFile& wad, const MapLumps& map, long index, const char* lumpName,
+                std::size_t recordBytes) {
+    if (index < 0)
+        throw Error(wad.fileName() + ": map " + map.name + " has no " + lumpName + " lump");
+    std::string_view bytes = wad.lumpData(std::size_t(index), map.name);
+    if (bytes.size() % recordBytes != 0)
+        logWarning(wad.where(std::size_t(index), map.name) + ": size " +
+                   std::to_string(bytes.size()) + " is not a multiple of " +
+                   std::to_string(recordBytes) + " bytes; the extra bytes are ignored");
+    return {reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size() / recordBytes};
+}
+
+}  // namespace
+
+MapData parseMap(const WadFile& wad, const MapLumps& lumps) {
+    if (lumps.hexen)
+        throw Error(wad.fileName() + ": map " + lumps.name +
+                    " is in Hexen format (it has a BEHAVIOR lump), which is not supported");
+    MapData map;
+    map.name = lumps.name;
+    const std::string where = wad.fileName() + ": map " + lumps.name;
+
+    Records v = records(wad, lumps, lumps.vertexes, "VERTEXES", kVertexBytes);
+    Records l = records(wad, lumps, lumps.linedefs, "LINEDEFS", kLinedefBytes);
+    Records s = records(wad, lumps, lumps.sidedefs, "SIDEDEFS", kSidedefBytes);
+    Records sec = records(wad, lumps, lumps.sectors, "SECTORS", kSectorBytes);
+    Records t = lumps.things >= 0 ? records(wad, lumps, lumps.things, "THINGS", kThingBytes)
+                                  : Records{};
+    // Indices are 16-bit, so records past 65536 (65535 sidedefs) cannot be referenced.
+    auto capUnreferenced = [&](Records& r, std::size_t limit, const char* what) {
+        if (r.count <= limit) return;
+        logWarning(where + ": " + std::to_string(r.count) + " " + what +
+                   " records; those past the first " + std::to_string(limit) +
+                   " cannot be referenced and are ignored");
+        r.count = limit;
+    };
+    capUnreferenced(v, 65536, "VERTEXES");
+    capUnreferenced(s, 65535, "SIDEDEFS");
+    capUnreferenced(sec, 65536, "SECTORS");
+    // Bounds the geometry (and memory) a hostile map can ask for; vanilla maps stay far below.
+    if (l.count > kMaxLinedefs)
+        throw Error(where + ": " + std::to_string(l.count) + " linedefs, more than the " +
+                    std::to_string(kMaxLinedefs) + " this loader accepts");
+    if (t.count > kMaxThings)
+        throw Error(where + ": " + std::to_string(t.count) + " things, more than the " +
+                    std::to_string(kMaxThings) + " this loader accepts");
+    if (v.count == 0) throw Error(where + " is empty: it has no vertices");
+    if (l.count == 0) throw Error(where + " is empty: it has no linedefs");
+    if (sec.count == 0) throw Error(where + " is empty: it has no sectors");
+    if (s.count == 0) throw Error(where + " is empty: it has no sidedefs");
+
+    map.vertices.resize(v.count);
+    for (std::size_t i = 0; i < v.count; ++i) {
+        const unsigned char* p = v.data + i * kVertexBytes;
+        map.vertices[i] = {readI16(p), readI16(p + 2)};
+    }
+    map.sectors.resize(sec.count);
+    for (std::size_t i = 0; i < sec.count; ++i) {
+        const unsigned char* p = sec.data + i * kSectorBytes;
+        Sector& o = map.sectors[i];
+        o.floorHeight = readI16(p);
+        o.ceilingHeight = readI16(p + 2);
+        o.floorFlat = readName8(p + 4);
+        o.ceilingFlat = readName8(p + 12);
+        o.lightLevel = readI16(p + 20);
+        o.special = readU16(p + 22);
+        o.tag = readU16(p + 24);
+    }
+    map.sidedefs.resize(s.count);
+    for (std::size_t i = 0; i < s.count; ++i) {
+        const unsigned char* p = s.data + i * kSidedefBytes;
+        Sidedef& o = map.sidedefs[i];
+        o.xOffset = readI16(p);
+        o.yOffset = readI16(p + 2);
+        o.upper = readName8(p + 4);
+        o.lower = readName8(p + 12);
+        o.middle = readName8(p + 20);
+        o.sector = readU16(p + 28);
+        if (o.sector >= sec.count)
+            throw Error(where + ": sidedef " + std::to_string(i) + " references sector " +
+                        std::to_string(o.sector) + ", but the map has " +
+                        std::to_string(sec.count) + " sectors");
+    }
+    map.linedefs.resize(l.count);
+    std::size_t frontless = 0;
+    for (std::size_t i = 0; i < l.count; ++i) {
+        const unsigned char* p = l.data + i * kLinedefBytes;
+        Linedef& o = map.linedefs[i];
+        o.v1 = readU16(p);
+        o.v2 = readU16(p + 2);
+        o.flags = readU16(p + 4);
+        o.special = readU16(p + 6);
+        o.tag = readU16(p + 8);
+        o.front = readU16(p + 10);
+        o.back = readU16(p + 12);
+        for (std::uint16_t vi : {o.v1, o.v2})
+            if (vi >= v.count)
+                throw Error(where + ": linedef " + std::to_string(i) + " references vertex " +
+                            std::to_string(vi) + ", but the map has " + std::to_string(v.count) +
+                            " vertices");
+        for (std::uint16_t si : {o.front, o.back})
+            if (si != kNoSide && si >= s.count)
+                throw Error(where + ": linedef " + std::to_string(i) + " references sidedef " +
+                            std::to_string(si) + ", but the map has " + std::to_string(s.count) +
+                            " sidedefs");
+        if (o.front == kNoSide && o.back != kNoSide) {
+            // Keep the sector on the right of v1 -> v2 by reversing the line.
+            std::swap(o.front, o.back);
+            std::swap(o.v1, o.v2);
+            ++frontless;
+        }
+    }
+    if (frontless > 0)
+        logWarning(where + ": " + std::to_string(frontless) +
+                   " linedefs have no front sidedef; they were reversed");
+    map.things.resize(t.count);
+    for (std::size_t i = 0; i < t.count; ++i) {
+        const unsigned char* p = t.data + i * kThingBytes;
+        map.things[i] = {readI16(p), readI16(p + 2), readU16(p + 4), readU16(p + 6),
+                         readU16(p + 8)};
+    }
+    return map;
+}
+
+}  // namespace penumbra::wad

@@ -1,0 +1,7 @@
+# Doom WAD importer (included from src/scene/CMakeLists.txt).
+target_sources(penumbra_scene PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/wad_file.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/map.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/textures.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/triangulate.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/wad_loader.cpp)

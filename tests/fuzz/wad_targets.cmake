@@ -1,0 +1,1 @@
+penumbra_fuzz_target(wad LIBS penumbra_scene)
