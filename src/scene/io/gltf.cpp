@@ -1,0 +1,841 @@
+// glTF 2.0 (.gltf, .glb, data URIs) through tinygltf (Debian's libtinygltf.so). tinygltf parses
+// JSON and loads buffers; we give it file-system callbacks (no shell expansion, no reads outside
+// the asset's folder, size limits) and an image callback that only keeps the encoded bytes, so
+// images are decoded later, once, by texture_io. Every index and byte range tinygltf hands back
+// is checked here before it is used: accessors, buffer views, nodes, meshes, materials,
+// textures, cameras, lights.
+#include "scene/io/gltf.h"
+
+#include <tiny_gltf.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <set>
+#include <system_error>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "scene/io/normals.h"
+#include "scene/io/texture_io.h"
+
+namespace penumbra {
+namespace {
+
+constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(2) << 30;  // tinygltf takes 32-bit lengths
+constexpr int kMaxJsonDepth = 200;           // tinygltf converts extras recursively
+constexpr std::size_t kMaxNodeDepth = 256;   // deeper node chains are refused
+constexpr std::size_t kMaxNodeVisits = std::size_t(1) << 20;
+constexpr std::size_t kMaxOutputVertices = std::size_t(1) << 27;  // over all instances
+constexpr std::size_t kMaxOutputIndices = std::size_t(3) << 27;
+
+using tinygltf::Model;
+
+// ---- 4x4 matrices in doubles, column-major like glTF (m[col * 4 + row]) --------------------
+
+struct Mat4 {
+    std::array<double, 16> m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    double at(int row, int col) const { return m[std::size_t(col * 4 + row)]; }
+};
+
+Mat4 operator*(const Mat4& a, const Mat4& b) {
+    Mat4 r;
+    for (int c = 0; c < 4; ++c)
+        for (int rr = 0; rr < 4; ++rr) {
+            double s = 0;
+            for (int k = 0; k < 4; ++k) s += a.at(rr, k) * b.at(k, c);
+            r.m[std::size_t(c * 4 + rr)] = s;
+        }
+    return r;
+}
+
+Vec3 transformPoint(const Mat4& a, Vec3 p) {
+    return {float(a.at(0, 0) * p.x + a.at(0, 1) * p.y + a.at(0, 2) * p.z + a.at(0, 3)),
+            float(a.at(1, 0) * p.x + a.at(1, 1) * p.y + a.at(1, 2) * p.z + a.at(1, 3)),
+            float(a.at(2, 0) * p.x + a.at(2, 1) * p.y + a.at(2, 2) * p.z + a.at(2, 3))};
+}
+
+Vec3 transformDir(const Mat4& a, Vec3 d) {
+    return {float(a.at(0, 0) * d.x + a.at(0, 1) * d.y + a.at(0, 2) * d.z),
+            float(a.at(1, 0) * d.x + a.at(1, 1) * d.y + a.at(1, 2) * d.z),
+            float(a.at(2, 0) * d.x + a.at(2, 1) * d.y + a.at(2, 2) * d.z)};
+}
+
+double det3(const Mat4& a) {
+    return a.at(0, 0) * (a.at(1, 1) * a.at(2, 2) - a.at(1, 2) * a.at(2, 1)) -
+           a.at(0, 1) * (a.at(1, 0) * a.at(2, 2) - a.at(1, 2) * a.at(2, 0)) +
+           a.at(0, 2) * (a.at(1, 0) * a.at(2, 1) - a.at(1, 1) * a.at(2, 0));
+}
+
+// The cofactor matrix of the upper 3x3: the inverse transpose up to the factor 1/det, which
+// does not matter for normals that are normalised afterwards (its sign is fixed by the caller).
+std::array<double, 9> cofactor3(const Mat4& a) {
+    auto e = [&](int r, int c) { return a.at(r, c); };
+    return {e(1, 1) * e(2, 2) - e(1, 2) * e(2, 1), e(1, 2) * e(2, 0) - e(1, 0) * e(2, 2),
+            e(1, 0) * e(2, 1) - e(1, 1) * e(2, 0), e(0, 2) * e(2, 1) - e(0, 1) * e(2, 2),
+            e(0, 0) * e(2, 2) - e(0, 2) * e(2, 0), e(0, 1) * e(2, 0) - e(0, 0) * e(2, 1),
+            e(0, 1) * e(1, 2) - e(0, 2) * e(1, 1), e(0, 2) * e(1, 0) - e(0, 0) * e(1, 2),
+            e(0, 0) * e(1, 1) - e(0, 1) * e(1, 0)};  // row-major rows of cof(A)
+}
+
+// ---- tinygltf callbacks -----------------------------------------------------------------------
+
+struct FsContext {
+    std::string prefix;  // only files below this path are read
+};
+
+bool fileExists(const std::string& path, void* user) {
+    const auto* ctx = static_cast<const FsContext*>(user);
+    if (path.compare(0, ctx->prefix.size(), ctx->prefix) != 0) return false;  // e.g. tinygltf's "." fallback
+    std::error_code ec;
+    return std::filesystem::is_regular_file(path, ec);
+}
+
+std::string expandFilePath(const std::string& path, void*) { return path; }  // no wordexp
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+    if (!fileExists(path, user)) {
+        if (err) *err += "not found";
+        return false;
+    }
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec || size > kMaxFileBytes) {
+        if (err) *err += ec ? ec.message() : "larger than 2 GiB";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    out->resize(static_cast<std::size_t>(size));
+    if (!in || !in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
+        if (err) *err += "read error";
+        return false;
+    }
+    return true;
+}
+
+bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "writing is disabled";
+    return false;
+}
+
+// Keeps the encoded bytes (URI images); images in buffer views are read later, after their view
+// has been checked (tinygltf passes an unchecked pointer for those, so we must not touch it).
+bool keepImageBytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                    const unsigned char* bytes, int size, void*) {
+    image->as_is = true;
+    if (image->bufferView >= 0) return true;
+    if (bytes && size > 0) image->image.assign(bytes, bytes + size);
+    return true;
+}
+
+// Nesting depth of a JSON text (brackets outside strings); refuses stack-exhausting inputs early.
+int jsonDepth(std::string_view json) {
+    int depth = 0, maxDepth = 0;
+    bool inString = false, escape = false;
+    for (char c : json) {
+        if (inString) {
+            if (escape)
+                escape = false;
+            else if (c == '\\')
+                escape = true;
+            else if (c == '"')
+                inString = false;
+            continue;
+        }
+        if (c == '"') inString = true;
+        if (c == '[' || c == '{') maxDepth = std::max(maxDepth, ++depth);
+        if (c == ']' || c == '}') --depth;
+    }
+    return maxDepth;
+}
+
+std::uint32_t readU32(std::string_view b, std::size_t at) {
+    std::uint32_t v;
+    std::memcpy(&v, b.data() + at, 4);
+    return v;  // GLB is little-endian, as are our targets
+}
+
+std::string clampName(std::string s) {
+    if (s.size() > 80) s = s.substr(0, 77) + "...";
+    for (char& c : s)
+        if (static_cast<unsigned char>(c) < 32) c = '?';
+    return s;
+}
+
+std::string firstLines(const std::string& text, std::size_t maxLines) {
+    std::string out;
+    std::size_t pos = 0, lines = 0;
+    while (pos < text.size() && lines < maxLines) {
+        std::size_t end = text.find('\n', pos);
+        if (end == std::string::npos) end = text.size();
+        std::string line = clampName(text.substr(pos, end - pos));
+        if (!line.empty()) {
+            if (!out.empty()) out += "; ";
+            out += line;
+            ++lines;
+        }
+        pos = end + 1;
+    }
+    return out;
+}
+
+double extNumber(const tinygltf::ExtensionMap& ext, const char* name, const char* key, double fallback) {
+    auto it = ext.find(name);
+    if (it == ext.end() || !it->second.IsObject() || !it->second.Has(key)) return fallback;
+    const tinygltf::Value& v = it->second.Get(key);
+    if (!v.IsNumber()) return fallback;
+    double d = v.GetNumberAsDouble();
+    return std::isfinite(d) ? d : fallback;
+}
+
+float clamp01(double v) { return std::isfinite(v) ? float(std::clamp(v, 0.0, 1.0)) : 0.0f; }
+
+// ---- accessors ------------------------------------------------------------------------------
+
+struct AccessorView {
+    const unsigned char* data = nullptr;
+    std::size_t count = 0;
+    std::size_t stride = 0;
+    int componentType = 0;
+    int components = 0;
+    bool normalized = false;
+
+    double component(std::size_t i, int c) const {
+        const unsigned char* p = data + i * stride;
+        switch (componentType) {
+            case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+                float f;
+                std::memcpy(&f, p + 4 * c, 4);
+                return f;
+            }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+                std::uint32_t u;
+                std::memcpy(&u, p + 4 * c, 4);
+                return u;
+            }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                std::uint16_t u;
+                std::memcpy(&u, p + 2 * c, 2);
+                return normalized ? u / 65535.0 : u;
+            }
+            case TINYGLTF_COMPONENT_TYPE_SHORT: {
+                std::int16_t s;
+                std::memcpy(&s, p + 2 * c, 2);
+                return normalized ? std::max(s / 32767.0, -1.0) : s;
+            }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+                const std::uint8_t u = p[c];
+                return normalized ? u / 255.0 : u;
+            }
+            case TINYGLTF_COMPONENT_TYPE_BYTE: {
+                std::int8_t s;
+                std::memcpy(&s, p + c, 1);
+                return normalized ? std::max(s / 127.0, -1.0) : s;
+            }
+        }
+        return 0;
+    }
+};
+
+int componentSize(int type) {
+    switch (type) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    }
+    return 0;
+}
+
+int componentCount(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR: return 1;
+        case TINYGLTF_TYPE_VEC2: return 2;
+        case TINYGLTF_TYPE_VEC3: return 3;
+        case TINYGLTF_TYPE_VEC4: return 4;
+    }
+    return 0;
+}
+
+class GltfImporter {
+public:
+    GltfImporter(const Model& model, std::string name) : model_(model), name_(std::move(name)) {}
+
+    Scene run() {
+        scene_.name = name_;
+        for (std::size_t i = 0; i < model_.materials.size(); ++i) scene_.materials.push_back(material(int(i)));
+        traverse();
+        if (scene_.meshes.empty())
+            throw Error(name_ + ": the glTF scene has no triangles (no mesh with TRIANGLES primitives is reachable)");
+        if (scene_.materials.empty()) defaultMaterial();
+        if (!cameraSet_) scene_.camera = cameraFittingBounds(scene_.bounds());
+        scene_.validate();
+        return std::move(scene_);
+    }
+
+private:
+    AccessorView accessor(int index, const std::string& where, int wantComponents) const {
+        const std::string here = where + ", accessor " + std::to_string(index);
+        if (index < 0 || std::size_t(index) >= model_.accessors.size())
+            throw Error(here + " does not exist (" + std::to_string(model_.accessors.size()) + " accessors)");
+        const tinygltf::Accessor& acc = model_.accessors[std::size_t(index)];
+        if (acc.sparse.isSparse) throw Error(here + ": sparse accessors are not supported");
+        AccessorView view;
+        view.components = componentCount(acc.type);
+        if (view.components != wantComponents)
+            throw Error(here + ": expected " + std::to_string(wantComponents) + " components per element");
+        const int size = componentSize(acc.componentType);
+        if (size == 0) throw Error(here + ": invalid componentType " + std::to_string(acc.componentType));
+        view.componentType = acc.componentType;
+        view.normalized = acc.normalized && acc.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT &&
+                          acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+        view.count = acc.count;
+        if (acc.count == 0) return view;
+        if (acc.bufferView < 0 || std::size_t(acc.bufferView) >= model_.bufferViews.size())
+            throw Error(here + ": bufferView " + std::to_string(acc.bufferView) + " does not exist");
+        const tinygltf::BufferView& bv = model_.bufferViews[std::size_t(acc.bufferView)];
+        const std::string bvWhere = here + ", bufferView " + std::to_string(acc.bufferView);
+        if (bv.buffer < 0 || std::size_t(bv.buffer) >= model_.buffers.size())
+            throw Error(bvWhere + ": buffer " + std::to_string(bv.buffer) + " does not exist");
+        const std::vector<unsigned char>& buf = model_.buffers[std::size_t(bv.buffer)].data;
+        if (bv.byteLength > buf.size() || bv.byteOffset > buf.size() - bv.byteLength)
+            throw Error(bvWhere + ": bytes " + std::to_string(bv.byteOffset) + "+" + std::to_string(bv.byteLength) +
+                        " lie outside buffer " + std::to_string(bv.buffer) + " (" + std::to_string(buf.size()) +
+                        " bytes)");
+        const std::size_t elem = std::size_t(size) * std::size_t(view.components);
+        view.stride = bv.byteStride ? bv.byteStride : elem;
+        if (view.stride < elem || view.stride > 252)
+            throw Error(bvWhere + ": byteStride " + std::to_string(bv.byteStride) + " is invalid for " +
+                        std::to_string(elem) + "-byte elements");
+        if (acc.byteOffset > bv.byteLength || bv.byteLength - acc.byteOffset < elem ||
+            (acc.count - 1) > (bv.byteLength - acc.byteOffset - elem) / view.stride)
+            throw Error(here + ": " + std::to_string(acc.count) + " elements from byte " +
+                        std::to_string(acc.byteOffset) + " do not fit in the " + std::to_string(bv.byteLength) +
+                        "-byte bufferView");
+        view.data = buf.data() + bv.byteOffset + acc.byteOffset;
+        return view;
+    }
+
+    // ---- materials and textures ----
+
+    std::uint32_t defaultMaterial() {
+        if (defaultMaterial_ < 0) {
+            defaultMaterial_ = int(scene_.materials.size());
+            Material m;
+            m.name = "default";
+            m.albedo = Vec3{1.0f};  // glTF's default material: white, metallic 1, roughness 1
+            m.metallic = 1.0f;
+            scene_.materials.push_back(m);
+        }
+        return std::uint32_t(defaultMaterial_);
+    }
+
+    static Wrap wrap(int mode) {
+        switch (mode) {
+            case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return Wrap::ClampToEdge;
+            case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return Wrap::MirroredRepeat;
+        }
+        return Wrap::Repeat;
+    }
+
+    int image(int index, bool srgb) {
+        auto key = std::make_pair(index, srgb);
+        if (auto it = imageCache_.find(key); it != imageCache_.end()) return it->second;
+        const tinygltf::Image& img = model_.images[std::size_t(index)];
+        std::string label = !img.name.empty() ? img.name : !img.uri.empty() ? img.uri : "image " + std::to_string(index);
+        label = clampName(label);
+        std::string_view bytes;
+        std::string why = "no image data (file missing?)";
+        if (img.bufferView >= 0) {
+            if (std::size_t(img.bufferView) >= model_.bufferViews.size()) {
+                why = "bufferView " + std::to_string(img.bufferView) + " does not exist";
+            } else {
+                const tinygltf::BufferView& bv = model_.bufferViews[std::size_t(img.bufferView)];
+                if (bv.buffer < 0 || std::size_t(bv.buffer) >= model_.buffers.size()) {
+                    why = "buffer " + std::to_string(bv.buffer) + " does not exist";
+                } else {
+                    const auto& buf = model_.buffers[std::size_t(bv.buffer)].data;
+                    if (bv.byteLength > buf.size() || bv.byteOffset > buf.size() - bv.byteLength)
+                        why = "bufferView " + std::to_string(img.bufferView) + " lies outside its buffer";
+                    else
+                        bytes = {reinterpret_cast<const char*>(buf.data()) + bv.byteOffset, bv.byteLength};
+                }
+            }
+        } else if (!img.image.empty()) {
+            bytes = {reinterpret_cast<const char*>(img.image.data()), img.image.size()};
+        }
+        std::optional<Texture> tex;
+        if (!bytes.empty()) tex = decodeTexture(bytes, label, srgb, &why);
+        if (!tex) {
+            logWarning(name_ + ": image " + std::to_string(index) + " ('" + label + "'): " + why + "; using a checker");
+            tex = missingTexture(label);
+        }
+        tex->srgb = srgb;
+        const int slot = int(scene_.textures.size());
+        scene_.textures.push_back(std::move(*tex));
+        imageCache_.emplace(key, slot);
+        return slot;
+    }
+
+    TextureRef texture(const tinygltf::TextureInfo& info, int texCoord, const tinygltf::ExtensionMap& ext,
+                       bool srgb, const std::string& where) {
+        return textureRef(info.index, texCoord, ext, srgb, where);
+    }
+
+    TextureRef textureRef(int index, int texCoord, const tinygltf::ExtensionMap& ext, bool srgb,
+                          const std::string& where) {
+        TextureRef ref;
+        if (index < 0) return ref;
+        if (std::size_t(index) >= model_.textures.size())
+            throw Error(where + ": texture " + std::to_string(index) + " does not exist");
+        if (texCoord != 0) warnOnce("only TEXCOORD_0 is read; textures using other sets are sampled with set 0");
+        if (ext.count("KHR_texture_transform")) warnOnce("KHR_texture_transform is ignored");
+        const tinygltf::Texture& t = model_.textures[std::size_t(index)];
+        if (t.source < 0 || std::size_t(t.source) >= model_.images.size()) {
+            warnOnce("texture " + std::to_string(index) + " has no image this loader can read; it is ignored");
+            return ref;
+        }
+        if (t.sampler >= 0) {
+            if (std::size_t(t.sampler) >= model_.samplers.size())
+                throw Error(where + ": texture " + std::to_string(index) + " uses sampler " +
+                            std::to_string(t.sampler) + ", which does not exist");
+            const tinygltf::Sampler& s = model_.samplers[std::size_t(t.sampler)];
+            ref.wrapU = wrap(s.wrapS);
+            ref.wrapV = wrap(s.wrapT);
+        }
+        ref.texture = image(t.source, srgb);
+        return ref;
+    }
+
+    Material material(int index) {
+        const tinygltf::Material& g = model_.materials[std::size_t(index)];
+        const std::string where = name_ + ": material " + std::to_string(index) + " ('" + clampName(g.name) + "')";
+        Material m;
+        m.name = g.name.empty() ? "material " + std::to_string(index) : g.name;
+        const auto& pbr = g.pbrMetallicRoughness;
+        std::array<double, 4> base{1, 1, 1, 1};
+        if (pbr.baseColorFactor.size() == 4) std::copy(pbr.baseColorFactor.begin(), pbr.baseColorFactor.end(), base.begin());
+        m.albedo = {clamp01(base[0]), clamp01(base[1]), clamp01(base[2])};
+        m.metallic = clamp01(pbr.metallicFactor);
+        m.roughness = clamp01(pbr.roughnessFactor);
+        Vec3 emissive{};
+        if (g.emissiveFactor.size() == 3)
+            for (int k = 0; k < 3; ++k) emissive[k] = float(g.emissiveFactor[std::size_t(k)]);
+        const double strength = extNumber(g.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
+        for (int k = 0; k < 3; ++k) {
+            const float e = float(double(emissive[k]) * strength);
+            m.emission[k] = std::isfinite(e) && e > 0 ? e : 0.0f;
+        }
+        m.transmission = clamp01(extNumber(g.extensions, "KHR_materials_transmission", "transmissionFactor", 0.0));
+        const double ior = extNumber(g.extensions, "KHR_materials_ior", "ior", 1.5);
+        m.ior = ior >= 1.0 ? float(std::min(ior, 4.0)) : 1.5f;  // 0 ("no refraction") and junk -> default
+        m.twoSided = g.doubleSided;
+        if (g.alphaMode == "MASK") {
+            m.alphaCutoff = std::isfinite(g.alphaCutoff) ? float(std::clamp(g.alphaCutoff, 1e-4, 1.0)) : 0.5f;
+        } else if (g.alphaMode == "BLEND") {
+            m.opacity = clamp01(base[3]);
+        }
+        m.albedoTexture = texture(pbr.baseColorTexture, pbr.baseColorTexture.texCoord,
+                                  pbr.baseColorTexture.extensions, true, where);
+        m.metallicRoughnessTexture = texture(pbr.metallicRoughnessTexture, pbr.metallicRoughnessTexture.texCoord,
+                                             pbr.metallicRoughnessTexture.extensions, false, where);
+        m.normalTexture = textureRef(g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions,
+                                     false, where);
+        m.emissionTexture = texture(g.emissiveTexture, g.emissiveTexture.texCoord, g.emissiveTexture.extensions,
+                                    true, where);
+        return m;
+    }
+
+    void warnOnce(const std::string& text) {
+        if (warned_.insert(text).second) logWarning(name_ + ": " + text);
+    }
+
+    // ---- nodes ----
+
+    Mat4 localMatrix(const tinygltf::Node& n, const std::string& where) const {
+        auto finite = [&](const std::vector<double>& v) {
+            for (double d : v)
+                if (!std::isfinite(d)) throw Error(where + ": transform has a value that is not a finite number");
+        };
+        Mat4 local;
+        if (!n.matrix.empty()) {
+            if (n.matrix.size() != 16) throw Error(where + ": matrix must have 16 numbers");
+            finite(n.matrix);
+            std::copy(n.matrix.begin(), n.matrix.end(), local.m.begin());
+            return local;
+        }
+        if (!n.translation.empty() && n.translation.size() != 3) throw Error(where + ": translation must have 3 numbers");
+        if (!n.rotation.empty() && n.rotation.size() != 4) throw Error(where + ": rotation must have 4 numbers");
+        if (!n.scale.empty() && n.scale.size() != 3) throw Error(where + ": scale must have 3 numbers");
+        finite(n.translation);
+        finite(n.rotation);
+        finite(n.scale);
+        double x = 0, y = 0, z = 0, w = 1;
+        if (n.rotation.size() == 4) {
+            x = n.rotation[0], y = n.rotation[1], z = n.rotation[2], w = n.rotation[3];
+            const double len = std::sqrt(x * x + y * y + z * z + w * w);
+            if (len > 0 && std::isfinite(len)) x /= len, y /= len, z /= len, w /= len;
+            else x = y = z = 0, w = 1;
+        }
+        const double sx = n.scale.size() == 3 ? n.scale[0] : 1, sy = n.scale.size() == 3 ? n.scale[1] : 1,
+                     sz = n.scale.size() == 3 ? n.scale[2] : 1;
+        // R * S in columns, then T.
+        const double r[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+                                {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+                                {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
+        const double s[3] = {sx, sy, sz};
+        for (int c = 0; c < 3; ++c)
+            for (int rr = 0; rr < 3; ++rr) local.m[std::size_t(c * 4 + rr)] = r[rr][c] * s[c];
+        if (n.translation.size() == 3)
+            for (int k = 0; k < 3; ++k) local.m[std::size_t(12 + k)] = n.translation[std::size_t(k)];
+        return local;
+    }
+
+    std::vector<int> roots() {
+        std::vector<int> out;
+        if (!model_.scenes.empty()) {
+            std::size_t s = 0;
+            if (model_.defaultScene >= 0 && std::size_t(model_.defaultScene) < model_.scenes.size())
+                s = std::size_t(model_.defaultScene);
+            else if (model_.defaultScene >= 0)
+                warnOnce("default scene " + std::to_string(model_.defaultScene) + " does not exist; using scene 0");
+            return model_.scenes[s].nodes;
+        }
+        // No scene: every node that is nobody's child.
+        std::vector<char> isChild(model_.nodes.size(), 0);
+        for (const tinygltf::Node& n : model_.nodes)
+            for (int c : n.children)
+                if (c >= 0 && std::size_t(c) < model_.nodes.size()) isChild[std::size_t(c)] = 1;
+        for (std::size_t i = 0; i < model_.nodes.size(); ++i)
+            if (!isChild[i]) out.push_back(int(i));
+        return out;
+    }
+
+    std::string nodeWhere(int index) const {
+        std::string w = name_ + ": node " + std::to_string(index);
+        if (index >= 0 && std::size_t(index) < model_.nodes.size() && !model_.nodes[std::size_t(index)].name.empty())
+            w += " ('" + clampName(model_.nodes[std::size_t(index)].name) + "')";
+        return w;
+    }
+
+    void traverse() {
+        struct Frame {
+            int node;
+            Mat4 world;
+            std::size_t next = 0;  // next child to visit
+        };
+        std::vector<char> onPath(model_.nodes.size(), 0);
+        std::vector<Frame> stack;
+        std::size_t visits = 0;
+        auto enter = [&](int node, const Mat4& parent, int from) {
+            if (node < 0 || std::size_t(node) >= model_.nodes.size())
+                throw Error((from < 0 ? name_ + ": scene" : nodeWhere(from)) + " refers to node " + std::to_string(node) +
+                            ", which does not exist (" + std::to_string(model_.nodes.size()) + " nodes)");
+            if (onPath[std::size_t(node)])
+                throw Error(nodeWhere(node) + " is its own ancestor: the node hierarchy has a cycle");
+            if (stack.size() >= kMaxNodeDepth)
+                throw Error(nodeWhere(node) + " is nested more than " + std::to_string(kMaxNodeDepth) + " levels deep");
+            if (++visits > kMaxNodeVisits)
+                throw Error(name_ + ": the node hierarchy instantiates more than " + std::to_string(kMaxNodeVisits) +
+                            " nodes");
+            const std::string where = nodeWhere(node);
+            const tinygltf::Node& n = model_.nodes[std::size_t(node)];
+            Mat4 world = parent * localMatrix(n, where);
+            onPath[std::size_t(node)] = 1;
+            visitNode(node, n, world, where);
+            stack.push_back({node, world, 0});
+        };
+        for (int root : roots()) {
+            enter(root, Mat4{}, -1);
+            while (!stack.empty()) {
+                Frame& top = stack.back();
+                const tinygltf::Node& n = model_.nodes[std::size_t(top.node)];
+                if (top.next < n.children.size()) {
+                    const int child = n.children[top.next++];
+                    const Mat4 world = top.world;  // `top` may move when the stack grows
+                    enter(child, world, top.node);
+                } else {
+                    onPath[std::size_t(top.node)] = 0;
+                    stack.pop_back();
+                }
+            }
+        }
+    }
+
+    void visitNode(int index, const tinygltf::Node& n, const Mat4& world, const std::string& where) {
+        if (n.mesh >= 0) {
+            if (std::size_t(n.mesh) >= model_.meshes.size())
+                throw Error(where + ": mesh " + std::to_string(n.mesh) + " does not exist");
+            const tinygltf::Mesh& mesh = model_.meshes[std::size_t(n.mesh)];
+            for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+                addPrimitive(index, n.mesh, int(p), world,
+                             where + ", mesh " + std::to_string(n.mesh) + " ('" + clampName(mesh.name) +
+                                 "') primitive " + std::to_string(p));
+        } else if (n.mesh < -1) {
+            throw Error(where + ": mesh " + std::to_string(n.mesh) + " does not exist");
+        }
+        if (n.camera >= 0 && !cameraSet_) {
+            if (std::size_t(n.camera) >= model_.cameras.size())
+                throw Error(where + ": camera " + std::to_string(n.camera) + " does not exist");
+            useCamera(model_.cameras[std::size_t(n.camera)], world, where);
+        }
+        if (auto it = n.extensions.find("KHR_lights_punctual"); it != n.extensions.end()) {
+            const tinygltf::Value& v = it->second;
+            if (!v.IsObject() || !v.Has("light") || !v.Get("light").IsNumber())
+                throw Error(where + ": KHR_lights_punctual needs a light index");
+            const double li = v.Get("light").GetNumberAsDouble();
+            if (!(li >= 0 && li < double(model_.lights.size())) || li != std::floor(li))
+                throw Error(where + ": light " + std::to_string(li) + " does not exist");
+            addLight(model_.lights[std::size_t(li)], world, where);
+        }
+    }
+
+    void useCamera(const tinygltf::Camera& cam, const Mat4& world, const std::string& where) {
+        if (cam.type != "perspective") {
+            warnOnce("camera type '" + clampName(cam.type) + "' is not supported; only perspective cameras are used");
+            return;
+        }
+        const double yfov = cam.perspective.yfov;
+        const Vec3 pos = transformPoint(world, {0, 0, 0});
+        const Vec3 forward = normalize(transformDir(world, {0, 0, -1}));
+        const Vec3 up = normalize(transformDir(world, {0, 1, 0}));
+        Camera c;
+        c.position = pos;
+        c.lookAt = pos + forward;
+        c.up = up;
+        c.fovYDegrees = float(yfov * 180.0 / 3.14159265358979);
+        if (!(yfov > 0 && c.fovYDegrees < 179.0f) || !isFinite(pos) || !isFinite(c.lookAt) || dot(forward, forward) == 0 ||
+            length(cross(forward, up)) < 1e-4f) {
+            logWarning(where + ": camera has an unusable transform or field of view; it is ignored");
+            return;
+        }
+        scene_.camera = c;
+        cameraSet_ = true;
+    }
+
+    void addLight(const tinygltf::Light& g, const Mat4& world, const std::string& where) {
+        Light l;
+        l.name = g.name;
+        if (g.type == "point")
+            l.type = LightType::Point;
+        else if (g.type == "spot")
+            l.type = LightType::Spot;
+        else if (g.type == "directional")
+            l.type = LightType::Directional;
+        else
+            throw Error(where + ": light type '" + clampName(g.type) + "' is not point, spot or directional");
+        l.position = transformPoint(world, {0, 0, 0});
+        l.direction = normalize(transformDir(world, {0, 0, -1}));
+        if (g.color.size() == 3) l.color = {float(g.color[0]), float(g.color[1]), float(g.color[2])};
+        l.intensity = float(g.intensity);
+        l.range = float(g.range);
+        l.innerConeRadians = float(g.spot.innerConeAngle);
+        l.outerConeRadians = float(g.spot.outerConeAngle);
+        if (!isFinite(l.position) || !isFinite(l.color) || minComponent(l.color) < 0 || !std::isfinite(l.intensity) ||
+            l.intensity < 0 || !std::isfinite(l.range) || l.range < 0 ||
+            (l.type != LightType::Point && dot(l.direction, l.direction) == 0))
+            throw Error(where + ": light '" + clampName(g.name) + "' has an invalid colour, intensity, range or transform");
+        if (l.type == LightType::Spot) {
+            if (!std::isfinite(l.innerConeRadians) || !std::isfinite(l.outerConeRadians))
+                throw Error(where + ": spot light cone angles must be finite");
+            l.outerConeRadians = std::clamp(l.outerConeRadians, 1e-4f, 1.5707963f);
+            l.innerConeRadians = std::clamp(l.innerConeRadians, 0.0f, l.outerConeRadians);
+        }
+        scene_.lights.push_back(l);
+    }
+
+    // ---- geometry ----
+
+    struct LocalPrimitive {
+        std::vector<Vec3> positions, normals;
+        std::vector<Vec2> uvs;
+        std::vector<std::uint32_t> indices;
+    };
+
+    const LocalPrimitive* decode(int meshIndex, int primIndex, const std::string& where) {
+        auto key = std::make_pair(meshIndex, primIndex);
+        if (auto it = primCache_.find(key); it != primCache_.end()) return it->second.get();
+        const tinygltf::Primitive& p = model_.meshes[std::size_t(meshIndex)].primitives[std::size_t(primIndex)];
+        auto out = std::make_unique<LocalPrimitive>();
+        const auto pos = p.attributes.find("POSITION");
+        if (pos == p.attributes.end()) {
+            logWarning(where + ": no POSITION attribute; skipped");
+            return primCache_.emplace(key, nullptr).first->second.get();
+        }
+        const AccessorView pv = accessor(pos->second, where + " POSITION", 3);
+        if (pv.count >= std::numeric_limits<std::uint32_t>::max()) throw Error(where + ": too many vertices");
+        out->positions.resize(pv.count);
+        for (std::size_t i = 0; i < pv.count; ++i) {
+            Vec3 v{float(pv.component(i, 0)), float(pv.component(i, 1)), float(pv.component(i, 2))};
+            if (!isFinite(v))
+                throw Error(where + ": POSITION (accessor " + std::to_string(pos->second) + ") vertex " +
+                            std::to_string(i) + " is not finite");
+            out->positions[i] = v;
+        }
+        if (auto it = p.attributes.find("NORMAL"); it != p.attributes.end()) {
+            const AccessorView nv = accessor(it->second, where + " NORMAL", 3);
+            if (nv.count != pv.count) throw Error(where + ": NORMAL and POSITION counts differ");
+            out->normals.resize(nv.count);
+            for (std::size_t i = 0; i < nv.count; ++i) {
+                Vec3 n{float(nv.component(i, 0)), float(nv.component(i, 1)), float(nv.component(i, 2))};
+                out->normals[i] = isFinite(n) ? n : Vec3{};
+            }
+        }
+        if (auto it = p.attributes.find("TEXCOORD_0"); it != p.attributes.end()) {
+            const AccessorView tv = accessor(it->second, where + " TEXCOORD_0", 2);
+            if (tv.count != pv.count) throw Error(where + ": TEXCOORD_0 and POSITION counts differ");
+            out->uvs.resize(tv.count);
+            for (std::size_t i = 0; i < tv.count; ++i) {
+                Vec2 uv{float(tv.component(i, 0)), float(tv.component(i, 1))};
+                out->uvs[i] = (std::isfinite(uv.x) && std::isfinite(uv.y)) ? uv : Vec2{};
+            }
+        }
+        if (p.indices >= 0) {
+            const AccessorView iv = accessor(p.indices, where + " indices", 1);
+            if (iv.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                iv.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                iv.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+                throw Error(where + ": indices must be unsigned integers");
+            const std::size_t n = iv.count - iv.count % 3;
+            if (iv.count % 3) logWarning(where + ": index count is not a multiple of 3; the rest is ignored");
+            out->indices.resize(n);
+            for (std::size_t i = 0; i < n; ++i) {
+                const double d = iv.component(i, 0);
+                if (d >= double(pv.count))
+                    throw Error(where + ": index " + std::to_string(std::uint64_t(d)) + " (element " + std::to_string(i) +
+                                " of accessor " + std::to_string(p.indices) + ") is past the " +
+                                std::to_string(pv.count) + " vertices");
+                out->indices[i] = std::uint32_t(d);
+            }
+        } else {
+            if (pv.count % 3) logWarning(where + ": vertex count is not a multiple of 3; the rest is ignored");
+            const std::size_t n = pv.count - pv.count % 3;
+            out->indices.resize(n);
+            for (std::size_t i = 0; i < n; ++i) out->indices[i] = std::uint32_t(i);
+        }
+        return primCache_.emplace(key, std::move(out)).first->second.get();
+    }
+
+    void addPrimitive(int, int meshIndex, int primIndex, const Mat4& world, const std::string& where) {
+        const tinygltf::Primitive& p = model_.meshes[std::size_t(meshIndex)].primitives[std::size_t(primIndex)];
+        if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
+            warnOnce("primitives with mode " + std::to_string(p.mode) + " (not TRIANGLES) are skipped");
+            return;
+        }
+        std::uint32_t materialIndex;
+        if (p.material < 0) {
+            materialIndex = defaultMaterial();
+        } else if (std::size_t(p.material) < model_.materials.size()) {
+            materialIndex = std::uint32_t(p.material);
+        } else {
+            throw Error(where + ": material " + std::to_string(p.material) + " does not exist");
+        }
+        const LocalPrimitive* local = decode(meshIndex, primIndex, where);
+        if (!local || local->indices.empty()) return;
+        outVertices_ += local->positions.size();
+        outIndices_ += local->indices.size();
+        if (outVertices_ > kMaxOutputVertices || outIndices_ > kMaxOutputIndices)
+            throw Error(name_ + ": the scene expands to more than " + std::to_string(kMaxOutputIndices / 3) +
+                        " triangles (through node instancing)");
+
+        Mesh m;
+        const tinygltf::Mesh& gm = model_.meshes[std::size_t(meshIndex)];
+        m.name = (gm.name.empty() ? "mesh " + std::to_string(meshIndex) : gm.name) + "/" + std::to_string(primIndex);
+        m.material = materialIndex;
+        m.positions.resize(local->positions.size());
+        for (std::size_t i = 0; i < local->positions.size(); ++i) {
+            m.positions[i] = transformPoint(world, local->positions[i]);
+            if (!isFinite(m.positions[i]))
+                throw Error(where + ": vertex " + std::to_string(i) + " is not finite after the node transform");
+        }
+        const double det = det3(world);
+        if (!local->normals.empty()) {
+            const std::array<double, 9> cof = cofactor3(world);
+            m.normals.resize(local->normals.size());
+            for (std::size_t i = 0; i < local->normals.size(); ++i) {
+                const Vec3 n = local->normals[i];
+                Vec3 t{float(cof[0] * n.x + cof[1] * n.y + cof[2] * n.z), float(cof[3] * n.x + cof[4] * n.y + cof[5] * n.z),
+                       float(cof[6] * n.x + cof[7] * n.y + cof[8] * n.z)};
+                t = normalize(det < 0 ? -t : t);  // cof = det * inverse transpose
+                m.normals[i] = isFinite(t) ? t : Vec3{};
+            }
+        }
+        m.uvs = local->uvs;
+        m.indices = local->indices;
+        if (det < 0)  // mirrored: keep counter-clockwise front faces
+            for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) std::swap(m.indices[t + 1], m.indices[t + 2]);
+        scene_.meshes.push_back(std::move(m));
+    }
+
+    const Model& model_;
+    std::string name_;
+    Scene scene_;
+    int defaultMaterial_ = -1;
+    bool cameraSet_ = false;
+    std::map<std::pair<int, bool>, int> imageCache_;
+    std::map<std::pair<int, int>, std::unique_ptr<LocalPrimitive>> primCache_;
+    std::set<std::string> warned_;
+    std::size_t outVertices_ = 0, outIndices_ = 0;
+};
+
+}  // namespace
+
+Scene loadGltfFromMemory(std::string_view bytes, const std::filesystem::path& baseDir, const std::string& name) {
+    if (bytes.size() > kMaxFileBytes) throw Error(name + ": file is larger than 2 GiB");
+    const bool binary = bytes.size() >= 4 && bytes.substr(0, 4) == "glTF";
+    std::string_view json = bytes;
+    if (binary) {
+        if (bytes.size() < 20) throw Error(name + ": GLB file is truncated (no JSON chunk header)");
+        const std::uint32_t jsonLength = readU32(bytes, 12);
+        if (jsonLength > bytes.size() - 20) throw Error(name + ": GLB JSON chunk runs past the end of the file");
+        json = bytes.substr(20, jsonLength);
+    }
+    if (jsonDepth(json) > kMaxJsonDepth)
+        throw Error(name + ": JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+
+    std::string base = baseDir.empty() ? std::string(".") : baseDir.string();
+    FsContext fs{base.back() == '/' ? base : base + "/"};
+    tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &fs});
+    loader.SetImageLoader(&keepImageBytes, nullptr);
+    tinygltf::Model model;
+    std::string err, warn;
+    bool ok = false;
+    try {
+        if (binary)
+            ok = loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                             static_cast<unsigned int>(bytes.size()), base);
+        else
+            ok = loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()),
+                                            base);
+    } catch (const std::exception& e) {
+        throw Error(name + ": invalid glTF: " + clampName(e.what()));
+    }
+    if (!ok) throw Error(name + ": invalid glTF: " + (err.empty() ? std::string("parse failed") : firstLines(err, 3)));
+    if (!warn.empty()) logWarning(name + ": " + firstLines(warn, 4));
+    for (const std::string& ext : model.extensionsRequired)
+        if (ext != "KHR_lights_punctual" && ext != "KHR_materials_emissive_strength" &&
+            ext != "KHR_materials_transmission" && ext != "KHR_materials_ior" && ext != "KHR_texture_transform")
+            logWarning(name + ": required extension " + clampName(ext) + " is not supported; the result may be wrong");
+    return GltfImporter(model, name).run();
+}
+
+Scene loadGltf(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) throw Error("cannot open glTF file '" + path.string() + "': no such file");
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) throw Error("cannot read '" + path.string() + "': " + ec.message());
+    if (size > kMaxFileBytes) throw Error("'" + path.string() + "' is larger than 2 GiB");
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    if (!in || !in.read(bytes.data(), static_cast<std::streamsize>(size))) throw Error("cannot read '" + path.string() + "'");
+    return loadGltfFromMemory(bytes, path.parent_path(), path.filename().string());
+}
+
+}  // namespace penumbra

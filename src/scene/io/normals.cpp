@@ -1,0 +1,159 @@
+#include "scene/io/normals.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <tuple>
+
+namespace penumbra {
+namespace {
+
+// Above this many faces around one position, smoothing would cost O(n^2); such fans (cone tips,
+// hostile files) get flat normals instead.
+constexpr std::size_t kMaxFan = 256;
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+// Angle at vertex `a` of the triangle a-b-c, in radians; 0 for degenerate corners.
+float cornerAngle(Vec3 a, Vec3 b, Vec3 c) {
+    Vec3 u = normalize(b - a), v = normalize(c - a);
+    float d = std::clamp(dot(u, v), -1.0f, 1.0f);
+    float angle = std::acos(d);
+    return std::isfinite(angle) ? angle : 0.0f;
+}
+
+}  // namespace
+
+void generateCreaseNormals(Mesh& mesh, float creaseDegrees) {
+    const std::size_t vertexCount = mesh.positions.size();
+    const std::size_t triCount = mesh.indices.size() / 3;
+    if (vertexCount == 0 || triCount == 0) {
+        mesh.normals.clear();
+        return;
+    }
+    const float cosCrease = std::cos(creaseDegrees * 3.14159265f / 180.0f);
+
+    // 1. Weld: vertices with bit-identical positions share a position id.
+    std::vector<std::uint32_t> order(vertexCount);
+    std::iota(order.begin(), order.end(), 0u);
+    auto key = [&](std::uint32_t i) {
+        const Vec3& p = mesh.positions[i];
+        return std::make_tuple(std::bit_cast<std::uint32_t>(p.x), std::bit_cast<std::uint32_t>(p.y),
+                               std::bit_cast<std::uint32_t>(p.z));
+    };
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+    std::vector<std::uint32_t> posId(vertexCount);
+    std::uint32_t ids = 0;
+    for (std::size_t i = 0; i < vertexCount; ++i) {
+        if (i > 0 && key(order[i]) != key(order[i - 1])) ++ids;
+        posId[order[i]] = ids;
+    }
+    const std::size_t idCount = std::size_t(ids) + 1;
+
+    // 2. Unit face normals and corner angles.
+    std::vector<Vec3> faceNormal(triCount);
+    std::vector<float> angle(triCount * 3);
+    for (std::size_t t = 0; t < triCount; ++t) {
+        const Vec3 p0 = mesh.positions[mesh.indices[3 * t]];
+        const Vec3 p1 = mesh.positions[mesh.indices[3 * t + 1]];
+        const Vec3 p2 = mesh.positions[mesh.indices[3 * t + 2]];
+        Vec3 n = normalize(cross(p1 - p0, p2 - p0));
+        faceNormal[t] = isFinite(n) ? n : Vec3{};
+        angle[3 * t] = cornerAngle(p0, p1, p2);
+        angle[3 * t + 1] = cornerAngle(p1, p2, p0);
+        angle[3 * t + 2] = cornerAngle(p2, p0, p1);
+    }
+
+    // 3. Corners around each position id (compressed rows).
+    std::vector<std::uint32_t> start(idCount + 1, 0);
+    for (std::uint32_t v : mesh.indices) ++start[posId[v] + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<std::uint32_t> corners(mesh.indices.size());
+    {
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (std::size_t c = 0; c < mesh.indices.size(); ++c)
+            corners[fill[posId[mesh.indices[c]]]++] = static_cast<std::uint32_t>(c);
+    }
+
+    // 4. One normal per corner: the angle-weighted sum of the faces around it within the crease.
+    std::vector<Vec3> cornerNormal(mesh.indices.size());
+    for (std::size_t id = 0; id < idCount; ++id) {
+        const std::uint32_t* begin = corners.data() + start[id];
+        const std::uint32_t* end = corners.data() + start[id + 1];
+        const bool tooMany = std::size_t(end - begin) > kMaxFan;
+        for (const std::uint32_t* c = begin; c != end; ++c) {
+            const Vec3 fn = faceNormal[*c / 3];
+            Vec3 sum{};
+            if (!tooMany && dot(fn, fn) > 0) {
+                // Same iteration order for every corner, so corners with the same set of
+                // faces get bit-identical sums and share a vertex below.
+                for (const std::uint32_t* o = begin; o != end; ++o) {
+                    const Vec3 on = faceNormal[*o / 3];
+                    if (dot(fn, on) >= cosCrease) sum += on * angle[*o];
+                }
+            }
+            Vec3 n = normalize(sum);
+            if (dot(n, n) == 0) n = dot(fn, fn) > 0 ? fn : Vec3{0, 1, 0};
+            cornerNormal[*c] = n;
+        }
+    }
+
+    // 5. Split vertices whose corners ended up with different normals.
+    struct Entry {
+        Vec3 normal;
+        std::uint32_t index;
+        std::uint32_t next;
+    };
+    std::vector<std::uint32_t> head(vertexCount, kNone);
+    std::vector<Entry> entries;
+    entries.reserve(vertexCount + vertexCount / 2);
+    std::vector<Vec3> positions;
+    std::vector<Vec2> uvs;
+    std::vector<Vec3> normals;
+    positions.reserve(vertexCount);
+    normals.reserve(vertexCount);
+    const bool hasUvs = !mesh.uvs.empty();
+    for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
+        const std::uint32_t v = mesh.indices[c];
+        const Vec3 n = cornerNormal[c];
+        std::uint32_t found = kNone;
+        for (std::uint32_t e = head[v]; e != kNone; e = entries[e].next)
+            if (entries[e].normal == n) {
+                found = entries[e].index;
+                break;
+            }
+        if (found == kNone) {
+            found = static_cast<std::uint32_t>(positions.size());
+            positions.push_back(mesh.positions[v]);
+            normals.push_back(n);
+            if (hasUvs) uvs.push_back(mesh.uvs[v]);
+            entries.push_back({n, found, head[v]});
+            head[v] = static_cast<std::uint32_t>(entries.size() - 1);
+        }
+        mesh.indices[c] = found;
+    }
+    mesh.positions = std::move(positions);
+    mesh.normals = std::move(normals);
+    mesh.uvs = std::move(uvs);
+}
+
+Camera cameraFittingBounds(const Aabb& bounds, float fovYDegrees) {
+    Camera camera;
+    camera.fovYDegrees = fovYDegrees;
+    if (bounds.empty() || !isFinite(bounds.lo) || !isFinite(bounds.hi)) return camera;
+    const Vec3 center = bounds.center();
+    float radius = 0.5f * length(bounds.extent());
+    if (!(radius > 0) || !std::isfinite(radius)) radius = 1.0f;
+    const float distance = radius / std::sin(0.5f * fovYDegrees * 3.14159265f / 180.0f);
+    Camera fitted = camera;
+    fitted.position = center + Vec3{0, 0, distance};
+    fitted.lookAt = center;
+    fitted.up = {0, 1, 0};
+    // Coordinates near the float limit would put the camera at infinity or on the centre.
+    if (!isFinite(fitted.position) || fitted.position == fitted.lookAt) return camera;
+    return fitted;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,3 @@
+# OBJ (+MTL after the first NUL byte) and glTF/GLB importers.
+penumbra_fuzz_target(obj LIBS penumbra_scene)
+penumbra_fuzz_target(gltf LIBS penumbra_scene)

@@ -1,0 +1,270 @@
+// glTF importer: node transforms, primitives, materials and textures, lights, cameras, and
+// hostile or broken files (Debian's assimp test models included).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.h"
+#include "io_test_util.h"
+#include "scene/io/gltf.h"
+
+namespace penumbra {
+namespace {
+
+using test::dataDir;
+const std::filesystem::path kAssimp = "/usr/share/assimp/models/glTF2";
+
+std::string errorOf(auto&& fn) {
+    testing::internal::CaptureStderr();
+    std::string what = "<no error>";
+    try {
+        fn();
+    } catch (const Error& e) {
+        what = e.what();
+    }
+    testing::internal::GetCapturedStderr();
+    return what;
+}
+
+void expectNear(Vec3 a, Vec3 b, float eps = 1e-5f) {
+    EXPECT_NEAR(a.x, b.x, eps);
+    EXPECT_NEAR(a.y, b.y, eps);
+    EXPECT_NEAR(a.z, b.z, eps);
+}
+
+const Mesh* meshNamed(const Scene& s, const std::string& name) {
+    for (const Mesh& m : s.meshes)
+        if (m.name == name) return &m;
+    return nullptr;
+}
+
+class GltfScene : public testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        testing::internal::CaptureStderr();
+        scene_ = new Scene(loadGltf(dataDir() / "gltf/scene.gltf"));
+        warnings_ = new std::string(testing::internal::GetCapturedStderr());
+    }
+    static void TearDownTestSuite() {
+        delete scene_;
+        delete warnings_;
+    }
+    static Scene* scene_;
+    static std::string* warnings_;
+};
+Scene* GltfScene::scene_ = nullptr;
+std::string* GltfScene::warnings_ = nullptr;
+
+TEST_F(GltfScene, ParentTranslateThenChildRotate) {
+    const Mesh* tri = meshNamed(*scene_, "tri/0");
+    ASSERT_NE(tri, nullptr);
+    ASSERT_EQ(tri->positions.size(), 3u);  // non-indexed primitive
+    EXPECT_EQ(tri->indices, (std::vector<std::uint32_t>{0, 1, 2}));
+    // world = T(10,0,0) * Rz(90): (1,0,0) -> (0,1,0) -> (10,1,0).
+    expectNear(tri->positions[0], {10, 0, 0});
+    expectNear(tri->positions[1], {10, 1, 0});
+    expectNear(tri->positions[2], {9, 0, 0});
+}
+
+TEST_F(GltfScene, NonTriangleModesAreSkippedWithWarning) {
+    EXPECT_EQ(scene_->triangleCount(), 3u);  // 1 + quad, the LINES primitive is gone
+    EXPECT_NE(warnings_->find("mode 1"), std::string::npos) << *warnings_;
+}
+
+TEST_F(GltfScene, MirroredNodeFlipsWindingAndKeepsNormals) {
+    const Mesh* quad = meshNamed(*scene_, "quad/0");
+    ASSERT_NE(quad, nullptr);
+    ASSERT_EQ(quad->triangleCount(), 2u);
+    Vec3 p0 = quad->positions[quad->indices[0]], p1 = quad->positions[quad->indices[1]],
+         p2 = quad->positions[quad->indices[2]];
+    Vec3 geometric = normalize(cross(p1 - p0, p2 - p0));
+    expectNear(geometric, {0, 0, 1});
+    expectNear(quad->normals[0], {0, 0, 1});
+    expectNear(quad->positions[1], {-1, 0, -3});
+    ASSERT_EQ(quad->uvs.size(), 4u);
+    EXPECT_FLOAT_EQ(quad->uvs[2].x, 1.0f);
+}
+
+TEST_F(GltfScene, Materials) {
+    const Mesh* tri = meshNamed(*scene_, "tri/0");
+    const Material& e = scene_->materials[tri->material];
+    EXPECT_EQ(e.name, "emitter");
+    expectNear(e.albedo, {0.2f, 0.4f, 0.6f});
+    EXPECT_FLOAT_EQ(e.metallic, 0.25f);
+    EXPECT_FLOAT_EQ(e.roughness, 0.75f);
+    expectNear(e.emission, {4, 2, 0});  // emissiveFactor * KHR_materials_emissive_strength
+    EXPECT_FALSE(e.twoSided);
+
+    const Material& t = scene_->materials[meshNamed(*scene_, "quad/0")->material];
+    EXPECT_TRUE(t.twoSided);
+    EXPECT_FLOAT_EQ(t.alphaCutoff, 0.3f);
+    EXPECT_FLOAT_EQ(t.transmission, 1.0f);
+    EXPECT_FLOAT_EQ(t.ior, 1.33f);
+    ASSERT_TRUE(t.albedoTexture.present());
+    ASSERT_TRUE(t.metallicRoughnessTexture.present());
+    EXPECT_NE(t.albedoTexture.texture, t.metallicRoughnessTexture.texture);  // sRGB vs linear copies
+    EXPECT_EQ(t.albedoTexture.wrapU, Wrap::ClampToEdge);
+    EXPECT_EQ(t.albedoTexture.wrapV, Wrap::MirroredRepeat);
+    const Texture& base = scene_->textures[std::size_t(t.albedoTexture.texture)];
+    EXPECT_TRUE(base.srgb);
+    EXPECT_FALSE(scene_->textures[std::size_t(t.metallicRoughnessTexture.texture)].srgb);
+    ASSERT_EQ(base.width, 2);
+    EXPECT_EQ(base.rgba[0], 255);  // top-left red
+    EXPECT_EQ(base.rgba[4 + 1], 255);  // top-right green
+}
+
+TEST_F(GltfScene, SpotLightTakesNodeTransform) {
+    ASSERT_EQ(scene_->lights.size(), 1u);
+    const Light& l = scene_->lights[0];
+    EXPECT_EQ(l.type, LightType::Spot);
+    expectNear(l.position, {10, 0, 2});
+    expectNear(l.direction, {0, 0, -1});
+    expectNear(l.color, {1, 0.5f, 0.25f});
+    EXPECT_FLOAT_EQ(l.intensity, 100);
+    EXPECT_FLOAT_EQ(l.innerConeRadians, 0.1f);
+    EXPECT_FLOAT_EQ(l.outerConeRadians, 0.3f);
+}
+
+TEST_F(GltfScene, FirstCameraBecomesTheDefault) {
+    expectNear(scene_->camera.position, {0, 0, 5});
+    expectNear(scene_->camera.lookAt, {0, 0, 4});
+    expectNear(scene_->camera.up, {0, 1, 0});
+    EXPECT_NEAR(scene_->camera.fovYDegrees, 0.5 * 180 / M_PI, 1e-3);
+}
+
+TEST(GltfLoader, EmbeddedWithoutSceneUsesRootNodesAndFitsCamera) {
+    Scene s = loadGltf(dataDir() / "gltf/triangle_embedded.gltf");
+    EXPECT_EQ(s.triangleCount(), 1u);
+    ASSERT_EQ(s.materials.size(), 1u);  // glTF's default material
+    const Camera& c = s.camera;
+    validateCamera(c);
+    expectNear(c.lookAt, {0.5f, 0.5f, 0});
+    float radius = 0.5f * std::sqrt(2.0f);
+    EXPECT_NEAR(c.position.z, radius / std::sin(20 * M_PI / 180), 1e-4);
+    EXPECT_FLOAT_EQ(c.fovYDegrees, 40.0f);
+}
+
+TEST(GltfLoader, MissingImageWarnsAndUsesChecker) {
+    testing::internal::CaptureStderr();
+    Scene s = loadGltf(dataDir() / "gltf/triangle_missing_image.glb");
+    std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("penumbra: warning:"), std::string::npos);
+    ASSERT_EQ(s.textures.size(), 1u);
+    EXPECT_EQ(s.textures[0].width, 8);
+    EXPECT_EQ(s.textures[0].name, "missing.png");
+}
+
+TEST(GltfLoader, BrokenFilesGiveErrorsThatSayWhere) {
+    struct Case {
+        const char* file;
+        const char* expect;
+    };
+    for (const Case& c : {Case{"cycle.gltf", "cycle"}, Case{"accessor_overflow.gltf", "accessor 0"},
+                          Case{"bad_stride.gltf", "byteStride"}, Case{"bad_mesh_index.gltf", "mesh 7"},
+                          Case{"missing_buffer.gltf", "nowhere.bin"}}) {
+        std::string e = errorOf([&] { loadGltf(dataDir() / "gltf" / c.file); });
+        EXPECT_NE(e.find(c.expect), std::string::npos) << c.file << ": " << e;
+        EXPECT_NE(e.find(c.file), std::string::npos) << e;
+    }
+}
+
+TEST(GltfLoader, MalformedBytesGiveErrors) {
+    std::string glb = test::readBytes(dataDir() / "gltf/triangle_missing_image.glb");
+    std::string deep = "{\"asset\":{\"version\":\"2.0\"},\"extras\":" + std::string(100000, '[') + std::string(100000, ']') + "}";
+    const std::vector<std::string> bad = {
+        "", "{", "null", "glTF", glb.substr(0, glb.size() / 2), glb.substr(0, 30), deep,
+        R"({"asset":{"version":"2.0"}})",  // no triangles
+        R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":1e30,"uri":"data:application/octet-stream;base64,AAAA"}]})",
+        R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[5]}],"nodes":[{}]})",
+    };
+    for (const std::string& bytes : bad) {
+        std::string e = errorOf([&] { loadGltfFromMemory(bytes, "/nonexistent", "bad.gltf"); });
+        EXPECT_NE(e, "<no error>") << bytes.substr(0, 80);
+    }
+}
+
+TEST(GltfLoader, DeepNodeChainIsRefused) {
+    std::string nodes;
+    for (int i = 0; i < 1000; ++i) {
+        if (i > 0) nodes += ',';
+        nodes.append("{\"children\":[").append(std::to_string(i + 1)).append("]}");
+    }
+    nodes += ",{}";
+    std::string json = R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[)" + nodes + "]}";
+    std::string e = errorOf([&] { loadGltfFromMemory(json, "/nonexistent", "deep.gltf"); });
+    EXPECT_NE(e.find("levels deep"), std::string::npos) << e;
+}
+
+// ---- Debian assimp-testmodels -----------------------------------------------------------------
+
+TEST(GltfDebianAssets, BoxTexturedVariants) {
+    for (const char* rel : {"BoxTextured-glTF/BoxTextured.gltf", "BoxTextured-glTF-Binary/BoxTextured.glb",
+                            "BoxTextured-glTF-Embedded/BoxTextured.gltf"}) {
+        const auto path = kAssimp / rel;
+        PENUMBRA_REQUIRE_ASSET(path);
+        SCOPED_TRACE(rel);
+        Scene s = loadGltf(path);
+        EXPECT_EQ(s.triangleCount(), 12u);
+        ASSERT_EQ(s.meshes.size(), 1u);
+        const Material& m = s.materials[s.meshes[0].material];
+        ASSERT_TRUE(m.albedoTexture.present());
+        const Texture& t = s.textures[std::size_t(m.albedoTexture.texture)];
+        EXPECT_GT(t.width, 8);  // the real image, not the checker
+        EXPECT_EQ(t.rgba.size(), std::size_t(t.width) * t.height * 4);
+        EXPECT_EQ(s.meshes[0].uvs.size(), s.meshes[0].positions.size());
+        validateCamera(s.camera);
+    }
+}
+
+TEST(GltfDebianAssets, BrokenModelsFailCleanly) {
+    for (const char* rel : {"RecursiveNodes/RecursiveNodes.gltf", "IndexOutOfRange/IndexOutOfRange.gltf",
+                            "IndexOutOfRange/AllIndicesOutOfRange.gltf", "MissingBin/BoxTextured.gltf"}) {
+        const auto path = kAssimp / rel;
+        PENUMBRA_REQUIRE_ASSET(path);
+        std::string e = errorOf([&] { loadGltf(path); });
+        EXPECT_NE(e, "<no error>") << rel;
+    }
+    const auto inf = kAssimp / "BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb";
+    PENUMBRA_REQUIRE_ASSET(inf);
+    // Either refused with a message or loaded into a valid scene.
+    testing::internal::CaptureStderr();
+    try {
+        loadGltf(inf).validate();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("BoxWithInfinites"), std::string::npos) << e.what();
+    }
+    testing::internal::GetCapturedStderr();
+}
+
+TEST(GltfDebianAssets, CamerasFile) {
+    const auto path = kAssimp / "cameras/Cameras.gltf";
+    PENUMBRA_REQUIRE_ASSET(path);
+    testing::internal::CaptureStderr();
+    Scene s = loadGltf(path);
+    testing::internal::GetCapturedStderr();
+    validateCamera(s.camera);
+    EXPECT_GT(s.triangleCount(), 0u);
+}
+
+// Every glTF file in the package either loads into a valid scene or fails with an Error.
+TEST(GltfDebianAssets, EveryFileLoadsOrFailsCleanly) {
+    PENUMBRA_REQUIRE_ASSET(kAssimp);
+    int loaded = 0, refused = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(kAssimp)) {
+        const auto ext = entry.path().extension();
+        if (ext != ".gltf" && ext != ".glb") continue;
+        testing::internal::CaptureStderr();
+        try {
+            loadGltf(entry.path()).validate();
+            ++loaded;
+        } catch (const Error&) {
+            ++refused;
+        }
+        testing::internal::GetCapturedStderr();
+    }
+    EXPECT_GT(loaded, 10);
+    std::printf("loaded %d, refused %d\n", loaded, refused);
+}
+
+}  // namespace
+}  // namespace penumbra
