@@ -51,7 +51,7 @@ void main() {
     if (p.valid == 0u) return;
     vec3 origin = offsetRayOrigin(p.position, p.normal);
     if (push.mode == PN_RAYBENCH_SHADOW) {
-        if (frame.lightCount == 0u || frame.punctualProbability >= 1.0) return;
+        if (frame.lightCount == 0u) return;
         LightSample ls = sampleLight(rng);
         vec3 span = offsetRayOrigin(ls.position, ls.normal) - origin;
         float len = length(span);

@@ -30,7 +30,7 @@ uint shadowRays = 0u;
 // Direct light from a punctual light (a delta light: no MIS, BSDF sampling never hits it).
 vec3 sampleDirectPunctual(Surface s, vec3 albedo, inout uint rng) {
     float pmf;
-    uint index = pickPunctual(rngNext(rng), pmf);
+    uint index = pickPunctual(s.position, rngNext(rng), pmf);
     PunctualLight l = punctualLights[index];
     vec3 wi;
     float dist;
@@ -41,13 +41,11 @@ vec3 sampleDirectPunctual(Surface s, vec3 albedo, inout uint rng) {
     vec3 origin = offsetRayOrigin(s.position, s.geometricNormal);
     ++shadowRays;
     if (traceOccluded(origin, wi, dist == PN_INFINITY ? PN_INFINITY : dist * (1.0 - 1e-4))) return vec3(0.0);
-    return lambertEval(albedo) * cosSurface * incident / (pmf * frame.punctualProbability);
+    return lambertEval(albedo) * cosSurface * incident / pmf;
 }
 
-// Direct light at surface s by light sampling, MIS-weighted against the BSDF.
-vec3 sampleDirect(Surface s, vec3 albedo, inout uint rng) {
-    if (frame.punctualCount > 0u && rngNext(rng) < frame.punctualProbability) return sampleDirectPunctual(s, albedo, rng);
-    if (frame.lightCount == 0u) return vec3(0.0);
+// Direct light from an emissive triangle, MIS-weighted against the BSDF.
+vec3 sampleDirectTriangle(Surface s, vec3 albedo, inout uint rng) {
     LightSample ls = sampleLight(rng);
     vec3 toLight = ls.position - s.position;
     float dist2 = dot(toLight, toLight);
@@ -90,7 +88,7 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
             float weight = 1.0;
             if (depth > 0u && s.lightPmf > 0.0) {
                 float cosLight = dot(s.geometricNormal, -direction);
-                float lightPdf = s.lightPmf * triangleLightShare() / s.area * hit.t * hit.t / max(cosLight, 1e-12);
+                float lightPdf = s.lightPmf / s.area * hit.t * hit.t / max(cosLight, 1e-12);
                 weight = powerHeuristic(bsdfPdf, lightPdf);
             }
             result += throughput * m.emission * weight;
@@ -98,7 +96,8 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
         if (depth >= frame.maxBounces) break;
 
         vec3 albedo = materialBaseColor(m, s.uv).rgb;
-        if (frame.lightCount + frame.punctualCount > 0u) result += throughput * sampleDirect(s, albedo, rng);
+        if (frame.lightCount > 0u) result += throughput * sampleDirectTriangle(s, albedo, rng);
+        if (frame.punctualCount > 0u) result += throughput * sampleDirectPunctual(s, albedo, rng);
 
         vec3 wi = sampleCosineHemisphere(s.shadingNormal, rngNext2(rng));
         // A sample under the true surface (possible with shading normals) carries no light.

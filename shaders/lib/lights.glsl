@@ -12,10 +12,8 @@ struct LightSample {
     float pdfArea;   // pmf of the triangle / its area (the triangle table's share included)
 };
 
-// The share of light samples that go to emissive triangles.
-float triangleLightShare() { return frame.lightCount > 0u ? 1.0 - frame.punctualProbability : 0.0; }
-
-// A triangle light point; the caller has already chosen triangles over punctual lights.
+// A point on an emissive triangle chosen by power. Triangle and punctual lights are each sampled
+// at every vertex, so neither class's share of samples has to be guessed.
 LightSample sampleLight(inout uint rng) {
     float u = rngNext(rng) * float(frame.lightCount);
     uint slot = min(uint(u), frame.lightCount - 1u);
@@ -28,7 +26,7 @@ LightSample sampleLight(inout uint rng) {
     ls.position = tv.v0 + b.x * tv.e1 + b.y * tv.e2;
     ls.normal = normalize(cross(tv.e1, tv.e2));
     ls.radiance = materials[ta.materialId].emission;
-    ls.pdfArea = entry.pmf * triangleLightShare() / ta.area;
+    ls.pdfArea = entry.pmf / ta.area;
     return ls;
 }
 
@@ -57,16 +55,32 @@ vec3 punctualIncident(PunctualLight l, vec3 p, out vec3 wi, out float dist) {
     return l.intensity * falloff;
 }
 
-// Picks a punctual light by its selectPmf (a linear scan: scenes have few).
-uint pickPunctual(float u, out float pmf) {
-    float acc = 0.0;
+// How much light `l` could bring to p (ignoring visibility and the surface's orientation).
+float punctualWeight(PunctualLight l, vec3 p) {
+    if (frame.punctualCount > PN_PUNCTUAL_SCAN_LIMIT) return l.selectPmf;
+    vec3 wi;
+    float dist;
+    return dot(punctualIncident(l, p, wi, dist), vec3(0.2126, 0.7152, 0.0722));
+}
+
+// Picks a punctual light in proportion to punctualWeight at p; pmf is its probability (0 when
+// no light reaches p at all).
+uint pickPunctual(vec3 p, float u, out float pmf) {
+    float total = 0.0;
+    for (uint i = 0u; i < frame.punctualCount; ++i) total += punctualWeight(punctualLights[i], p);
+    pmf = 0.0;
+    if (!(total > 0.0)) return 0u;
+    float target = u * total, acc = 0.0;
+    uint last = 0u;
     for (uint i = 0u; i < frame.punctualCount; ++i) {
-        pmf = punctualLights[i].selectPmf;
-        acc += pmf;
-        if (u < acc) return i;
+        float w = punctualWeight(punctualLights[i], p);
+        if (w <= 0.0) continue;
+        last = i;
+        pmf = w / total;
+        acc += w;
+        if (target < acc) return i;
     }
-    pmf = punctualLights[frame.punctualCount - 1u].selectPmf;
-    return frame.punctualCount - 1u;
+    return last;  // rounding left target at the very top: the last light with weight
 }
 
 #endif

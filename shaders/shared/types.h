@@ -63,6 +63,9 @@ using namespace penumbra::gpu_types;
 #define PN_LIGHT_POINT 0u
 #define PN_LIGHT_SPOT 1u
 #define PN_LIGHT_DIRECTIONAL 2u
+// Up to this many punctual lights, the one to sample is chosen by its contribution at the
+// shading point (so a torch next to the camera wins over distant lamps); beyond it, by power.
+#define PN_PUNCTUAL_SCAN_LIMIT 64u
 
 #define PN_NO_HIT 0xffffffffu
 
@@ -140,7 +143,7 @@ PN_STRUCT(PunctualLight) {
     vec3 direction;       // unit, where the light travels (spot, directional)
     float cosOuter;       // spot: cosine of the outer cone angle
     float cosInner;       // spot: cosine of the inner cone angle
-    float selectPmf;      // probability that light sampling picks this light
+    float selectPmf;      // share of the lights' total power (used to pick among many lights)
     float pad0;
     float pad1;
 };
@@ -165,8 +168,8 @@ PN_STRUCT(FrameUniforms) {
     uint samplesPerPass;
     vec3 background;     // radiance of rays that leave the scene
     uint punctualCount;  // entries in the punctual light buffer
-    float punctualProbability;  // chance that light sampling picks a punctual light over a triangle
     uint pad0;
+    uint pad3;
     uint pad1;
     uint pad2;
 };
@@ -231,8 +234,7 @@ static_assert(sizeof(FrameUniforms) == 128 && offsetof(FrameUniforms, tanHalfFov
               offsetof(FrameUniforms, cameraUp) == 32 && offsetof(FrameUniforms, width) == 44 &&
               offsetof(FrameUniforms, cameraForward) == 48 && offsetof(FrameUniforms, height) == 60 &&
               offsetof(FrameUniforms, maxBounces) == 64 && offsetof(FrameUniforms, samplesPerPass) == 92 &&
-              offsetof(FrameUniforms, background) == 96 && offsetof(FrameUniforms, punctualCount) == 108 &&
-              offsetof(FrameUniforms, punctualProbability) == 112);
+              offsetof(FrameUniforms, background) == 96 && offsetof(FrameUniforms, punctualCount) == 108);
 static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, type) == 12 &&
               offsetof(PunctualLight, range) == 28 && offsetof(PunctualLight, direction) == 32 &&
               offsetof(PunctualLight, cosOuter) == 44 && offsetof(PunctualLight, selectPmf) == 52);

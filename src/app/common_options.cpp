@@ -19,6 +19,7 @@ void addCameraOptions(CLI::App& cmd, CameraOverrides& o) {
     cmd.add_option("--look-at", o.lookAt, "point the camera looks at, x,y,z");
     cmd.add_option("--up", o.up, "camera up vector x,y,z");
     cmd.add_option("--fov", o.fov, "vertical field of view in degrees");
+    cmd.add_option("--torch", o.torch, "intensity in candela of a light carried at the camera (0: off; on for WAD levels)");
 }
 
 Vec3 parseVec3(const std::string& text, const std::string& flag) {
@@ -42,6 +43,12 @@ Scene loadScene(const std::string& nameOrPath, const std::string& map, const Cam
     if (!o.up.empty()) scene.camera.up = parseVec3(o.up, "--up");
     if (o.fov) scene.camera.fovYDegrees = *o.fov;
     validateCamera(scene.camera);
+    if (o.torch) {
+        if (!(*o.torch >= 0 && *o.torch <= 1e9f)) throw UsageError("--torch must be between 0 and 1e9 candela");
+        scene.torch.enabled = *o.torch > 0;
+        scene.torch.intensity = *o.torch;
+    }
+    attachTorch(scene);
     return scene;
 }
 

@@ -18,6 +18,7 @@ namespace penumbra::app {
 struct CameraOverrides {
     std::string position, lookAt, up;  // "x,y,z" as typed
     std::optional<float> fov;
+    std::optional<float> torch;  // candela; 0 turns the torch off
 };
 
 void addDeviceOption(CLI::App& cmd, std::string& device);
@@ -27,7 +28,8 @@ void addCameraOptions(CLI::App& cmd, CameraOverrides& overrides);
 Vec3 parseVec3(const std::string& text, const std::string& flag);
 
 // A built-in scene by name or a scene file (`map` picks a WAD level), with the camera overrides
-// applied and checked. A .json scene file's render settings go to *fileSettings when given.
+// applied and checked, and the torch attached. A .json scene file's render settings go to
+// *fileSettings when given.
 Scene loadScene(const std::string& nameOrPath, const std::string& map, const CameraOverrides& overrides,
                 SceneFileSettings* fileSettings = nullptr);
 

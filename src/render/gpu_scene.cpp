@@ -32,9 +32,9 @@ shader::Material toGpuMaterial(const Material& m) {
     return gm;
 }
 
-// Converts the scene's punctual lights and returns their total power (up to the same constant
-// as the triangle lights' power), which splits light samples between the two kinds.
-double addPunctualLights(const Scene& scene, std::vector<shader::PunctualLight>& out) {
+// Converts the scene's punctual lights, with each one's share of their total power (what picks
+// among them when there are too many to weigh at every shading point).
+void addPunctualLights(const Scene& scene, std::vector<shader::PunctualLight>& out) {
     const Aabb box = scene.bounds();
     const double sceneRadius = box.empty() ? 1.0 : 0.5 * length(box.extent());
     std::vector<double> power;
@@ -59,7 +59,6 @@ double addPunctualLights(const Scene& scene, std::vector<shader::PunctualLight>&
     }
     const double total = std::accumulate(power.begin(), power.end(), 0.0);
     for (std::size_t i = 0; i < out.size(); ++i) out[i].selectPmf = float(power[i] / total);
-    return total;
 }
 
 }  // namespace
@@ -104,10 +103,7 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
         }
     }
     out.lights = buildAliasTable(emissive, power);
-    const double trianglePower = 3.14159265358979 * std::accumulate(power.begin(), power.end(), 0.0);
-    const double punctualPower = addPunctualLights(scene, out.punctual);
-    if (!out.punctual.empty())
-        out.punctualProbability = out.lights.empty() ? 1.0f : float(punctualPower / (punctualPower + trianglePower));
+    addPunctualLights(scene, out.punctual);
     for (const shader::LightAlias& l : out.lights) out.triAttribs[l.triangle].lightPmf = l.pmf;
 
     for (const Texture& t : scene.textures) {
@@ -140,8 +136,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       nodeCount(static_cast<std::uint32_t>(a.nodes.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
       lightCount(static_cast<std::uint32_t>(a.lights.size())),
-      punctualCount(static_cast<std::uint32_t>(a.punctual.size())),
-      punctualProbability(a.punctualProbability) {}
+      punctualCount(static_cast<std::uint32_t>(a.punctual.size())) {}
 
 std::size_t GpuScene::deviceBytes() const {
     return nodes.size() + triVerts.size() + triAttribs.size() + materials.size() + lights.size() +

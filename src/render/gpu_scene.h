@@ -23,7 +23,6 @@ struct SceneArrays {
     std::vector<shader::TextureInfo> textures;
     std::vector<std::uint32_t> texels;  // RGBA8, one texel per word
     std::vector<shader::PunctualLight> punctual;
-    float punctualProbability = 0;      // share of light samples given to punctual lights
     bvh::BvhStats stats{};
     double buildMilliseconds = 0;
 };
@@ -36,7 +35,6 @@ public:
 
     gpu::Buffer nodes, triVerts, triAttribs, materials, lights, textures, texels, punctual;
     std::uint32_t nodeCount = 0, triCount = 0, lightCount = 0, punctualCount = 0;
-    float punctualProbability = 0;
 
     std::size_t deviceBytes() const;
 };

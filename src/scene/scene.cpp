@@ -59,6 +59,19 @@ void Scene::validate() const {
     }
 }
 
+void attachTorch(Scene& scene) {
+    if (!scene.torch.enabled || !(scene.torch.intensity > 0)) return;
+    Light torch;
+    torch.name = "torch";
+    // 15 cm below the eye: the shadows it casts are visible, as with a torch held at the chest.
+    Vec3 up = normalize(scene.camera.up);
+    torch.position = scene.camera.position - up * 0.15f;
+    torch.color = scene.torch.color;
+    torch.intensity = scene.torch.intensity;
+    torch.range = scene.torch.range;
+    scene.lights.push_back(torch);
+}
+
 std::size_t sceneBytes(const Scene& scene) {
     std::size_t bytes = sizeof(Scene) + scene.materials.size() * sizeof(Material) + scene.lights.size() * sizeof(Light);
     for (const Mesh& m : scene.meshes)

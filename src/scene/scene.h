@@ -90,6 +90,15 @@ struct Camera {
     float fovYDegrees = 40.0f;  // vertical field of view
 };
 
+// A light carried with the camera (the Doom renderer's handheld torch): a point light placed at
+// the camera, slightly below eye level, whenever the scene is rendered.
+struct Torch {
+    bool enabled = false;
+    Vec3 color{1.0f, 0.85f, 0.6f};  // warm, like a flame or an old bulb
+    float intensity = 20.0f;        // candela
+    float range = 0.0f;             // 0: unlimited
+};
+
 struct Scene {
     std::string name;
     std::vector<Material> materials;
@@ -98,6 +107,7 @@ struct Scene {
     std::vector<Light> lights;
     Camera camera;
     Vec3 background{0};  // radiance of rays that leave the scene
+    Torch torch;
 
     std::size_t triangleCount() const;
     Aabb bounds() const;
@@ -113,6 +123,9 @@ struct SceneTriangle {
     Vec2 uv[3];
     std::uint32_t material = 0;
 };
+
+// Adds the torch, when enabled, as a point light at the camera (call after the camera is final).
+void attachTorch(Scene& scene);
 
 // Bytes the scene model holds in memory (vector payloads), for `penumbra info`.
 std::size_t sceneBytes(const Scene& scene);

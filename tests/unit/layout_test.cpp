@@ -64,8 +64,7 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, height), offsetof(FrameUniforms, maxBounces), offsetof(FrameUniforms, rouletteStart),
                        offsetof(FrameUniforms, lightCount), offsetof(FrameUniforms, triCount), offsetof(FrameUniforms, nodeCount),
                        offsetof(FrameUniforms, accel), offsetof(FrameUniforms, seed), offsetof(FrameUniforms, samplesPerPass),
-                       offsetof(FrameUniforms, background), offsetof(FrameUniforms, punctualCount),
-                       offsetof(FrameUniforms, punctualProbability)});
+                       offsetof(FrameUniforms, background), offsetof(FrameUniforms, punctualCount)});
         expectMembers(spv, "PunctualLight", {0, offsetof(PunctualLight, type), offsetof(PunctualLight, intensity),
                                              offsetof(PunctualLight, range), offsetof(PunctualLight, direction),
                                              offsetof(PunctualLight, cosOuter), offsetof(PunctualLight, cosInner),
