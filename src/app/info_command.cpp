@@ -1,5 +1,6 @@
 // penumbra info [SCENE]: Vulkan devices, which one would be chosen, limits; with a scene, its
 // size and BVH statistics.
+#include <chrono>
 #include <cstdio>
 #include <memory>
 
@@ -17,7 +18,9 @@ struct InfoArgs {
 };
 
 void printScene(const std::string& name, const std::string& map) {
+    const auto start = std::chrono::steady_clock::now();
     Scene scene = loadScene(name, map, {});
+    const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const std::size_t cpuBytes = sceneBytes(scene);
     SceneArrays arrays = buildSceneArrays(scene);
     const bvh::BvhStats& s = arrays.stats;
@@ -25,8 +28,8 @@ void printScene(const std::string& name, const std::string& map) {
     const std::size_t gpuBytes = arrays.nodes.size() * sizeof(shader::BvhNode) + tris * (sizeof(shader::TriVerts) + sizeof(shader::TriAttribs)) +
                                  arrays.materials.size() * sizeof(shader::Material) + arrays.lights.size() * sizeof(shader::LightAlias) +
                                  arrays.textures.size() * sizeof(shader::TextureInfo) + arrays.texels.size() * 4;
-    std::printf("scene %s: %zu triangles, %zu materials, %zu emissive triangles\n", scene.name.c_str(), tris,
-                scene.materials.size(), arrays.lights.size());
+    std::printf("scene %s: %zu triangles, %zu materials, %zu emissive triangles, loaded in %.0f ms\n",
+                scene.name.c_str(), tris, scene.materials.size(), arrays.lights.size(), loadMs);
     std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, built in %.2f ms\n", s.nodes,
                 s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.buildMilliseconds);
     std::printf("  %zu textures, %zu punctual lights\n", scene.textures.size(), scene.lights.size());

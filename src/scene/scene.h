@@ -95,7 +95,7 @@ struct Camera {
 struct Torch {
     bool enabled = false;
     Vec3 color{1.0f, 0.85f, 0.6f};  // warm, like a flame or an old bulb
-    float intensity = 20.0f;        // candela
+    float intensity = 80.0f;        // candela: lights a Doom room of ~10 m to a visible level
     float range = 0.0f;             // 0: unlimited
 };
 
