@@ -35,6 +35,15 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_TEXTURES 10  // TextureInfo per texture
 #define PN_BINDING_TEXELS 11    // every texture's RGBA8 texels, one uint each
 #define PN_BINDING_PUNCTUAL 12  // PunctualLight per point, spot or directional light
+#define PN_BINDING_SPHERES 13        // analytic spheres
+#define PN_BINDING_SPHERE_LIGHTS 14  // emissive spheres, for light sampling
+#define PN_BINDING_ENV_TABLE 15      // environment importance-sampling table
+// Bindings 16-23 are for the viewer's passes (G-buffer, history, denoiser, debug views).
+
+// ---- estimators the integrator combines (FrameUniforms.misMode) ----
+#define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic
+#define PN_MIS_LIGHT_ONLY 1u  // direct light from light sampling only
+#define PN_MIS_BSDF_ONLY 2u   // direct light from BSDF-sampled hits only
 
 // ---- acceleration modes ----
 #define PN_ACCEL_BVH 0u
@@ -148,7 +157,7 @@ PN_STRUCT(PunctualLight) {
     float pad1;
 };
 
-// Per-frame constants (uniform buffer), 128 bytes.
+// Per-frame constants (uniform buffer), 160 bytes.
 PN_STRUCT(FrameUniforms) {
     vec3 cameraPosition;
     float tanHalfFovY;
@@ -168,10 +177,20 @@ PN_STRUCT(FrameUniforms) {
     uint samplesPerPass;
     vec3 background;     // radiance of rays that leave the scene
     uint punctualCount;  // entries in the punctual light buffer
+    // Thin-lens camera (0 radius: pinhole) and analytic primitives.
+    float lensRadius;      // metres
+    float focusDistance;   // metres along cameraForward
+    uint sphereCount;      // entries in the sphere buffer
+    uint sphereLightCount; // entries in the emissive-sphere table
+    // Environment light (PN_NO_TEXTURE: the constant background only).
+    uint envTexture;       // index into the texture table of an equirectangular map
+    float envIntensity;    // multiplies the map
+    float envRotation;     // radians about +y
+    uint envAliasCount;    // entries in the environment's importance table
+    uint misMode;          // PN_MIS_*: which estimators the integrator combines (tests compare them)
+    uint debugMode;        // viewer debug views; 0: the image
     uint pad0;
-    uint pad3;
     uint pad1;
-    uint pad2;
 };
 
 // Per-dispatch constants, 16 bytes.
@@ -229,12 +248,15 @@ static_assert(sizeof(Material) == 48 && offsetof(Material, flags) == 12 &&
               offsetof(Material, albedoTexture) == 32 && offsetof(Material, albedoWrap) == 36);
 static_assert(sizeof(TextureInfo) == 16 && offsetof(TextureInfo, flags) == 12);
 static_assert(sizeof(LightAlias) == 16 && offsetof(LightAlias, pmf) == 12);
-static_assert(sizeof(FrameUniforms) == 128 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
+static_assert(sizeof(FrameUniforms) == 160 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
               offsetof(FrameUniforms, cameraRight) == 16 && offsetof(FrameUniforms, aspect) == 28 &&
               offsetof(FrameUniforms, cameraUp) == 32 && offsetof(FrameUniforms, width) == 44 &&
               offsetof(FrameUniforms, cameraForward) == 48 && offsetof(FrameUniforms, height) == 60 &&
               offsetof(FrameUniforms, maxBounces) == 64 && offsetof(FrameUniforms, samplesPerPass) == 92 &&
-              offsetof(FrameUniforms, background) == 96 && offsetof(FrameUniforms, punctualCount) == 108);
+              offsetof(FrameUniforms, background) == 96 && offsetof(FrameUniforms, punctualCount) == 108 &&
+              offsetof(FrameUniforms, lensRadius) == 112 && offsetof(FrameUniforms, sphereLightCount) == 124 &&
+              offsetof(FrameUniforms, envTexture) == 128 && offsetof(FrameUniforms, envAliasCount) == 140 &&
+              offsetof(FrameUniforms, misMode) == 144 && offsetof(FrameUniforms, debugMode) == 148);
 static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, type) == 12 &&
               offsetof(PunctualLight, range) == 28 && offsetof(PunctualLight, direction) == 32 &&
               offsetof(PunctualLight, cosOuter) == 44 && offsetof(PunctualLight, selectPmf) == 52);

@@ -30,6 +30,9 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.seed = settings.seed;
     f.samplesPerPass = settings.samplesPerPass;
     f.background = background;
+    f.focusDistance = 1.0f;
+    f.envTexture = PN_NO_TEXTURE;
+    f.envIntensity = 1.0f;
     return f;
 }
 

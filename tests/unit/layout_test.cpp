@@ -64,7 +64,13 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, height), offsetof(FrameUniforms, maxBounces), offsetof(FrameUniforms, rouletteStart),
                        offsetof(FrameUniforms, lightCount), offsetof(FrameUniforms, triCount), offsetof(FrameUniforms, nodeCount),
                        offsetof(FrameUniforms, accel), offsetof(FrameUniforms, seed), offsetof(FrameUniforms, samplesPerPass),
-                       offsetof(FrameUniforms, background), offsetof(FrameUniforms, punctualCount)});
+                       offsetof(FrameUniforms, background), offsetof(FrameUniforms, punctualCount),
+                       offsetof(FrameUniforms, lensRadius), offsetof(FrameUniforms, focusDistance),
+                       offsetof(FrameUniforms, sphereCount), offsetof(FrameUniforms, sphereLightCount),
+                       offsetof(FrameUniforms, envTexture), offsetof(FrameUniforms, envIntensity),
+                       offsetof(FrameUniforms, envRotation), offsetof(FrameUniforms, envAliasCount),
+                       offsetof(FrameUniforms, misMode), offsetof(FrameUniforms, debugMode),
+                       offsetof(FrameUniforms, pad0), offsetof(FrameUniforms, pad1)});
         expectMembers(spv, "PunctualLight", {0, offsetof(PunctualLight, type), offsetof(PunctualLight, intensity),
                                              offsetof(PunctualLight, range), offsetof(PunctualLight, direction),
                                              offsetof(PunctualLight, cosOuter), offsetof(PunctualLight, cosInner),
