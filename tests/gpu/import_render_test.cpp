@@ -6,15 +6,11 @@
 #include "../unit/io/io_test_util.h"
 #include "gpu_fixture.h"
 #include "render/renderer.h"
+#include "render_helpers.h"
 #include "scene/io/load.h"
 
 namespace penumbra::test {
 namespace {
-
-float srgbToLinear(float c8) {
-    float c = c8 / 255.0f;
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
 
 // tests/data/gltf/textured_quad.gltf: a 2x2 m quad at z=0 seen by its own camera at z=2 with a
 // 90-degree field of view, so the quad fills the middle half of the image. Its 4x4 base-colour
@@ -24,18 +20,12 @@ float srgbToLinear(float c8) {
 TEST_F(GpuTest, TexturedGltfQuadShowsItsTexture) {
     Scene scene = loadSceneFile(dataDir() / "gltf/textured_quad.gltf");
     scene.background = Vec3{1.0f};
-    RenderSettings s;
-    s.width = 32;
-    s.height = 32;
-    s.samplesPerPixel = 16;
-    s.samplesPerPass = 16;
-    s.maxBounces = 2;
-    Renderer r(*ctx, scene, s);
+    Renderer r(*ctx, scene, testSettings(32, 32, 16, 2));
     r.render();
     EXPECT_EQ(r.stats().invalidSamples, 0u);
     ImageRgb img = r.image();
     // The quad covers pixels 8..23; each block's exact region is 2 pixels wide around its centre.
-    const float grey = srgbToLinear(128);
+    const float grey = srgbToLinear8(128);
     const struct { int x, y; Vec3 colour; } probes[] = {
         {11, 11, {1, 0, 0}}, {12, 12, {1, 0, 0}},            // top left: red
         {19, 11, {0, 1, 0}}, {20, 12, {0, 1, 0}},            // top right: green
@@ -62,13 +52,7 @@ TEST_F(GpuTest, FreedoomE1M1FromThePlayerStartRendersFiniteAndLit) {
     Scene scene = loadSceneFile(wad, options);
     ASSERT_TRUE(scene.torch.enabled) << "WAD levels carry the torch by default";
     attachTorch(scene);
-    RenderSettings s;
-    s.width = 64;
-    s.height = 40;
-    s.samplesPerPixel = 8;
-    s.samplesPerPass = 8;
-    s.maxBounces = 3;
-    Renderer r(*ctx, scene, s);
+    Renderer r(*ctx, scene, testSettings(64, 40, 8, 3));
     r.render();
     EXPECT_EQ(r.stats().invalidSamples, 0u);
     ImageRgb img = r.image();

@@ -28,13 +28,7 @@ Scene floorScene() {
 }
 
 Vec3 centre(const gpu::Context& ctx, const Scene& scene) {
-    RenderSettings settings;
-    settings.width = 8;
-    settings.height = 8;
-    settings.samplesPerPixel = 16;
-    settings.samplesPerPass = 16;
-    settings.maxBounces = 1;
-    Renderer r(ctx, scene, settings);
+    Renderer r(ctx, scene, testSettings(8, 8, 16, 1));
     r.render();
     EXPECT_EQ(r.stats().invalidSamples, 0u);
     return r.image().mean();
@@ -95,12 +89,7 @@ TEST_F(GpuTest, PunctualAndTriangleLightsAddUp) {
     Scene both = tri;
     both.lights = point.lights;
 
-    RenderSettings settings;
-    settings.width = 16;
-    settings.height = 16;
-    settings.samplesPerPixel = 256;
-    settings.samplesPerPass = 16;
-    settings.maxBounces = 1;
+    RenderSettings settings = testSettings(16, 16, 256, 1);
     auto meanOf = [&](const Scene& scene, std::uint32_t seed) {
         settings.seed = seed;
         Renderer r(*ctx, scene, settings);

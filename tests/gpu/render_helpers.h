@@ -2,10 +2,13 @@
 // sample count.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "core/vec.h"
+#include "render/settings.h"
 
 namespace penumbra::test {
 
@@ -13,6 +16,24 @@ struct PixelStats {
     double mean;    // mean luminance of the pixel
     double stderr;  // standard error of that mean, from the sample variance
 };
+
+// A small test render: width x height, `spp` samples per pixel in passes of up to 16.
+inline RenderSettings testSettings(std::uint32_t width, std::uint32_t height, std::uint32_t spp,
+                                   std::uint32_t bounces) {
+    RenderSettings s;
+    s.width = width;
+    s.height = height;
+    s.samplesPerPixel = spp;
+    s.samplesPerPass = std::min<std::uint32_t>(spp, 16);
+    s.maxBounces = bounces;
+    return s;
+}
+
+// The linear value of an 8-bit sRGB-encoded channel (IEC 61966-2-1).
+inline float srgbToLinear8(float c8) {
+    float c = c8 / 255.0f;
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
 
 inline PixelStats pixelStats(const Vec4& sums, double samples) {
     double mean = luminance(Vec3{sums.x, sums.y, sums.z}) / samples;

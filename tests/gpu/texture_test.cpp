@@ -3,15 +3,11 @@
 // show its texel's linear colour; alpha-tested texels must show the sky through them.
 #include "gpu_fixture.h"
 #include "render/renderer.h"
+#include "render_helpers.h"
 #include "scene/presets/mesh_builder.h"
 
 namespace penumbra::test {
 namespace {
-
-float srgbToLinear(std::uint8_t c8) {
-    float c = c8 / 255.0f;
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
 
 Scene texturedQuad(float alphaCutoff) {
     Scene scene;
@@ -44,13 +40,7 @@ Scene texturedQuad(float alphaCutoff) {
 }
 
 ImageRgb renderQuad(const gpu::Context& ctx, float alphaCutoff) {
-    RenderSettings s;
-    s.width = 32;
-    s.height = 32;
-    s.samplesPerPixel = 16;
-    s.samplesPerPass = 16;
-    s.maxBounces = 2;
-    Renderer r(ctx, texturedQuad(alphaCutoff), s);
+    Renderer r(ctx, texturedQuad(alphaCutoff), testSettings(32, 32, 16, 2));
     r.render();
     return r.image();
 }
@@ -62,7 +52,7 @@ void expectColor(const ImageRgb& img, int x, int y, Vec3 expected) {
 
 TEST_F(GpuTest, TexturedQuadShowsEachTexelUnderAUniformSky) {
     ImageRgb img = renderQuad(*ctx, 0.0f);
-    const float grey = srgbToLinear(128);
+    const float grey = srgbToLinear8(128);
     expectColor(img, 12, 12, {1, 0, 0});
     expectColor(img, 20, 12, {0, 1, 0});
     expectColor(img, 12, 20, {0, 0, 1});
