@@ -46,7 +46,7 @@ void expectMembers(const Offsets& spv, const std::string& name, const std::vecto
 TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
     using namespace shader;
     int structsChecked = 0;
-    for (const char* shaderName : {"trace", "raybench", "test_ray_query"}) {
+    for (const char* shaderName : {"trace", "raybench", "test_ray_query", "test_sphere_light_sample"}) {
         Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
         expectMembers(spv, "BvhNode", {0, offsetof(BvhNode, firstOrRight), offsetof(BvhNode, boundsMax), offsetof(BvhNode, triCount)});
         expectMembers(spv, "TriVerts", {0, offsetof(TriVerts, flags), offsetof(TriVerts, e1), 28, offsetof(TriVerts, e2), 44});

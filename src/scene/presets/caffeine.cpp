@@ -4,7 +4,7 @@
 // Atom positions (angstrom) are the optimised 3-D structure in the molecule library of the
 // Atomes program (github.com/Slookeur/Atomes, bin/library/molecules/Aromatics/caffeine.sml).
 // Bond lengths in it are the usual ones (C-H 1.09, C=O 1.22, C-N 1.35-1.47 angstrom), which the
-// unit tests check. Radii are 0.3 x the Bondi van der Waals radii, which keeps bonded atoms apart
+// unit tests check. Radii are 0.36 x the Bondi van der Waals radii, which keeps bonded atoms apart
 // (ball-and-stick proportions without the sticks); colours are CPK.
 #include <cmath>
 #include <iterator>
@@ -36,7 +36,7 @@ constexpr Atom kCaffeine[] = {
 };
 
 constexpr float kMetresPerAngstrom = 0.1f;  // a molecule 0.8 m across
-constexpr float kRadiusScale = 0.3f;        // of the van der Waals radius
+constexpr float kRadiusScale = 0.36f;       // of the van der Waals radius
 const Vec3 kMoleculeCentre{0.0f, 0.55f, 0.0f};
 
 float vanDerWaalsRadius(char element) {  // Bondi (1964), angstrom
