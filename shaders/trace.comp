@@ -1,8 +1,8 @@
 #version 460
 // The path tracer: one thread per pixel, samplesPerPass paths each, added into the accumulation
 // buffer (rgb = sum of radiance, a = sum of squared luminance, for variance estimates).
-// Unidirectional path tracing with next event estimation to emissive triangles and MIS (power
-// heuristic) against BSDF sampling, so light reached either way is counted once.
+// Unidirectional path tracing with next event estimation to emissive triangles and spheres and
+// MIS (power heuristic) against BSDF sampling, so light reached either way is counted once.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_basic : require
@@ -19,6 +19,8 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 #include "lib/camera.glsl"
 #include "lib/surface.glsl"
 #include "lib/lights.glsl"
+#include "lib/sphere_lights.glsl"
+#include "lib/mis.glsl"
 #include "lib/bsdf/lambert.glsl"
 
 layout(std430, set = 0, binding = PN_BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
@@ -66,8 +68,25 @@ vec3 sampleDirectTriangle(Surface s, vec3 albedo, inout uint rng) {
     // The shadow ray stops short of the light so it cannot hit the light itself.
     if (traceOccluded(origin, span / spanLength, spanLength * (1.0 - 1e-4))) return vec3(0.0);
 
-    float weight = powerHeuristic(lightPdf, lambertPdf(s.shadingNormal, wi));
+    float weight = misLightWeight(lightPdf, lambertPdf(s.shadingNormal, wi));
     return lambertEval(albedo) * cosSurface * ls.radiance * (weight / lightPdf);
+}
+
+// Direct light from a sphere light (lib/sphere_lights.glsl), MIS-weighted against the BSDF
+// unless it is a spot light that BSDF sampling cannot hit.
+vec3 sampleDirectSphere(Surface s, vec3 albedo, inout uint rng) {
+    SphereLightSample ls = sampleSphereLight(s.position, rng);
+    float cosSurface = dot(s.shadingNormal, ls.wi);
+    if (!(ls.pdf > 0.0) || cosSurface <= 0.0 || dot(s.geometricNormal, ls.wi) <= 0.0 || max(ls.radiance.r, max(ls.radiance.g, ls.radiance.b)) <= 0.0)
+        return vec3(0.0);
+    vec3 origin = offsetRayOrigin(s.position, s.geometricNormal);
+    vec3 span = offsetRayOrigin(ls.position, ls.normal) - origin;
+    float spanLength = length(span);
+    if (!(spanLength > 0.0)) return vec3(0.0);
+    ++shadowRays;
+    if (traceOccluded(origin, span / spanLength, spanLength * (1.0 - 1e-4))) return vec3(0.0);
+    float weight = ls.lightOnly ? 1.0 : misLightWeight(ls.pdf, lambertPdf(s.shadingNormal, ls.wi));
+    return lambertEval(albedo) * cosSurface * ls.radiance * (weight / ls.pdf);
 }
 
 vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
@@ -86,18 +105,16 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
 
         if ((m.flags & PN_MATERIAL_EMISSIVE) != 0u && s.frontFace) {
             float weight = 1.0;
-            if (depth > 0u && s.lightPmf > 0.0) {
-                float cosLight = dot(s.geometricNormal, -direction);
-                float lightPdf = s.lightPmf / s.area * hit.t * hit.t / max(cosLight, 1e-12);
-                weight = powerHeuristic(bsdfPdf, lightPdf);
-            }
+            if (depth > 0u && s.lightPmf > 0.0)
+                weight = misHitWeight(bsdfPdf, emitterHitPdf(hit, s, origin, direction));
             result += throughput * m.emission * weight;
         }
         if (depth >= frame.maxBounces) break;
 
         vec3 albedo = materialBaseColor(m, s.uv).rgb;
-        if (frame.lightCount > 0u) result += throughput * sampleDirectTriangle(s, albedo, rng);
+        if (frame.lightCount > 0u && frame.misMode != PN_MIS_BSDF_ONLY) result += throughput * sampleDirectTriangle(s, albedo, rng);
         if (frame.punctualCount > 0u) result += throughput * sampleDirectPunctual(s, albedo, rng);
+        if (frame.sphereLightCount > 0u) result += throughput * sampleDirectSphere(s, albedo, rng);
 
         vec3 wi = sampleCosineHemisphere(s.shadingNormal, rngNext2(rng));
         // A sample under the true surface (possible with shading normals) carries no light.
@@ -126,7 +143,9 @@ void main() {
         for (uint s = 0u; s < frame.samplesPerPass; ++s) {
             uint rng = rngSeed(pixelIndex, push.passIndex * frame.samplesPerPass + s, frame.seed);
             vec2 jitter = rngNext2(rng);
-            vec3 L = radiance(frame.cameraPosition, cameraRayDirection(vec2(pixel) + jitter), rng);
+            vec3 cameraOrigin, cameraDirection;
+            cameraRay(vec2(pixel) + jitter, rng, cameraOrigin, cameraDirection);
+            vec3 L = radiance(cameraOrigin, cameraDirection, rng);
             // A NaN or inf sample would poison the pixel forever: it is dropped, and counted so
             // that tests (and the render summary) see it.
             if (any(isnan(L)) || any(isinf(L))) {

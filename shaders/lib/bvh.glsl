@@ -6,16 +6,22 @@
 #include "lib/intersect.glsl"
 #include "lib/textures.glsl"
 
-// A geometric hit on triangle i that an alpha-tested material does not punch out.
-bool hitTriangle(uint i, vec3 o, vec3 d, float tMax, out float t, out float u, out float v) {
+// A hit on primitive i: a sphere, or a triangle that an alpha-tested material does not punch out.
+// The flag is the only branch spheres add to the hot loop.
+bool hitPrimitive(uint i, vec3 o, vec3 d, float tMax, out float t, out float u, out float v) {
     TriVerts tri = triVerts[i];
+    if ((tri.flags & PN_TRI_SPHERE) != 0u) {
+        u = 0.0;
+        v = 0.0;
+        return intersectSphere(tri, o, d, tMax, t);
+    }
     if (!intersectTriangle(tri, o, d, tMax, t, u, v)) return false;
     return (tri.flags & PN_TRI_ALPHA_TESTED) == 0u || !isAlphaHole(i, u, v);
 }
 
 struct Hit {
     float t;
-    uint triangle;  // PN_NO_HIT on a miss
+    uint triangle;  // primitive slot (triangle or sphere); PN_NO_HIT on a miss
     float u;
     float v;
 };
@@ -35,7 +41,7 @@ Hit traverseBvh(vec3 o, vec3 d, float tMax, bool anyHit) {
         if (node.triCount > 0u) {
             for (uint i = node.firstOrRight; i < node.firstOrRight + node.triCount; ++i) {
                 float t, u, v;
-                if (hitTriangle(i, o, d, hit.t, t, u, v)) {
+                if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
                     hit = Hit(t, i, u, v);
                     if (anyHit) return hit;
                 }
@@ -67,7 +73,7 @@ Hit traverseBrute(vec3 o, vec3 d, float tMax, bool anyHit) {
     Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0);
     for (uint i = 0u; i < frame.triCount; ++i) {
         float t, u, v;
-        if (hitTriangle(i, o, d, hit.t, t, u, v)) {
+        if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
             hit = Hit(t, i, u, v);
             if (anyHit) return hit;
         }

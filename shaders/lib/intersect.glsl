@@ -32,6 +32,38 @@ bool intersectTriangle(TriVerts tri, vec3 o, vec3 d, float tMax, out float t, ou
     return true;
 }
 
+// The nearest root with t in (0, tMax) of |o + t d - c| = r for a PN_TRI_SPHERE slot (v0 = c,
+// e1.x = r), in the numerically stable form of Ray Tracing Gems ch. 7: the discriminant comes
+// from the centre's distance to the ray's line (not b^2 - ac, which loses every digit when a
+// small sphere is far away), and the root nearer zero is c / q. A ray starting inside finds the
+// exit. Same arithmetic, same order as the CPU reference (bvh/sphere.cpp).
+bool intersectSphere(TriVerts sphere, vec3 o, vec3 d, float tMax, out float t) {
+    t = 0.0;
+    precise float r = sphere.e1.x;
+    precise vec3 f = o - sphere.v0;
+    precise float a = dot(d, d);
+    precise float b = -dot(f, d);
+    precise float c = dot(f, f) - r * r;
+    precise vec3 perp = f + (b / a) * d;
+    precise float disc = a * (r * r - dot(perp, perp));
+    if (!(disc >= 0.0) || !(a > 0.0)) return false;
+    precise float root = sqrt(disc);
+    precise float q = b >= 0.0 ? b + root : b - root;
+    if (q == 0.0) return false;
+    precise float t0 = c / q;
+    precise float t1 = q / a;
+    float near = min(t0, t1), far = max(t0, t1);
+    if (near > 0.0 && near < tMax) {
+        t = near;
+        return true;
+    }
+    if (far > 0.0 && far < tMax) {
+        t = far;
+        return true;
+    }
+    return false;
+}
+
 // 1/d with zero components replaced by a huge finite value, so the slab test never computes
 // 0 * inf (NaN) for rays parallel to a slab.
 vec3 safeInverse(vec3 d) {

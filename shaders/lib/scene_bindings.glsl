@@ -11,6 +11,7 @@ layout(std140, set = 0, binding = PN_BINDING_FRAME) uniform FrameBuffer { FrameU
 layout(std430, set = 0, binding = PN_BINDING_TEXTURES) readonly buffer TextureBuffer { TextureInfo textures[]; };
 layout(std430, set = 0, binding = PN_BINDING_TEXELS) readonly buffer TexelBuffer { uint texels[]; };
 layout(std430, set = 0, binding = PN_BINDING_PUNCTUAL) readonly buffer PunctualBuffer { PunctualLight punctualLights[]; };
+layout(std430, set = 0, binding = PN_BINDING_SPHERE_LIGHTS) readonly buffer SphereLightBuffer { SphereLight sphereLights[]; };
 layout(push_constant) uniform PushBlock { PassPush push; };
 
 #endif

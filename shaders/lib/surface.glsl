@@ -13,9 +13,12 @@ struct Surface {
     vec2 uv;
 };
 
+#include "lib/sphere_surface.glsl"
+
 Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     TriVerts tv = triVerts[hit.triangle];
     TriAttribs ta = triAttribs[hit.triangle];
+    if ((tv.flags & PN_TRI_SPHERE) != 0u) return sphereSurfaceAt(tv, ta, hit.t, o, d);
     Surface s;
     s.position = o + hit.t * d;
     vec3 ng = normalize(cross(tv.e1, tv.e2));

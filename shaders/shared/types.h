@@ -35,8 +35,8 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_TEXTURES 10  // TextureInfo per texture
 #define PN_BINDING_TEXELS 11    // every texture's RGBA8 texels, one uint each
 #define PN_BINDING_PUNCTUAL 12  // PunctualLight per point, spot or directional light
-#define PN_BINDING_SPHERES 13        // analytic spheres
-#define PN_BINDING_SPHERE_LIGHTS 14  // emissive spheres, for light sampling
+#define PN_BINDING_SPHERES 13        // reserved; spheres live in the triangle arrays (PN_TRI_SPHERE)
+#define PN_BINDING_SPHERE_LIGHTS 14  // SphereLight per emissive sphere or spot light with a radius
 #define PN_BINDING_ENV_TABLE 15      // environment importance-sampling table
 // Bindings 16-23 are for the viewer's passes (G-buffer, history, denoiser, debug views).
 
@@ -60,6 +60,9 @@ using namespace penumbra::gpu_types;
 
 // ---- triangle flags (TriVerts.flags, read during traversal) ----
 #define PN_TRI_ALPHA_TESTED 1u  // its material is alpha tested: check the texture before accepting a hit
+// The slot holds an analytic sphere, not a triangle: v0 = centre, e1.x = radius (e2 unused).
+// Spheres share the triangles' arrays so a leaf stays one contiguous primitive range.
+#define PN_TRI_SPHERE 2u
 
 // ---- texture flags and wrap modes ----
 #define PN_TEXTURE_SRGB 1u
@@ -157,6 +160,23 @@ PN_STRUCT(PunctualLight) {
     float pad1;
 };
 
+// A light sampled by the cone of directions its sphere subtends, 64 bytes: an emissive sphere
+// of the scene (primitive = its slot in the triangle arrays, so BSDF-sampled hits find it and
+// MIS applies) or a spot light with a radius (primitive = PN_NO_HIT: no geometry, reached by
+// light sampling only).
+PN_STRUCT(SphereLight) {
+    vec3 center;
+    float radius;
+    vec3 radiance;        // leaving the sphere's outside, W/(m^2 sr) per channel
+    float selectPmf;      // probability that light sampling picks this light (by power)
+    vec3 spotDirection;   // spot: unit, where the light travels
+    float cosOuter;       // spot: cosine of the outer cone angle (-1 for a sphere: no cone)
+    float cosInner;       // spot: cosine of the inner cone angle
+    float cdf;            // sum of selectPmf over this entry and those before it
+    uint primitive;       // slot in TriVerts / TriAttribs, or PN_NO_HIT for a spot light
+    uint pad0;
+};
+
 // Per-frame constants (uniform buffer), 160 bytes.
 PN_STRUCT(FrameUniforms) {
     vec3 cameraPosition;
@@ -170,7 +190,7 @@ PN_STRUCT(FrameUniforms) {
     uint maxBounces;     // path segments after the camera ray (pbrt's maxdepth)
     uint rouletteStart;  // bounce from which Russian roulette may end paths
     uint lightCount;     // entries in the alias table
-    uint triCount;
+    uint triCount;       // primitive slots: triangles and spheres (PN_TRI_SPHERE)
     uint nodeCount;
     uint accel;          // PN_ACCEL_*
     uint seed;
@@ -260,6 +280,11 @@ static_assert(sizeof(FrameUniforms) == 160 && offsetof(FrameUniforms, tanHalfFov
 static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, type) == 12 &&
               offsetof(PunctualLight, range) == 28 && offsetof(PunctualLight, direction) == 32 &&
               offsetof(PunctualLight, cosOuter) == 44 && offsetof(PunctualLight, selectPmf) == 52);
+static_assert(sizeof(SphereLight) == 64 && offsetof(SphereLight, radius) == 12 &&
+              offsetof(SphereLight, radiance) == 16 && offsetof(SphereLight, selectPmf) == 28 &&
+              offsetof(SphereLight, spotDirection) == 32 && offsetof(SphereLight, cosOuter) == 44 &&
+              offsetof(SphereLight, cosInner) == 48 && offsetof(SphereLight, cdf) == 52 &&
+              offsetof(SphereLight, primitive) == 56);
 static_assert(sizeof(PassPush) == 16 && offsetof(PassPush, countRays) == 12);
 static_assert(sizeof(RayCounters) == 16);
 static_assert(sizeof(RayDesc) == 32 && offsetof(RayDesc, tMax) == 12 && offsetof(RayDesc, direction) == 16);

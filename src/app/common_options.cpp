@@ -19,6 +19,10 @@ void addCameraOptions(CLI::App& cmd, CameraOverrides& o) {
     cmd.add_option("--look-at", o.lookAt, "point the camera looks at, x,y,z");
     cmd.add_option("--up", o.up, "camera up vector x,y,z");
     cmd.add_option("--fov", o.fov, "vertical field of view in degrees");
+    cmd.add_option("--aperture", o.aperture, "thin-lens aperture radius in metres (0: pinhole, everything sharp)");
+    cmd.add_option("--focus-distance", o.focusDistance, "distance in metres along the view direction that is in focus");
+    cmd.add_option("--focus-point", o.focusPoint, "point x,y,z to focus on (sets the focus distance to its depth)")
+        ->excludes("--focus-distance");
     cmd.add_option("--torch", o.torch, "intensity in candela of a light carried at the camera (0: off; on for WAD levels)");
 }
 
@@ -42,7 +46,18 @@ Scene loadScene(const std::string& nameOrPath, const std::string& map, const Cam
     if (!o.lookAt.empty()) scene.camera.lookAt = parseVec3(o.lookAt, "--look-at");
     if (!o.up.empty()) scene.camera.up = parseVec3(o.up, "--up");
     if (o.fov) scene.camera.fovYDegrees = *o.fov;
+    if (o.aperture) scene.camera.apertureRadius = *o.aperture;
+    if (o.focusDistance) {
+        if (!(*o.focusDistance > 0)) throw UsageError("--focus-distance must be a number of metres > 0");
+        scene.camera.focusDistance = *o.focusDistance;
+    }
     validateCamera(scene.camera);
+    if (!o.focusPoint.empty()) {
+        const Vec3 forward = normalize(scene.camera.lookAt - scene.camera.position);
+        const float depth = dot(parseVec3(o.focusPoint, "--focus-point") - scene.camera.position, forward);
+        if (!(depth > 0)) throw UsageError("--focus-point must lie in front of the camera");
+        scene.camera.focusDistance = depth;
+    }
     if (o.torch) {
         if (!(*o.torch >= 0 && *o.torch <= 1e9f)) throw UsageError("--torch must be between 0 and 1e9 candela");
         scene.torch.enabled = *o.torch > 0;

@@ -32,7 +32,8 @@ void printScene(const std::string& name, const std::string& map) {
                 scene.name.c_str(), tris, scene.materials.size(), arrays.lights.size(), loadMs);
     std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, built in %.2f ms\n", s.nodes,
                 s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.buildMilliseconds);
-    std::printf("  %zu textures, %zu punctual lights\n", scene.textures.size(), scene.lights.size());
+    std::printf("  %zu textures, %zu punctual lights, %u spheres (in the triangle count), %zu sphere lights\n",
+                scene.textures.size(), arrays.punctual.size(), arrays.sphereCount, arrays.sphereLights.size());
     std::printf("  cpu memory (scene model): %zu bytes (%.1f per triangle)\n", cpuBytes,
                 tris ? double(cpuBytes) / double(tris) : 0.0);
     std::printf("  gpu memory: %zu bytes (%.1f per triangle)\n", gpuBytes, tris ? double(gpuBytes) / double(tris) : 0.0);

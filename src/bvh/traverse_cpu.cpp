@@ -4,6 +4,7 @@
 #include <limits>
 #include <string>
 
+#include "bvh/sphere.h"
 #include "core/error.h"
 
 namespace penumbra::bvh {
@@ -124,6 +125,16 @@ bool intersectTriangle(const shader::TriVerts& tri, const Ray& ray, float tMax, 
     return true;
 }
 
+bool intersectPrimitive(const shader::TriVerts& prim, const Ray& ray, float tMax, float& t, float& u,
+                        float& v) {
+    if (isSphere(prim)) {
+        if (!intersectSphere(prim, ray, tMax, t)) return false;
+        u = v = 0.0f;
+        return true;
+    }
+    return intersectTriangle(prim, ray, tMax, t, u, v);
+}
+
 Hit closestHit(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris,
                const Ray& ray, TraversalCounts* counts) {
     Hit hit;
@@ -133,7 +144,7 @@ Hit closestHit(std::span<const shader::BvhNode> nodes, std::span<const shader::T
         for (std::uint32_t i = first; i < first + count; ++i) {
             if (counts) ++counts->trianglesTested;
             float t, u, v;
-            if (intersectTriangle(tris[i], ray, hit.t, t, u, v)) hit = {t, i, u, v};
+            if (intersectPrimitive(tris[i], ray, hit.t, t, u, v)) hit = {t, i, u, v};
         }
         return false;
     });
@@ -149,7 +160,7 @@ bool anyHit(std::span<const shader::BvhNode> nodes, std::span<const shader::TriV
         for (std::uint32_t i = first; i < first + count; ++i) {
             if (counts) ++counts->trianglesTested;
             float t, u, v;
-            if (intersectTriangle(tris[i], ray, tMax, t, u, v)) return found = true;
+            if (intersectPrimitive(tris[i], ray, tMax, t, u, v)) return found = true;
         }
         return false;
     });
@@ -161,7 +172,7 @@ Hit closestHitBrute(std::span<const shader::TriVerts> tris, const Ray& ray) {
     hit.t = ray.tMax;
     for (std::uint32_t i = 0; i < tris.size(); ++i) {
         float t, u, v;
-        if (intersectTriangle(tris[i], ray, hit.t, t, u, v)) hit = {t, i, u, v};
+        if (intersectPrimitive(tris[i], ray, hit.t, t, u, v)) hit = {t, i, u, v};
     }
     return hit;
 }

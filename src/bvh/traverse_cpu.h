@@ -12,7 +12,7 @@ namespace penumbra::bvh {
 
 struct Hit {
     float t = 0;
-    std::uint32_t triangle = PN_NO_HIT;  // index in leaf order
+    std::uint32_t triangle = PN_NO_HIT;  // primitive (triangle or sphere) index in leaf order
     float u = 0, v = 0;                  // barycentrics of v1 and v2
 };
 
@@ -31,6 +31,10 @@ inline constexpr float kSlabExitScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f 
 // then returns an arbitrary t).
 bool intersectTriangle(const shader::TriVerts& tri, const Ray& ray, float tMax, float& t, float& u,
                        float& v);
+
+// A triangle or (PN_TRI_SPHERE) a sphere slot; u and v are 0 for spheres.
+bool intersectPrimitive(const shader::TriVerts& prim, const Ray& ray, float tMax, float& t, float& u,
+                        float& v);
 
 // Closest hit with t in (0, ray.tMax); on a miss, triangle is PN_NO_HIT and t is ray.tMax. An
 // empty node array (a scene without primitives) never hits.

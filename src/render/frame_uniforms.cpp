@@ -30,7 +30,10 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.seed = settings.seed;
     f.samplesPerPass = settings.samplesPerPass;
     f.background = background;
-    f.focusDistance = 1.0f;
+    // Thin lens: the camera ray starts on a disk of this radius and aims at the plane this far
+    // along cameraForward (0 radius: a pinhole, and the shader draws no lens sample).
+    f.lensRadius = camera.apertureRadius;
+    f.focusDistance = effectiveFocusDistance(camera);
     f.envTexture = PN_NO_TEXTURE;
     f.envIntensity = 1.0f;
     return f;

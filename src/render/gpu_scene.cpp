@@ -5,9 +5,11 @@
 #include <cstring>
 #include <numeric>
 
+#include "bvh/sphere.h"
 #include "bvh/triangle.h"
 #include "core/error.h"
 #include "render/light_table.h"
+#include "render/sphere_lights.h"
 
 namespace penumbra {
 namespace {
@@ -39,6 +41,7 @@ void addPunctualLights(const Scene& scene, std::vector<shader::PunctualLight>& o
     const double sceneRadius = box.empty() ? 1.0 : 0.5 * length(box.extent());
     std::vector<double> power;
     for (const Light& l : scene.lights) {
+        if (isSphereLight(l)) continue;  // in the sphere-light table instead
         shader::PunctualLight p{};
         p.position = l.position;
         p.intensity = l.color * l.intensity;
@@ -66,23 +69,48 @@ void addPunctualLights(const Scene& scene, std::vector<shader::PunctualLight>& o
 SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options) {
     scene.validate();
     std::vector<SceneTriangle> tris = flattenTriangles(scene);
-    if (tris.size() >= PN_NO_HIT) throw Error("scene '" + scene.name + "' has too many triangles");
+    const RenderSpheres spheres = renderSpheres(scene);
+    std::vector<Material> materials = scene.materials;
+    materials.insert(materials.end(), spheres.extraMaterials.begin(), spheres.extraMaterials.end());
+    const std::size_t primCount = tris.size() + spheres.spheres.size();
+    if (primCount >= PN_NO_HIT) throw Error("scene '" + scene.name + "' has too many triangles");
 
     std::vector<bvh::Triangle> geometry(tris.size());
     for (std::size_t i = 0; i < tris.size(); ++i) geometry[i] = {tris[i].p[0], tris[i].p[1], tris[i].p[2]};
 
     SceneArrays out;
     auto start = std::chrono::steady_clock::now();
-    bvh::Bvh tree = bvh::buildTriangles(geometry, options);
+    bvh::Bvh tree;
+    if (spheres.spheres.empty()) {
+        tree = bvh::buildTriangles(geometry, options);
+    } else {
+        // Spheres follow the triangles in the primitive numbering the builder sees.
+        std::vector<Aabb> bounds;
+        bounds.reserve(primCount);
+        for (const bvh::Triangle& t : geometry) bounds.push_back(bvh::bounds(t));
+        for (const Sphere& s : spheres.spheres) bounds.push_back(bvh::sphereBounds(s.center, s.radius));
+        tree = bvh::build(bounds, options);
+    }
     out.buildMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     out.stats = bvh::computeStats(tree, options);
     out.nodes = std::move(tree.nodes);
 
-    out.triVerts.resize(tris.size());
-    out.triAttribs.resize(tris.size());
+    out.triVerts.resize(primCount);
+    out.triAttribs.resize(primCount);
     std::vector<std::uint32_t> emissive;
     std::vector<double> power;
+    std::vector<std::uint32_t> sphereSlots(spheres.spheres.size());
     for (std::size_t i = 0; i < tree.primOrder.size(); ++i) {
+        if (tree.primOrder[i] >= tris.size()) {
+            const std::size_t k = tree.primOrder[i] - tris.size();
+            const Sphere& sphere = spheres.spheres[k];
+            sphereSlots[k] = static_cast<std::uint32_t>(i);
+            out.triVerts[i] = bvh::toSphereVerts(sphere.center, sphere.radius);
+            out.triAttribs[i] = {};
+            out.triAttribs[i].materialId = sphere.material;
+            out.triAttribs[i].area = 4.0f * 3.14159265f * sphere.radius * sphere.radius;
+            continue;
+        }
         const SceneTriangle& t = tris[tree.primOrder[i]];
         out.triVerts[i] = bvh::toTriVerts(geometry[tree.primOrder[i]]);
         shader::TriAttribs& a = out.triAttribs[i];
@@ -105,6 +133,11 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
     out.lights = buildAliasTable(emissive, power);
     addPunctualLights(scene, out.punctual);
     for (const shader::LightAlias& l : out.lights) out.triAttribs[l.triangle].lightPmf = l.pmf;
+    out.sphereLights = buildSphereLightTable(scene, spheres, materials, sphereSlots);
+    // BSDF-sampled hits on an emissive sphere need its selection probability for MIS.
+    for (const shader::SphereLight& l : out.sphereLights)
+        if (l.primitive != PN_NO_HIT) out.triAttribs[l.primitive].lightPmf = l.selectPmf;
+    out.sphereCount = static_cast<std::uint32_t>(spheres.spheres.size());
 
     for (const Texture& t : scene.textures) {
         const std::size_t texels = std::size_t(t.width) * std::size_t(t.height);
@@ -116,10 +149,10 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
         out.texels.resize(first + texels);
         std::memcpy(out.texels.data() + first, t.rgba.data(), texels * 4);
     }
-    for (const Material& m : scene.materials) out.materials.push_back(toGpuMaterial(m));
+    for (const Material& m : materials) out.materials.push_back(toGpuMaterial(m));
     // Traversal checks alpha only where the flag says so, keeping the common path cheap.
     for (std::size_t i = 0; i < out.triVerts.size(); ++i)
-        if (out.materials[out.triAttribs[i].materialId].flags & PN_MATERIAL_ALPHA_TESTED)
+        if (!bvh::isSphere(out.triVerts[i]) && out.materials[out.triAttribs[i].materialId].flags & PN_MATERIAL_ALPHA_TESTED)
             out.triVerts[i].flags |= PN_TRI_ALPHA_TESTED;
     return out;
 }
@@ -133,14 +166,17 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       textures(gpu::uploadStorageBuffer<shader::TextureInfo>(ctx, commands, a.textures)),
       texels(gpu::uploadStorageBuffer<std::uint32_t>(ctx, commands, a.texels)),
       punctual(gpu::uploadStorageBuffer<shader::PunctualLight>(ctx, commands, a.punctual)),
+      sphereLights(gpu::uploadStorageBuffer<shader::SphereLight>(ctx, commands, a.sphereLights)),
       nodeCount(static_cast<std::uint32_t>(a.nodes.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
       lightCount(static_cast<std::uint32_t>(a.lights.size())),
-      punctualCount(static_cast<std::uint32_t>(a.punctual.size())) {}
+      punctualCount(static_cast<std::uint32_t>(a.punctual.size())),
+      sphereCount(a.sphereCount),
+      sphereLightCount(static_cast<std::uint32_t>(a.sphereLights.size())) {}
 
 std::size_t GpuScene::deviceBytes() const {
     return nodes.size() + triVerts.size() + triAttribs.size() + materials.size() + lights.size() +
-           textures.size() + texels.size() + punctual.size();
+           textures.size() + texels.size() + punctual.size() + sphereLights.size();
 }
 
 }  // namespace penumbra

@@ -1,5 +1,5 @@
 // The scene as the GPU sees it: BVH nodes, hot and cold triangle arrays in leaf order,
-// materials and the light alias table. Built on the CPU (BVH included), uploaded once.
+// materials, the light alias table and the sphere-light table. Built on the CPU (BVH included), uploaded once.
 #pragma once
 
 #include <vector>
@@ -16,13 +16,15 @@ namespace penumbra {
 // The host-side arrays, kept separate from the upload so tests and tools can use them on the CPU.
 struct SceneArrays {
     std::vector<shader::BvhNode> nodes;
-    std::vector<shader::TriVerts> triVerts;      // leaf order
+    std::vector<shader::TriVerts> triVerts;      // leaf order; triangles and spheres (PN_TRI_SPHERE)
     std::vector<shader::TriAttribs> triAttribs;  // leaf order
     std::vector<shader::Material> materials;
     std::vector<shader::LightAlias> lights;
     std::vector<shader::TextureInfo> textures;
     std::vector<std::uint32_t> texels;  // RGBA8, one texel per word
     std::vector<shader::PunctualLight> punctual;
+    std::vector<shader::SphereLight> sphereLights;
+    std::uint32_t sphereCount = 0;  // sphere slots among triVerts
     bvh::BvhStats stats{};
     double buildMilliseconds = 0;
 };
@@ -33,8 +35,8 @@ class GpuScene {
 public:
     GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& arrays);
 
-    gpu::Buffer nodes, triVerts, triAttribs, materials, lights, textures, texels, punctual;
-    std::uint32_t nodeCount = 0, triCount = 0, lightCount = 0, punctualCount = 0;
+    gpu::Buffer nodes, triVerts, triAttribs, materials, lights, textures, texels, punctual, sphereLights;
+    std::uint32_t nodeCount = 0, triCount = 0, lightCount = 0, punctualCount = 0, sphereCount = 0, sphereLightCount = 0;
 
     std::size_t deviceBytes() const;
 };

@@ -15,6 +15,8 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
     shader::FrameUniforms frame = makeFrameUniforms(scene.camera, scene.background, settings_, gpuScene_->lightCount,
                                                     gpuScene_->triCount, gpuScene_->nodeCount);
     frame.punctualCount = gpuScene_->punctualCount;
+    frame.sphereCount = gpuScene_->sphereCount;
+    frame.sphereLightCount = gpuScene_->sphereLightCount;
     frameUniforms_ = gpu::Buffer(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryKind::HostVisible);
     std::memcpy(frameUniforms_.mapped(), &frame, sizeof(frame));
 

@@ -1,5 +1,6 @@
 #include "scene/merge.h"
 
+#include <cmath>
 #include <utility>
 
 namespace penumbra {
@@ -22,9 +23,19 @@ void appendScene(Scene& into, Scene part, const Affine& transform) {
         mesh.material += materialBase;
         into.meshes.push_back(std::move(mesh));
     }
+    // A sphere stays a sphere: its radius scales by the transform's mean scale factor (exact for
+    // uniform scaling; non-uniform scaling of a sphere would make an ellipsoid).
+    const float radiusScale = std::cbrt(std::abs(transform.determinant()));
+    for (Sphere& s : part.spheres) {
+        s.center = transform.point(s.center);
+        s.radius *= radiusScale;
+        s.material += materialBase;
+        into.spheres.push_back(s);
+    }
     for (Light& l : part.lights) {
         l.position = transform.point(l.position);
         l.direction = normalize(transform.vector(l.direction));
+        l.radius *= radiusScale;
         into.lights.push_back(std::move(l));
     }
 }

@@ -16,6 +16,10 @@ Aabb Scene::bounds() const {
     Aabb box;
     for (const Mesh& m : meshes)
         for (Vec3 p : m.positions) box.grow(p);
+    for (const Sphere& s : spheres) {
+        box.grow(s.center - Vec3{s.radius});
+        box.grow(s.center + Vec3{s.radius});
+    }
     return box;
 }
 
@@ -57,6 +61,14 @@ void Scene::validate() const {
         for (Vec3 p : m.positions)
             if (!isFinite(p)) throw Error(where + ": a vertex position is not finite");
     }
+    for (std::size_t i = 0; i < spheres.size(); ++i) {
+        const Sphere& s = spheres[i];
+        const std::string where = "sphere " + std::to_string(i) + " in scene '" + name + "'";
+        if (!isFinite(s.center)) throw Error(where + ": centre is not finite");
+        if (!(s.radius > 0) || !std::isfinite(s.radius)) throw Error(where + ": radius must be a finite number > 0");
+        if (s.material >= materials.size())
+            throw Error(where + ": material " + std::to_string(s.material) + " does not exist");
+    }
 }
 
 void attachTorch(Scene& scene) {
@@ -73,7 +85,8 @@ void attachTorch(Scene& scene) {
 }
 
 std::size_t sceneBytes(const Scene& scene) {
-    std::size_t bytes = sizeof(Scene) + scene.materials.size() * sizeof(Material) + scene.lights.size() * sizeof(Light);
+    std::size_t bytes = sizeof(Scene) + scene.materials.size() * sizeof(Material) + scene.lights.size() * sizeof(Light) +
+                        scene.spheres.size() * sizeof(Sphere);
     for (const Mesh& m : scene.meshes)
         bytes += sizeof(Mesh) + m.positions.capacity() * sizeof(Vec3) + m.normals.capacity() * sizeof(Vec3) +
                  m.uvs.capacity() * sizeof(Vec2) + m.indices.capacity() * sizeof(std::uint32_t);
@@ -114,6 +127,14 @@ void validateCamera(const Camera& camera) {
     if (!(camera.fovYDegrees > 0 && camera.fovYDegrees < 180))
         throw UsageError("field of view must be between 0 and 180 degrees (got " +
                          std::to_string(camera.fovYDegrees) + "); pass e.g. --fov 40");
+    if (!(camera.apertureRadius >= 0) || !std::isfinite(camera.apertureRadius))
+        throw UsageError("aperture radius must be a finite number >= 0 metres (0: pinhole); pass e.g. --aperture 0.01");
+    if (!(camera.focusDistance >= 0) || !std::isfinite(camera.focusDistance))
+        throw UsageError("focus distance must be a finite number > 0 metres; pass e.g. --focus-distance 2");
+}
+
+float effectiveFocusDistance(const Camera& camera) {
+    return camera.focusDistance > 0 ? camera.focusDistance : length(camera.lookAt - camera.position);
 }
 
 }  // namespace penumbra

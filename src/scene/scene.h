@@ -83,11 +83,20 @@ struct Mesh {
     std::size_t triangleCount() const { return indices.size() / 3; }
 };
 
+// An analytic sphere; it emits from its outside when its material is emissive.
+struct Sphere {
+    Vec3 center{0};
+    float radius = 1.0f;  // metres, > 0
+    std::uint32_t material = 0;
+};
+
 struct Camera {
     Vec3 position{0, 0, 1};
     Vec3 lookAt{0, 0, 0};
     Vec3 up{0, 1, 0};
-    float fovYDegrees = 40.0f;  // vertical field of view
+    float fovYDegrees = 40.0f;    // vertical field of view
+    float apertureRadius = 0.0f;  // thin-lens radius in metres; 0 is a pinhole
+    float focusDistance = 0.0f;   // metres along the view direction to the sharp plane; 0: the look-at distance
 };
 
 // A light carried with the camera (the Doom renderer's handheld torch): a point light placed at
@@ -103,6 +112,7 @@ struct Scene {
     std::string name;
     std::vector<Material> materials;
     std::vector<Mesh> meshes;
+    std::vector<Sphere> spheres;
     std::vector<Texture> textures;
     std::vector<Light> lights;
     Camera camera;
@@ -110,8 +120,8 @@ struct Scene {
     Torch torch;
 
     std::size_t triangleCount() const;
-    Aabb bounds() const;
-    // Throws Error naming the mesh and the problem (index out of range, non-finite vertex,
+    Aabb bounds() const;  // meshes and spheres
+    // Throws Error naming the mesh or sphere and the problem (index out of range, non-finite vertex,
     // bad material id, ...). Loaders call it before handing a scene on.
     void validate() const;
 };
@@ -134,7 +144,12 @@ std::size_t sceneBytes(const Scene& scene);
 std::vector<SceneTriangle> flattenTriangles(const Scene& scene);
 
 // Checks a camera and throws a UsageError naming the problem (look-at equal to the position,
-// up parallel to the view direction, field of view outside (0, 180)).
+// up parallel to the view direction, field of view outside (0, 180), negative aperture or
+// focus distance).
 void validateCamera(const Camera& camera);
+
+// The distance along the view direction at which the camera is sharp: focusDistance, or the
+// look-at distance when that is 0.
+float effectiveFocusDistance(const Camera& camera);
 
 }  // namespace penumbra

@@ -129,5 +129,15 @@ TEST_F(CliTest, NoVulkanDeviceSaysHowToGetOne) {
     EXPECT_FALSE(fs::exists(dir / "a.png"));
 }
 
+TEST_F(CliTest, LensFlagsRenderAndBadOnesAreUsageErrors) {
+    EXPECT_EQ(run("render caffeine --width 16 --height 12 --spp 1 --aperture 0.05 --focus-point 0,0.55,0 -o a.png").exitCode, 0);
+    EXPECT_TRUE(fs::exists(dir / "a.png"));
+    expectOneLineError(run("render caffeine --spp 1 --aperture -1 -o b.png"), 2, "aperture");
+    expectOneLineError(run("render caffeine --spp 1 --focus-distance 0 -o b.png"), 2, "--focus-distance");
+    expectOneLineError(run("render caffeine --spp 1 --focus-point 0,0,100 -o b.png"), 2, "in front of the camera");
+    expectOneLineError(run("render caffeine --spp 1 --focus-point 0,0,0 --focus-distance 2 -o b.png"), 2, "excludes");
+    EXPECT_FALSE(fs::exists(dir / "b.png"));
+}
+
 }  // namespace
 }  // namespace penumbra::test

@@ -46,7 +46,7 @@ void expectMembers(const Offsets& spv, const std::string& name, const std::vecto
 TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
     using namespace shader;
     int structsChecked = 0;
-    for (const char* shaderName : {"trace", "raybench", "test_ray_query"}) {
+    for (const char* shaderName : {"trace", "raybench", "test_ray_query", "test_sphere_light_sample"}) {
         Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
         expectMembers(spv, "BvhNode", {0, offsetof(BvhNode, firstOrRight), offsetof(BvhNode, boundsMax), offsetof(BvhNode, triCount)});
         expectMembers(spv, "TriVerts", {0, offsetof(TriVerts, flags), offsetof(TriVerts, e1), 28, offsetof(TriVerts, e2), 44});
@@ -75,6 +75,11 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                                              offsetof(PunctualLight, range), offsetof(PunctualLight, direction),
                                              offsetof(PunctualLight, cosOuter), offsetof(PunctualLight, cosInner),
                                              offsetof(PunctualLight, selectPmf)});
+        expectMembers(spv, "SphereLight", {0, offsetof(SphereLight, radius), offsetof(SphereLight, radiance),
+                                           offsetof(SphereLight, selectPmf), offsetof(SphereLight, spotDirection),
+                                           offsetof(SphereLight, cosOuter), offsetof(SphereLight, cosInner),
+                                           offsetof(SphereLight, cdf), offsetof(SphereLight, primitive),
+                                           offsetof(SphereLight, pad0)});
         expectMembers(spv, "PassPush", {0, 4, 8, offsetof(PassPush, countRays)});
         expectMembers(spv, "RayCounters", {0, 4, offsetof(RayCounters, invalidSamples), 12});
         expectMembers(spv, "RayDesc", {0, offsetof(RayDesc, tMax), offsetof(RayDesc, direction), 28});
@@ -84,6 +89,7 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
     }
     // The reflection must actually have found the structs, or this test proves nothing.
     EXPECT_GE(structsChecked, 8);
+    EXPECT_EQ(readMemberOffsets(gpu::shaderCode("trace")).count("SphereLight"), 1u);
 }
 
 }  // namespace

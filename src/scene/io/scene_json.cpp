@@ -101,14 +101,17 @@ std::vector<T> readFlat(const Reader& r, const Json& j, const std::string& where
     return out;
 }
 
+std::uint32_t readMaterialRef(const Reader& r, const Json& j, const std::string& where, const Scene& scene) {
+    const std::string material = r.string(r.member(j, "material", where), where + ".material");
+    for (std::size_t i = 0; i < scene.materials.size(); ++i)
+        if (scene.materials[i].name == material) return std::uint32_t(i);
+    r.fail(where + ".material", "no material named '" + material + "'");
+}
+
 Mesh readInlineMesh(const Reader& r, const Json& j, const std::string& where, const Scene& scene) {
     Mesh m;
     if (j.contains("name")) m.name = r.string(j["name"], where + ".name");
-    const std::string material = r.string(r.member(j, "material", where), where + ".material");
-    bool found = false;
-    for (std::size_t i = 0; i < scene.materials.size() && !found; ++i)
-        if (scene.materials[i].name == material) m.material = std::uint32_t(i), found = true;
-    if (!found) r.fail(where + ".material", "no material named '" + material + "'");
+    m.material = readMaterialRef(r, j, where, scene);
     const Json& p = r.member(j, "positions", where);
     m.positions = readFlat<Vec3>(r, p, where + ".positions", 3, [&](std::size_t i) {
         return Vec3{r.number(p[i], where + ".positions"), r.number(p[i + 1], where + ".positions"),
@@ -135,6 +138,28 @@ Mesh readInlineMesh(const Reader& r, const Json& j, const std::string& where, co
             return Vec2{r.number(uv[i], where + ".uvs"), r.number(uv[i + 1], where + ".uvs")};
         });
     }
+    return m;
+}
+
+Sphere readSphere(const Reader& r, const Json& j, const std::string& where, const Scene& scene) {
+    Sphere sphere;
+    sphere.center = r.vec3(r.member(j, "center", where), where + ".center");
+    sphere.radius = r.number(r.member(j, "radius", where), where + ".radius", 1e-6f, 1e9f);
+    sphere.material = readMaterialRef(r, j, where, scene);
+    return sphere;
+}
+
+// A bounded plane: four corners in order around the edge, as two triangles; the front (emitting)
+// face is the one from which they run counter-clockwise.
+Mesh readQuad(const Reader& r, const Json& j, const std::string& where, const Scene& scene) {
+    Mesh m;
+    m.name = j.contains("name") ? r.string(j["name"], where + ".name") : "quad";
+    m.material = readMaterialRef(r, j, where, scene);
+    const Json& corners = r.member(j, "corners", where);
+    if (!corners.is_array() || corners.size() != 4) r.fail(where + ".corners", "expected an array of four [x,y,z] points");
+    for (std::size_t k = 0; k < 4; ++k) m.positions.push_back(r.vec3(corners[k], where + ".corners[" + std::to_string(k) + "]"));
+    m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    m.indices = {0, 1, 2, 0, 2, 3};
     return m;
 }
 
@@ -229,6 +254,18 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
         for (std::size_t i = 0; i < meshes.size(); ++i)
             scene.meshes.push_back(readInlineMesh(r, meshes[i], "meshes[" + std::to_string(i) + "]", scene));
     }
+    if (doc.contains("quads")) {
+        const Json& quads = doc["quads"];
+        if (!quads.is_array()) r.fail("quads", "expected an array");
+        for (std::size_t i = 0; i < quads.size(); ++i)
+            scene.meshes.push_back(readQuad(r, quads[i], "quads[" + std::to_string(i) + "]", scene));
+    }
+    if (doc.contains("spheres")) {
+        const Json& spheres = doc["spheres"];
+        if (!spheres.is_array()) r.fail("spheres", "expected an array");
+        for (std::size_t i = 0; i < spheres.size(); ++i)
+            scene.spheres.push_back(readSphere(r, spheres[i], "spheres[" + std::to_string(i) + "]", scene));
+    }
     if (doc.contains("lights")) {
         const Json& lights = doc["lights"];
         if (!lights.is_array()) r.fail("lights", "expected an array");
@@ -243,6 +280,9 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
         if (c.contains("look_at")) scene.camera.lookAt = r.vec3(c["look_at"], "camera.look_at");
         if (c.contains("up")) scene.camera.up = r.vec3(c["up"], "camera.up");
         if (c.contains("fov")) scene.camera.fovYDegrees = r.number(c["fov"], "camera.fov", 0.01f, 179.99f);
+        if (c.contains("aperture")) scene.camera.apertureRadius = r.number(c["aperture"], "camera.aperture", 0, 1e6f);
+        if (c.contains("focus_distance"))
+            scene.camera.focusDistance = r.number(c["focus_distance"], "camera.focus_distance", 1e-6f, 1e9f);
     }
     if (doc.contains("render")) {
         // Checked even when the caller does not want them: a bad file is bad either way.
@@ -256,7 +296,8 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
         if (s.contains("exposure")) read.exposure = r.number(s["exposure"], "render.exposure", -64, 64);
         if (settings) *settings = read;
     }
-    if (scene.meshes.empty()) r.fail("top level", "the scene has no geometry (add \"assets\" or \"meshes\")");
+    if (scene.meshes.empty() && scene.spheres.empty())
+        r.fail("top level", "the scene has no geometry (add \"assets\", \"meshes\", \"quads\" or \"spheres\")");
     scene.validate();
     try {
         validateCamera(scene.camera);
@@ -276,6 +317,8 @@ std::string sceneToJson(const Scene& scene) {
     auto v3 = [](Vec3 v) { return Json::array({v.x, v.y, v.z}); };
     doc["camera"] = {{"position", v3(scene.camera.position)}, {"look_at", v3(scene.camera.lookAt)},
                      {"up", v3(scene.camera.up)}, {"fov", scene.camera.fovYDegrees}};
+    if (scene.camera.apertureRadius > 0) doc["camera"]["aperture"] = scene.camera.apertureRadius;
+    if (scene.camera.focusDistance > 0) doc["camera"]["focus_distance"] = scene.camera.focusDistance;
     doc["background"] = v3(scene.background);
     if (!scene.textures.empty())
         logWarning("scene '" + scene.name + "' has textures, which scene files do not carry yet; they are left out");
@@ -298,6 +341,9 @@ std::string sceneToJson(const Scene& scene) {
         }
         doc["meshes"].push_back(j);
     }
+    for (const Sphere& sphere : scene.spheres)
+        doc["spheres"].push_back({{"center", v3(sphere.center)}, {"radius", sphere.radius},
+                                  {"material", scene.materials.at(sphere.material).name}});
     for (const Light& l : scene.lights) {
         const char* type = l.type == LightType::Point ? "point" : (l.type == LightType::Spot ? "spot" : "directional");
         doc["lights"].push_back({{"name", l.name}, {"type", type}, {"position", v3(l.position)},

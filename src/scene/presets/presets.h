@@ -16,6 +16,10 @@ Scene makeCornellBox();
 // toward the inside. Every pixel's exact value is emission / (1 - albedo) (the furnace test).
 Scene makeFurnace(float albedo, Vec3 emission);
 
+// The caffeine molecule's 24 atoms as CPK-coloured spheres over a coffee-brown plane, one sphere
+// light, and a thin-lens camera focused on the molecule.
+Scene makeCaffeine();
+
 std::vector<std::string> presetNames();
 bool isPreset(const std::string& name);
 // Throws UsageError listing the built-in names when `name` is not one.

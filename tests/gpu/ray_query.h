@@ -1,0 +1,48 @@
+// Traces a batch of rays with the real traversal shader (shaders/test/ray_query.comp): closest
+// hit and any-hit per ray, for comparison with the CPU reference.
+#pragma once
+
+#include <cstring>
+#include <vector>
+
+#include "gpu/commands.h"
+#include "render/frame_uniforms.h"
+#include "render/scene_pipeline.h"
+
+namespace penumbra::test {
+
+struct GpuHits {
+    std::vector<shader::HitRecord> closest;
+    std::vector<bool> occluded;
+};
+
+inline GpuHits traceOnGpu(const gpu::Context& ctx, const SceneArrays& arrays, const std::vector<shader::RayDesc>& rays,
+                          Accel accel) {
+    gpu::Commands commands(ctx);
+    GpuScene scene(ctx, commands, arrays);
+    RenderSettings settings;
+    settings.accel = accel;
+    shader::FrameUniforms frame = makeFrameUniforms(Camera{}, Vec3{0}, settings, scene.lightCount, scene.triCount, scene.nodeCount);
+    gpu::Buffer frameBuffer(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryKind::HostVisible);
+    std::memcpy(frameBuffer.mapped(), &frame, sizeof(frame));
+    gpu::Buffer rayBuffer = gpu::uploadStorageBuffer<shader::RayDesc>(ctx, commands, rays);
+    gpu::Buffer hitBuffer(ctx, rays.size() * 2 * sizeof(shader::HitRecord),
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryKind::DeviceLocal);
+    auto pipeline = makeScenePipeline(ctx, "test_ray_query", scene, frameBuffer, {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2});
+    pipeline->bind(PN_BINDING_SCRATCH, rayBuffer);
+    pipeline->bind(PN_BINDING_SCRATCH2, hitBuffer);
+    shader::PassPush push{0, 0, static_cast<std::uint32_t>(rays.size()), 0};
+    commands.run([&](VkCommandBuffer cmd) {
+        pipeline->dispatch(cmd, static_cast<std::uint32_t>((rays.size() + PN_LINEAR_GROUP - 1) / PN_LINEAR_GROUP), 1, 1, &push);
+        gpu::computeBarrier(cmd);
+    });
+    auto records = gpu::downloadBuffer<shader::HitRecord>(ctx, commands, hitBuffer, rays.size() * 2);
+    GpuHits out;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        out.closest.push_back(records[2 * i]);
+        out.occluded.push_back(records[2 * i + 1].triangle != 0);
+    }
+    return out;
+}
+
+}  // namespace penumbra::test

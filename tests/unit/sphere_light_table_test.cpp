@@ -1,0 +1,82 @@
+// Sphere lights on the host: which lights become spheres, their radiance, and the table light
+// sampling picks from (probabilities in proportion to power, a cdf that ends at exactly 1).
+#include <gtest/gtest.h>
+
+#include "bvh/sphere.h"
+#include "render/gpu_scene.h"
+#include "scene/presets/mesh_builder.h"
+
+namespace penumbra {
+namespace {
+
+constexpr double kPi = 3.14159265358979;
+
+TEST(SphereLightTable, PointLightsWithRadiusBecomeSpheresAndEveryLightIsPickedByPower) {
+    Scene s;
+    s.name = "lights";
+    std::uint32_t grey = addMaterial(s, "grey", Vec3{0.5f});
+    std::uint32_t lamp = addMaterial(s, "lamp", Vec3{0}, Vec3{2.0f});
+    Mesh floor;
+    floor.material = grey;
+    addQuad(floor, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5});
+    s.meshes.push_back(floor);
+    s.spheres.push_back({{0, 1, 0}, 0.5f, lamp});
+    s.spheres.push_back({{2, 1, 0}, 1.0f, lamp});
+    s.spheres.push_back({{4, 1, 0}, 1.0f, grey});  // not a light
+    Light soft;
+    soft.position = {0, 3, 0};
+    soft.intensity = 3.0f;
+    soft.radius = 0.25f;
+    Light spot = soft;
+    spot.type = LightType::Spot;
+    spot.outerConeRadians = 0.5f;
+    Light hard;  // radius 0: stays punctual
+    hard.position = {1, 3, 0};
+    s.lights = {soft, spot, hard};
+
+    SceneArrays a = buildSceneArrays(s);
+    EXPECT_EQ(a.punctual.size(), 1u);
+    EXPECT_EQ(a.sphereCount, 4u);
+    ASSERT_EQ(a.materials.size(), s.materials.size() + 1);
+    const float pointRadiance = float(3.0 / (kPi * 0.25 * 0.25));
+    EXPECT_FLOAT_EQ(a.materials.back().emission.x, pointRadiance);
+    ASSERT_EQ(a.sphereLights.size(), 4u);
+
+    // Power up to a shared factor pi: radiance x area (4 pi r^2), or for the spot its intensity
+    // (radiance x pi r^2) over the cone's solid angle.
+    const double cone = 2 * kPi * (1 - std::cos(0.5));
+    std::vector<double> power = {2.0 * 4 * kPi * 0.25, 2.0 * 4 * kPi * 1.0, pointRadiance * 4 * kPi * 0.0625,
+                                 pointRadiance * 0.0625 * cone};
+    double total = 0;
+    for (double p : power) total += p;
+    double cdf = 0;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const shader::SphereLight& l = a.sphereLights[i];
+        EXPECT_NEAR(l.selectPmf, power[i] / total, 1e-6) << "light " << i;
+        cdf += power[i] / total;
+        EXPECT_NEAR(l.cdf, cdf, 1e-6) << "light " << i;
+        if (i < 3) {
+            // Emissive spheres live in the BVH, and their slot knows its selection probability.
+            ASSERT_LT(l.primitive, a.triVerts.size());
+            EXPECT_TRUE(bvh::isSphere(a.triVerts[l.primitive]));
+            EXPECT_EQ(a.triVerts[l.primitive].v0, l.center);
+            EXPECT_EQ(a.triVerts[l.primitive].e1.x, l.radius);
+            EXPECT_EQ(a.triAttribs[l.primitive].lightPmf, l.selectPmf);
+        } else {
+            EXPECT_EQ(l.primitive, PN_NO_HIT);  // the spot light has no geometry
+            EXPECT_FLOAT_EQ(l.cosOuter, std::cos(0.5f));
+        }
+    }
+    EXPECT_EQ(a.sphereLights.back().cdf, 1.0f);
+    // The non-emissive sphere is geometry only.
+    int greySpheres = 0;
+    for (std::size_t i = 0; i < a.triVerts.size(); ++i)
+        if (bvh::isSphere(a.triVerts[i]) && a.triAttribs[i].materialId == grey) {
+            ++greySpheres;
+            EXPECT_EQ(a.triAttribs[i].lightPmf, 0.0f);
+        }
+    EXPECT_EQ(greySpheres, 1);
+}
+
+}  // namespace
+}  // namespace penumbra
