@@ -174,6 +174,29 @@ TEST_P(BsdfEnergyTest, ReflectionIsReciprocal) {
 INSTANTIATE_TEST_SUITE_P(Materials, BsdfEnergyTest, ::testing::ValuesIn(energyCases()),
                          [](const ::testing::TestParamInfo<EnergyCase>& p) { return p.param.name; });
 
+// The metallic-roughness texture (glTF: G = roughness, B = metallic, linear) scales the factors:
+// a texel of G 0, B 1 turns a rough dielectric into a mirror (delta samples of weight F0 = base
+// colour), and G 1, B 0 leaves a Lambertian (every weight equals the albedo, no delta samples).
+TEST_F(GpuTest, MetallicRoughnessTextureSelectsTheLobes) {
+    const Vec3 base{0.9f, 0.5f, 0.25f};
+    for (bool mirror : {true, false}) {
+        Texture t;
+        t.name = "metallic-roughness";
+        t.width = t.height = 1;
+        t.srgb = false;
+        t.rgba = {0, std::uint8_t(mirror ? 0 : 255), std::uint8_t(mirror ? 255 : 0), 255};
+        Material m = diffuseMaterial(base);
+        m.metallic = 1.0f;
+        m.roughness = 1.0f;
+        m.metallicRoughnessTexture.texture = 0;
+        BsdfKernel kernel(*ctx, m, {t});
+        for (const auto& s : kernel.sample(localDirection(1.0f, 0.0f), true, 256, 3)) {
+            EXPECT_EQ(s.isDelta != 0, mirror);
+            for (int k = 0; k < 3; ++k) EXPECT_NEAR(s.value[k], base[k], 1e-5f) << (mirror ? "mirror" : "lambert");
+        }
+    }
+}
+
 // Beer absorption's coefficient: light that travels the given distance keeps the given colour.
 TEST(Absorption, CoefficientKeepsTheColourAtTheDistance) {
     Material m = glassMaterial(0.0f, 1.5f);

@@ -8,9 +8,11 @@
 
 namespace penumbra::test {
 
-BsdfKernel::BsdfKernel(const gpu::Context& ctx, const Material& material) : ctx_(ctx), commands_(ctx) {
+BsdfKernel::BsdfKernel(const gpu::Context& ctx, const Material& material, const std::vector<Texture>& textures)
+    : ctx_(ctx), commands_(ctx) {
     Scene scene;
     scene.name = "bsdf-test";
+    scene.textures = textures;
     scene.materials.push_back(material);
     Mesh mesh;
     mesh.name = "carrier";  // the kernel only reads materials[0]; a scene needs some geometry

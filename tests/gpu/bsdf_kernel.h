@@ -1,5 +1,6 @@
 // Runs the real BSDF code (shaders/test/bsdf_sample.comp) for one material on the test device:
-// draws samples for a direction, or evaluates f and pdf at given direction pairs.
+// draws samples for a direction, or evaluates f and pdf at given direction pairs. Textures the
+// material refers to are looked up at uv (0, 0).
 #pragma once
 
 #include <memory>
@@ -15,7 +16,7 @@ namespace penumbra::test {
 class BsdfKernel {
 public:
     // The material is packed exactly as a render packs it (buildSceneArrays).
-    BsdfKernel(const gpu::Context& ctx, const Material& material);
+    BsdfKernel(const gpu::Context& ctx, const Material& material, const std::vector<Texture>& textures = {});
     ~BsdfKernel();
 
     // count samples for wo (local frame, wo.z > 0); entering: wo is outside the material.
