@@ -1,8 +1,9 @@
 #version 460
 // The path tracer: one thread per pixel, samplesPerPass paths each, added into the accumulation
 // buffer (rgb = sum of radiance, a = sum of squared luminance, for variance estimates).
-// Unidirectional path tracing with next event estimation to emissive triangles and spheres and
-// MIS (power heuristic) against BSDF sampling, so light reached either way is counted once.
+// Unidirectional path tracing with next event estimation to emissive triangles, emissive spheres
+// and punctual lights, combined with BSDF sampling per frame.misMode (lib/mis.glsl); every surface is shaded
+// by the one principled BSDF (lib/bsdf/bsdf.glsl) in its local shading frame.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_basic : require
@@ -20,8 +21,9 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 #include "lib/surface.glsl"
 #include "lib/lights.glsl"
 #include "lib/sphere_lights.glsl"
+#include "lib/material.glsl"
+#include "lib/shading_frame.glsl"
 #include "lib/mis.glsl"
-#include "lib/bsdf/lambert.glsl"
 
 layout(std430, set = 0, binding = PN_BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
 layout(std430, set = 0, binding = PN_BINDING_COUNTERS) buffer CounterBuffer { RayCounters counters; };
@@ -29,106 +31,134 @@ layout(std430, set = 0, binding = PN_BINDING_COUNTERS) buffer CounterBuffer { Ra
 uint closestRays = 0u;
 uint shadowRays = 0u;
 
+// Everything light samplers need about the shading point.
+struct ShadingPoint {
+    Surface surface;
+    ShadingFrame frame;
+    BsdfParams bsdf;
+    vec3 wo;            // local frame, toward the previous vertex
+    vec3 mediumAbove;   // absorption coefficient on wo's side (the medium the path is in)
+    vec3 mediumBelow;   // absorption coefficient beyond the surface (where refraction goes)
+};
+
+// The ray origin for leaving s toward wi (world): off the side of the surface wi goes to.
+vec3 leavingOrigin(Surface s, vec3 wi) {
+    return offsetRayOrigin(s.position, dot(wi, s.geometricNormal) > 0.0 ? s.geometricNormal : -s.geometricNormal);
+}
+
+// The light a light sampler found, arriving at the shading point along wi (world) from `dist`
+// away: radiance / lightPdf weighted by the BSDF, visibility, absorption and MIS. lightPdf is a
+// solid-angle density, or for a delta light the probability of having picked it (isDeltaLight).
+// Every light class ends here, so all of them treat the BSDF and MIS alike.
+vec3 shadeLightSample(ShadingPoint sp, vec3 wi, float dist, vec3 radiance, float lightPdf, bool isDeltaLight) {
+    if (!(lightPdf > 0.0) || max(radiance.r, max(radiance.g, radiance.b)) <= 0.0) return vec3(0.0);
+    vec3 wiLocal = toLocal(sp.frame, wi);
+    // The shading and the true surface must agree on which side wi is, or light would leak.
+    bool above = dot(wi, sp.surface.geometricNormal) > 0.0;
+    if (above != (wiLocal.z > 0.0) || wiLocal.z == 0.0) return vec3(0.0);
+    vec3 f = bsdfEval(sp.bsdf, sp.wo, wiLocal);
+    if (max(f.r, max(f.g, f.b)) <= 0.0) return vec3(0.0);
+    float weight = isDeltaLight ? 1.0 : misWeightLight(lightPdf, bsdfPdf(sp.bsdf, sp.wo, wiLocal));
+    if (weight <= 0.0) return vec3(0.0);
+    ++shadowRays;
+    if (traceOccluded(leavingOrigin(sp.surface, wi), wi, dist == PN_INFINITY ? PN_INFINITY : dist * (1.0 - 1e-4)))
+        return vec3(0.0);
+    vec3 sigma = above ? sp.mediumAbove : sp.mediumBelow;
+    vec3 transmittance = dist == PN_INFINITY ? vec3(sigma == vec3(0.0) ? 1.0 : 0.0) : exp(-sigma * dist);
+    return f * abs(wiLocal.z) * radiance * transmittance * (weight / lightPdf);
+}
+
 // Direct light from a punctual light (a delta light: no MIS, BSDF sampling never hits it).
-vec3 sampleDirectPunctual(Surface s, vec3 albedo, inout uint rng) {
+vec3 sampleDirectPunctual(ShadingPoint sp, inout uint rng) {
     float pmf;
-    uint index = pickPunctual(s.position, rngNext(rng), pmf);
-    PunctualLight l = punctualLights[index];
+    uint index = pickPunctual(sp.surface.position, rngNext(rng), pmf);
     vec3 wi;
     float dist;
-    vec3 incident = punctualIncident(l, s.position, wi, dist);
-    float cosSurface = dot(s.shadingNormal, wi);
-    if (cosSurface <= 0.0 || dot(s.geometricNormal, wi) <= 0.0 || !(pmf > 0.0) || max(incident.r, max(incident.g, incident.b)) <= 0.0)
-        return vec3(0.0);
-    vec3 origin = offsetRayOrigin(s.position, s.geometricNormal);
-    ++shadowRays;
-    if (traceOccluded(origin, wi, dist == PN_INFINITY ? PN_INFINITY : dist * (1.0 - 1e-4))) return vec3(0.0);
-    return lambertEval(albedo) * cosSurface * incident / pmf;
+    vec3 incident = punctualIncident(punctualLights[index], sp.surface.position, wi, dist);
+    return shadeLightSample(sp, wi, dist, incident, pmf, true);
 }
 
 // Direct light from an emissive triangle, MIS-weighted against the BSDF.
-vec3 sampleDirectTriangle(Surface s, vec3 albedo, inout uint rng) {
+vec3 sampleDirectTriangle(ShadingPoint sp, inout uint rng) {
     LightSample ls = sampleLight(rng);
-    vec3 toLight = ls.position - s.position;
+    vec3 toLight = ls.position - sp.surface.position;
     float dist2 = dot(toLight, toLight);
     if (dist2 <= 0.0) return vec3(0.0);
     float dist = sqrt(dist2);
     vec3 wi = toLight / dist;
     float cosLight = -dot(ls.normal, wi);
-    float cosSurface = dot(s.shadingNormal, wi);
-    if (cosLight <= 0.0 || cosSurface <= 0.0 || dot(s.geometricNormal, wi) <= 0.0) return vec3(0.0);
+    if (cosLight <= 0.0) return vec3(0.0);
     float lightPdf = ls.pdfArea * dist2 / cosLight;  // solid angle
-    if (!(lightPdf > 0.0)) return vec3(0.0);
-
-    vec3 origin = offsetRayOrigin(s.position, s.geometricNormal);
-    vec3 target = offsetRayOrigin(ls.position, ls.normal);
-    vec3 span = target - origin;
-    float spanLength = length(span);
-    ++shadowRays;
-    // The shadow ray stops short of the light so it cannot hit the light itself.
-    if (traceOccluded(origin, span / spanLength, spanLength * (1.0 - 1e-4))) return vec3(0.0);
-
-    float weight = misLightWeight(lightPdf, lambertPdf(s.shadingNormal, wi));
-    return lambertEval(albedo) * cosSurface * ls.radiance * (weight / lightPdf);
+    return shadeLightSample(sp, wi, dist, ls.radiance, lightPdf, false);
 }
 
-// Direct light from a sphere light (lib/sphere_lights.glsl), MIS-weighted against the BSDF
-// unless it is a spot light that BSDF sampling cannot hit.
-vec3 sampleDirectSphere(Surface s, vec3 albedo, inout uint rng) {
-    SphereLightSample ls = sampleSphereLight(s.position, rng);
-    float cosSurface = dot(s.shadingNormal, ls.wi);
-    if (!(ls.pdf > 0.0) || cosSurface <= 0.0 || dot(s.geometricNormal, ls.wi) <= 0.0 || max(ls.radiance.r, max(ls.radiance.g, ls.radiance.b)) <= 0.0)
-        return vec3(0.0);
-    vec3 origin = offsetRayOrigin(s.position, s.geometricNormal);
-    vec3 span = offsetRayOrigin(ls.position, ls.normal) - origin;
-    float spanLength = length(span);
-    if (!(spanLength > 0.0)) return vec3(0.0);
-    ++shadowRays;
-    if (traceOccluded(origin, span / spanLength, spanLength * (1.0 - 1e-4))) return vec3(0.0);
-    float weight = ls.lightOnly ? 1.0 : misLightWeight(ls.pdf, lambertPdf(s.shadingNormal, ls.wi));
-    return lambertEval(albedo) * cosSurface * ls.radiance * (weight / ls.pdf);
+// Direct light from a sphere light (lib/sphere_lights.glsl), sampled in the cone it subtends.
+// A spot light with a radius has no geometry (BSDF sampling never reaches it), so it is treated
+// like a delta light: weight 1.
+vec3 sampleDirectSphere(ShadingPoint sp, inout uint rng) {
+    SphereLightSample ls = sampleSphereLight(sp.surface.position, rng);
+    if (!(ls.pdf > 0.0)) return vec3(0.0);
+    float dist = length(ls.position - sp.surface.position);
+    return shadeLightSample(sp, ls.wi, dist, ls.radiance, ls.pdf, ls.lightOnly);
 }
 
 vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
     vec3 result = vec3(0.0);
     vec3 throughput = vec3(1.0);
-    float bsdfPdf = 0.0;  // solid-angle pdf of the direction that led here (0: camera ray)
+    float bsdfPdfPrev = 0.0;  // solid-angle pdf of the direction that led here
+    bool afterDelta = true;   // the camera ray, or a delta lobe: light sampling could not see this
+    vec3 medium = vec3(0.0);  // absorption coefficient of the medium the ray travels in
     for (uint depth = 0u;; ++depth) {
         ++closestRays;
         Hit hit = traceClosest(origin, direction, PN_INFINITY);
         if (hit.triangle == PN_NO_HIT) {
-            result += throughput * frame.background;
+            // Escaping inside an absorbing medium (an open mesh) leaves nothing.
+            if (medium == vec3(0.0)) result += throughput * frame.background;
             break;
         }
+        throughput *= exp(-medium * hit.t);
         Surface s = surfaceAt(hit, origin, direction);
         Material m = materials[s.material];
 
         if ((m.flags & PN_MATERIAL_EMISSIVE) != 0u && s.frontFace) {
-            float weight = 1.0;
-            if (depth > 0u && s.lightPmf > 0.0)
-                weight = misHitWeight(bsdfPdf, emitterHitPdf(hit, s, origin, direction));
-            result += throughput * m.emission * weight;
+            float lightPdf = 0.0;
+            if (s.lightPmf > 0.0 && misSamplesLights()) lightPdf = emitterHitPdf(hit, s, origin, direction);
+            result += throughput * materialEmission(m, s.uv) * misWeightHit(bsdfPdfPrev, lightPdf, afterDelta);
         }
         if (depth >= frame.maxBounces) break;
 
-        vec3 albedo = materialBaseColor(m, s.uv).rgb;
-        if (frame.lightCount > 0u && frame.misMode != PN_MIS_BSDF_ONLY) result += throughput * sampleDirectTriangle(s, albedo, rng);
-        if (frame.punctualCount > 0u) result += throughput * sampleDirectPunctual(s, albedo, rng);
-        if (frame.sphereLightCount > 0u) result += throughput * sampleDirectSphere(s, albedo, rng);
+        ShadingPoint sp;
+        sp.surface = s;
+        sp.frame = shadingFrameAt(s, m, hit.triangle, -direction);
+        sp.bsdf = materialBsdf(m, s.uv, s.frontFace);
+        sp.wo = toLocal(sp.frame, -direction);
+        sp.mediumAbove = medium;
+        // Refraction leaves the medium through a back face and enters the material's through a front one.
+        sp.mediumBelow = s.frontFace ? m.absorption : vec3(0.0);
 
-        vec3 wi = sampleCosineHemisphere(s.shadingNormal, rngNext2(rng));
-        // A sample under the true surface (possible with shading normals) carries no light.
-        if (dot(wi, s.geometricNormal) <= 0.0) break;
-        bsdfPdf = lambertPdf(s.shadingNormal, wi);
-        if (!(bsdfPdf > 0.0)) break;
-        throughput *= lambertEval(albedo) * dot(s.shadingNormal, wi) / bsdfPdf;
+        if (frame.lightCount > 0u && misSamplesLights()) result += throughput * sampleDirectTriangle(sp, rng);
+        if (frame.punctualCount > 0u) result += throughput * sampleDirectPunctual(sp, rng);
+        if (frame.sphereLightCount > 0u) result += throughput * sampleDirectSphere(sp, rng);
+
+        vec3 u = vec3(rngNext2(rng), rngNext(rng));
+        BsdfSample bs = bsdfSample(sp.bsdf, sp.wo, u);
+        if (!(bs.pdf > 0.0) || max(bs.weight.r, max(bs.weight.g, bs.weight.b)) <= 0.0) break;
+        vec3 wi = toWorld(sp.frame, bs.wi);
+        // A sample on the other side of the true surface than the shading frame says would leak
+        // light through it (or carry none): the path ends.
+        bool above = dot(wi, s.geometricNormal) > 0.0;
+        if (above != (bs.wi.z > 0.0)) break;
+        throughput *= bs.weight;
+        bsdfPdfPrev = bs.pdf;
+        afterDelta = bs.isDelta;
+        if (!above) medium = sp.mediumBelow;
 
         if (depth + 1u >= frame.rouletteStart) {
             float survive = min(max(throughput.r, max(throughput.g, throughput.b)), 1.0);
             if (rngNext(rng) >= survive) break;
             throughput /= survive;
         }
-        origin = offsetRayOrigin(s.position, s.geometricNormal);
+        origin = leavingOrigin(s, wi);
         direction = wi;
     }
     return result;

@@ -3,6 +3,7 @@
 #ifndef PN_LIGHTS_GLSL
 #define PN_LIGHTS_GLSL
 
+#include "lib/material.glsl"
 #include "lib/sampling.glsl"
 
 struct LightSample {
@@ -25,7 +26,7 @@ LightSample sampleLight(inout uint rng) {
     LightSample ls;
     ls.position = tv.v0 + b.x * tv.e1 + b.y * tv.e2;
     ls.normal = normalize(cross(tv.e1, tv.e2));
-    ls.radiance = materials[ta.materialId].emission;
+    ls.radiance = materialEmission(materials[ta.materialId], interpolateUv(ta, b.x, b.y));
     ls.pdfArea = entry.pmf / ta.area;
     return ls;
 }

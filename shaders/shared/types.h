@@ -57,6 +57,15 @@ using namespace penumbra::gpu_types;
 // ---- material flags ----
 #define PN_MATERIAL_EMISSIVE 1u
 #define PN_MATERIAL_ALPHA_TESTED 2u  // texels with alpha below alphaCutoff are holes
+#define PN_MATERIAL_ONE_SIDED 4u     // the back face reflects nothing (glTF doubleSided = false)
+
+// Perceptual roughness below this is shaded as perfectly smooth (delta lobes); at or above it the
+// GGX lobes use alpha = roughness^2 (so alpha >= PN_SMOOTH_ROUGHNESS^2, which keeps D finite).
+#define PN_SMOOTH_ROUGHNESS 0.02
+
+// ---- BSDF test kernel (shaders/test/bsdf_sample.comp) modes ----
+#define PN_BSDF_TEST_SAMPLE 0u  // itemCount samples of queries[0]: wi, pdf, weight, isDelta
+#define PN_BSDF_TEST_EVAL 1u    // per query: eval (f) and pdf of (wo, wi)
 
 // ---- triangle flags (TriVerts.flags, read during traversal) ----
 #define PN_TRI_ALPHA_TESTED 1u  // its material is alpha tested: check the texture before accepting a hit
@@ -118,16 +127,29 @@ PN_STRUCT(TriAttribs) {
     vec2 pad;
 };
 
-// 48 bytes.
+// One principled material (see docs/MATERIALS.md), 96 bytes. Lobes: a Lambertian base under a
+// dielectric GGX coat (weight `specular`), a GGX conductor (weight `metallic`) and a dielectric
+// that refracts (weight (1 - metallic) * transmission). roughness below PN_SMOOTH_ROUGHNESS makes
+// the specular lobes perfectly smooth (delta) ones.
 PN_STRUCT(Material) {
-    vec3 albedo;          // diffuse reflectance, each channel in [0, 1]; multiplies the texture
+    vec3 albedo;          // base colour, each channel in [0, 1]; multiplies the texture
     uint flags;           // PN_MATERIAL_*
     vec3 emission;        // emitted radiance from the front face (winding order), W/(m^2 sr) per channel
     float alphaCutoff;    // with PN_MATERIAL_ALPHA_TESTED
+    vec3 absorption;      // Beer-Lambert coefficient inside a transmissive material, per metre (0: clear)
+    float ior;            // index of refraction, >= 1
+    float metallic;       // [0, 1]; multiplies the texture's B channel
+    float roughness;      // perceptual, [0, 1]; multiplies the texture's G channel; GGX alpha = roughness^2
+    float transmission;   // [0, 1]
+    float specular;       // [0, 1]: strength of the dielectric coat over the diffuse base (0: pure Lambert)
     uint albedoTexture;   // PN_NO_TEXTURE or an index into the texture table
     uint albedoWrap;      // PN_WRAP_* for u | (PN_WRAP_* for v) << 8
-    uint pad0;
-    uint pad1;
+    uint metallicRoughnessTexture;  // linear; G = roughness, B = metallic (glTF)
+    uint metallicRoughnessWrap;
+    uint normalTexture;   // tangent-space normal map, linear
+    uint normalWrap;
+    uint emissionTexture; // sRGB, multiplies emission
+    uint emissionWrap;
 };
 
 // Where one texture's texels are in the texel buffer, 16 bytes.
@@ -253,6 +275,22 @@ PN_STRUCT(SurfacePoint) {
     float pad;
 };
 
+// One query of the BSDF test kernel, 32 bytes: the material is materials[0] of the test scene.
+PN_STRUCT(BsdfTestQuery) {
+    vec3 wo;        // local shading frame, z = the normal on wo's side
+    uint entering;  // nonzero: wo is outside the material (glass refracts with eta = ior)
+    vec3 wi;        // PN_BSDF_TEST_EVAL: the direction to evaluate
+    uint pad;
+};
+
+// One result of the BSDF test kernel, 32 bytes.
+PN_STRUCT(BsdfTestResult) {
+    vec3 wi;        // sampled direction (PN_BSDF_TEST_SAMPLE)
+    float pdf;      // solid-angle pdf (of the sampled direction, or of the query's wi)
+    vec3 value;     // weight = f cos / pdf (sample), or f (eval)
+    uint isDelta;   // the sample came from a delta lobe (its pdf is that lobe's probability)
+};
+
 #ifdef __cplusplus
 // Layout checks: every offset the shader relies on. A failure here means a field moved.
 static_assert(sizeof(BvhNode) == 32 && offsetof(BvhNode, firstOrRight) == 12 &&
@@ -263,9 +301,14 @@ static_assert(sizeof(TriAttribs) == 80 && offsetof(TriAttribs, materialId) == 12
               offsetof(TriAttribs, n1) == 16 && offsetof(TriAttribs, lightPmf) == 28 &&
               offsetof(TriAttribs, n2) == 32 && offsetof(TriAttribs, area) == 44 &&
               offsetof(TriAttribs, uv0) == 48 && offsetof(TriAttribs, uv2) == 64);
-static_assert(sizeof(Material) == 48 && offsetof(Material, flags) == 12 &&
+static_assert(sizeof(Material) == 96 && offsetof(Material, flags) == 12 &&
               offsetof(Material, emission) == 16 && offsetof(Material, alphaCutoff) == 28 &&
-              offsetof(Material, albedoTexture) == 32 && offsetof(Material, albedoWrap) == 36);
+              offsetof(Material, absorption) == 32 && offsetof(Material, ior) == 44 &&
+              offsetof(Material, metallic) == 48 && offsetof(Material, roughness) == 52 &&
+              offsetof(Material, transmission) == 56 && offsetof(Material, specular) == 60 &&
+              offsetof(Material, albedoTexture) == 64 && offsetof(Material, albedoWrap) == 68 &&
+              offsetof(Material, metallicRoughnessTexture) == 72 && offsetof(Material, normalTexture) == 80 &&
+              offsetof(Material, emissionTexture) == 88 && offsetof(Material, emissionWrap) == 92);
 static_assert(sizeof(TextureInfo) == 16 && offsetof(TextureInfo, flags) == 12);
 static_assert(sizeof(LightAlias) == 16 && offsetof(LightAlias, pmf) == 12);
 static_assert(sizeof(FrameUniforms) == 160 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
@@ -289,6 +332,10 @@ static_assert(sizeof(PassPush) == 16 && offsetof(PassPush, countRays) == 12);
 static_assert(sizeof(RayCounters) == 16);
 static_assert(sizeof(RayDesc) == 32 && offsetof(RayDesc, tMax) == 12 && offsetof(RayDesc, direction) == 16);
 static_assert(sizeof(HitRecord) == 16 && offsetof(HitRecord, v) == 12);
+static_assert(sizeof(BsdfTestQuery) == 32 && offsetof(BsdfTestQuery, entering) == 12 &&
+              offsetof(BsdfTestQuery, wi) == 16);
+static_assert(sizeof(BsdfTestResult) == 32 && offsetof(BsdfTestResult, pdf) == 12 &&
+              offsetof(BsdfTestResult, value) == 16 && offsetof(BsdfTestResult, isDelta) == 28);
 static_assert(sizeof(SurfacePoint) == 32 && offsetof(SurfacePoint, valid) == 12 &&
               offsetof(SurfacePoint, normal) == 16);
 }  // namespace penumbra::shader

@@ -22,6 +22,7 @@ struct RenderArgs {
     std::string output;  // default: out/<scene>.png
     std::string device;
     std::string accel = "bvh";
+    std::string mis = "both";
     float exposure = 0;
     bool quiet = false;
     CameraOverrides camera;
@@ -31,6 +32,7 @@ struct RenderArgs {
 void runRender(const RenderArgs& args, const CLI::App& cmd) {
     RenderSettings settings = args.settings;
     settings.accel = parseAccel(args.accel);
+    settings.mis = parseMisMode(args.mis);
     validateSettings(settings);
     SceneFileSettings fileSettings;
     Scene scene = loadScene(args.scene, args.map, args.camera, &fileSettings);
@@ -96,6 +98,8 @@ void registerRender(CLI::App& app, Action& action) {
     cmd->add_option("--height", args->settings.height, "image height in pixels");
     cmd->add_option("--seed", args->settings.seed, "random seed (same seed, same device: same image)");
     cmd->add_option("--accel", args->accel, "bvh, or brute (every triangle per ray: the oracle)");
+    cmd->add_option("--mis", args->mis,
+                    "direct light estimators: both (MIS, default), light (light sampling only) or bsdf (BSDF sampling only)");
     cmd->add_option("--exposure", args->exposure, "exposure in stops for PNG output");
     cmd->add_flag("-q,--quiet", args->quiet, "no progress bar or summary");
     addDeviceOption(*cmd, args->device);

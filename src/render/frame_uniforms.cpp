@@ -36,6 +36,9 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.focusDistance = effectiveFocusDistance(camera);
     f.envTexture = PN_NO_TEXTURE;
     f.envIntensity = 1.0f;
+    f.misMode = settings.mis == MisMode::LightOnly  ? PN_MIS_LIGHT_ONLY
+                : settings.mis == MisMode::BsdfOnly ? PN_MIS_BSDF_ONLY
+                                                    : PN_MIS_BOTH;
     return f;
 }
 

@@ -1,5 +1,6 @@
 #include "render/gpu_scene.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -12,6 +13,15 @@
 #include "render/sphere_lights.h"
 
 namespace penumbra {
+
+Vec3 absorptionCoefficient(const Material& m) {
+    if (!(m.absorptionDistance > 0) || !std::isfinite(m.absorptionDistance)) return Vec3{0.0f};
+    Vec3 sigma;
+    // A colour of 0 would be an infinite coefficient; 1e-4 of the light left is as dark as it needs to be.
+    for (int k = 0; k < 3; ++k) sigma[k] = -std::log(std::clamp(m.absorptionColor[k], 1e-4f, 1.0f)) / m.absorptionDistance;
+    return sigma;
+}
+
 namespace {
 
 std::uint32_t wrapCode(Wrap w) {
@@ -22,15 +32,29 @@ std::uint32_t wrapCode(Wrap w) {
     }
 }
 
+void packTexture(const TextureRef& ref, std::uint32_t& index, std::uint32_t& wrap) {
+    index = ref.present() ? std::uint32_t(ref.texture) : PN_NO_TEXTURE;
+    wrap = wrapCode(ref.wrapU) | (wrapCode(ref.wrapV) << 8);
+}
+
 shader::Material toGpuMaterial(const Material& m) {
     shader::Material gm{};
     gm.albedo = m.albedo;
     gm.emission = m.emission;
     gm.flags = m.isEmissive() ? PN_MATERIAL_EMISSIVE : 0u;
-    gm.albedoTexture = m.albedoTexture.present() ? std::uint32_t(m.albedoTexture.texture) : PN_NO_TEXTURE;
-    gm.albedoWrap = wrapCode(m.albedoTexture.wrapU) | (wrapCode(m.albedoTexture.wrapV) << 8);
+    if (!m.twoSided) gm.flags |= PN_MATERIAL_ONE_SIDED;
     gm.alphaCutoff = m.alphaCutoff;
     if (m.alphaCutoff > 0 && m.albedoTexture.present()) gm.flags |= PN_MATERIAL_ALPHA_TESTED;
+    gm.metallic = std::clamp(m.metallic, 0.0f, 1.0f);
+    gm.roughness = std::clamp(m.roughness, 0.0f, 1.0f);
+    gm.ior = std::max(m.ior, 1.0f);
+    gm.transmission = std::clamp(m.transmission, 0.0f, 1.0f);
+    gm.specular = std::clamp(m.specular, 0.0f, 1.0f);
+    gm.absorption = absorptionCoefficient(m);
+    packTexture(m.albedoTexture, gm.albedoTexture, gm.albedoWrap);
+    packTexture(m.metallicRoughnessTexture, gm.metallicRoughnessTexture, gm.metallicRoughnessWrap);
+    packTexture(m.normalTexture, gm.normalTexture, gm.normalWrap);
+    packTexture(m.emissionTexture, gm.emissionTexture, gm.emissionWrap);
     return gm;
 }
 

@@ -29,6 +29,9 @@ struct SceneArrays {
     double buildMilliseconds = 0;
 };
 
+// Beer-Lambert coefficient per metre of a material's absorption colour and distance (0: clear).
+Vec3 absorptionCoefficient(const Material& m);
+
 SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options = {});
 
 class GpuScene {

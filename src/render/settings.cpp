@@ -29,4 +29,15 @@ Accel parseAccel(const std::string& name) {
 
 const char* accelName(Accel accel) { return accel == Accel::Bvh ? "bvh" : "brute"; }
 
+MisMode parseMisMode(const std::string& name) {
+    if (name == "both") return MisMode::Both;
+    if (name == "light") return MisMode::LightOnly;
+    if (name == "bsdf") return MisMode::BsdfOnly;
+    throw UsageError("unknown --mis '" + name + "'; use both, light or bsdf");
+}
+
+const char* misModeName(MisMode mode) {
+    return mode == MisMode::Both ? "both" : (mode == MisMode::LightOnly ? "light" : "bsdf");
+}
+
 }  // namespace penumbra

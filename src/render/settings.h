@@ -8,6 +8,10 @@ namespace penumbra {
 
 enum class Accel { Bvh, Brute };
 
+// Which estimators of direct light the integrator combines (shaders/lib/mis.glsl): both with the
+// power heuristic, light sampling only, or BSDF sampling only. All converge to the same image.
+enum class MisMode { Both, LightOnly, BsdfOnly };
+
 struct RenderSettings {
     std::uint32_t width = 640;
     std::uint32_t height = 480;
@@ -17,6 +21,7 @@ struct RenderSettings {
     std::uint32_t rouletteStart = 3;   // Russian roulette from this bounce on
     std::uint32_t seed = 1;
     Accel accel = Accel::Bvh;
+    MisMode mis = MisMode::Both;
 };
 
 // Limits that keep absurd requests from allocating unbounded memory or running forever.
@@ -30,5 +35,8 @@ void validateSettings(const RenderSettings& settings);
 
 Accel parseAccel(const std::string& name);  // "bvh" | "brute"; UsageError otherwise
 const char* accelName(Accel accel);
+
+MisMode parseMisMode(const std::string& name);  // "both" | "light" | "bsdf"; UsageError otherwise
+const char* misModeName(MisMode mode);
 
 }  // namespace penumbra

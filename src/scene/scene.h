@@ -42,6 +42,12 @@ struct Material {
     float roughness = 1.0f;     // perceptual roughness, [0, 1]
     float ior = 1.5f;           // index of refraction of a dielectric, >= 1
     float transmission = 0.0f;  // [0, 1]: 1 is clear glass
+    float specular = 0.0f;      // [0, 1] dielectric coat over the diffuse base (glTF: 1; 0: pure Lambert)
+    // Beer-Lambert absorption inside a transmissive material: light that travels
+    // absorptionDistance metres inside keeps absorptionColor of itself (glTF KHR_materials_volume's
+    // attenuation colour and distance). absorptionDistance 0: clear.
+    Vec3 absorptionColor{1.0f};
+    float absorptionDistance = 0.0f;
     float opacity = 1.0f;       // [0, 1] coverage (MTL d, glTF alpha)
     float alphaCutoff = 0.0f;   // > 0: texels with alpha below it are holes (glTF MASK, Doom)
     bool twoSided = true;

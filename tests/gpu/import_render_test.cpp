@@ -16,7 +16,8 @@ namespace {
 // 90-degree field of view, so the quad fills the middle half of the image. Its 4x4 base-colour
 // texture holds four 2x2 blocks (red, green / blue, grey); bilinear filtering returns a block's
 // colour exactly over the middle half of the block, where the test looks. A diffuse surface under
-// a uniform unit sky reflects exactly its albedo, so the pixels equal the texels' linear colours.
+// a uniform unit sky reflects exactly its albedo, so the pixels equal the texels' linear colours
+// (the material turns off glTF's specular layer with KHR_materials_specular, so it is pure Lambert).
 TEST_F(GpuTest, TexturedGltfQuadShowsItsTexture) {
     Scene scene = loadSceneFile(dataDir() / "gltf/textured_quad.gltf");
     scene.background = Vec3{1.0f};

@@ -46,7 +46,7 @@ void expectMembers(const Offsets& spv, const std::string& name, const std::vecto
 TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
     using namespace shader;
     int structsChecked = 0;
-    for (const char* shaderName : {"trace", "raybench", "test_ray_query", "test_sphere_light_sample"}) {
+    for (const char* shaderName : {"trace", "raybench", "test_ray_query", "test_sphere_light_sample", "test_bsdf_sample"}) {
         Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
         expectMembers(spv, "BvhNode", {0, offsetof(BvhNode, firstOrRight), offsetof(BvhNode, boundsMax), offsetof(BvhNode, triCount)});
         expectMembers(spv, "TriVerts", {0, offsetof(TriVerts, flags), offsetof(TriVerts, e1), 28, offsetof(TriVerts, e2), 44});
@@ -54,8 +54,13 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                                           offsetof(TriAttribs, n2), offsetof(TriAttribs, area), offsetof(TriAttribs, uv0),
                                           offsetof(TriAttribs, uv1), offsetof(TriAttribs, uv2), offsetof(TriAttribs, pad)});
         expectMembers(spv, "Material", {0, offsetof(Material, flags), offsetof(Material, emission), offsetof(Material, alphaCutoff),
-                                        offsetof(Material, albedoTexture), offsetof(Material, albedoWrap),
-                                        offsetof(Material, pad0), offsetof(Material, pad1)});
+                                        offsetof(Material, absorption), offsetof(Material, ior), offsetof(Material, metallic),
+                                        offsetof(Material, roughness), offsetof(Material, transmission),
+                                        offsetof(Material, specular), offsetof(Material, albedoTexture),
+                                        offsetof(Material, albedoWrap), offsetof(Material, metallicRoughnessTexture),
+                                        offsetof(Material, metallicRoughnessWrap), offsetof(Material, normalTexture),
+                                        offsetof(Material, normalWrap), offsetof(Material, emissionTexture),
+                                        offsetof(Material, emissionWrap)});
         expectMembers(spv, "TextureInfo", {0, offsetof(TextureInfo, width), offsetof(TextureInfo, height), offsetof(TextureInfo, flags)});
         expectMembers(spv, "LightAlias", {0, offsetof(LightAlias, threshold), offsetof(LightAlias, alias), offsetof(LightAlias, pmf)});
         expectMembers(spv, "FrameUniforms",
@@ -85,10 +90,14 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
         expectMembers(spv, "RayDesc", {0, offsetof(RayDesc, tMax), offsetof(RayDesc, direction), 28});
         expectMembers(spv, "HitRecord", {0, offsetof(HitRecord, triangle), 8, offsetof(HitRecord, v)});
         expectMembers(spv, "SurfacePoint", {0, offsetof(SurfacePoint, valid), offsetof(SurfacePoint, normal), 28});
-        for (const char* s : {"BvhNode", "TriVerts", "FrameUniforms", "Material"}) structsChecked += int(spv.count(s));
+        expectMembers(spv, "BsdfTestQuery", {0, offsetof(BsdfTestQuery, entering), offsetof(BsdfTestQuery, wi), 28});
+        expectMembers(spv, "BsdfTestResult", {0, offsetof(BsdfTestResult, pdf), offsetof(BsdfTestResult, value),
+                                              offsetof(BsdfTestResult, isDelta)});
+        for (const char* s : {"BvhNode", "TriVerts", "FrameUniforms", "Material", "BsdfTestQuery", "BsdfTestResult"})
+            structsChecked += int(spv.count(s));
     }
     // The reflection must actually have found the structs, or this test proves nothing.
-    EXPECT_GE(structsChecked, 8);
+    EXPECT_GE(structsChecked, 12);
     EXPECT_EQ(readMemberOffsets(gpu::shaderCode("trace")).count("SphereLight"), 1u);
 }
 

@@ -67,6 +67,22 @@ TEST(SceneJson, MaterialOverridesChangeOnlyTheGivenFields) {
         }
 }
 
+TEST(SceneJson, MaterialKeysForSpecularAndAbsorptionAreRead) {
+    Scene s = parse(R"({"assets": [{"preset": "cornell"}], "materials": [{"name": "red", "specular": 0.5,
+        "absorptionColor": [0.9, 0.5, 0.1], "absorptionDistance": 0.05}]})");
+    bool found = false;
+    for (const Material& m : s.materials)
+        if (m.name == "red") {
+            found = true;
+            EXPECT_FLOAT_EQ(m.specular, 0.5f);
+            EXPECT_EQ(m.absorptionColor, (Vec3{0.9f, 0.5f, 0.1f}));
+            EXPECT_FLOAT_EQ(m.absorptionDistance, 0.05f);
+        }
+    EXPECT_TRUE(found);
+    EXPECT_NE(errorOf(R"({"materials": [{"name": "x", "absorptionDistance": -1}]})"), "");
+    EXPECT_NE(errorOf(R"({"materials": [{"name": "x", "specular": 2}]})"), "");
+}
+
 TEST(SceneJson, RenderSettingsAreRead) {
     SceneFileSettings settings;
     parse(R"({"assets": [{"preset": "cornell"}], "render": {"spp": 7, "bounces": 3, "width": 20, "height": 10, "exposure": 1.5}})",

@@ -1,4 +1,5 @@
-// The Lambertian BSDF: f = albedo / pi, sampled with a cosine-weighted hemisphere.
+// The Lambertian BSDF: f = albedo / pi, sampled with a cosine-weighted hemisphere. The world-space
+// forms take the normal; the local forms work in the shading frame (z = normal).
 #ifndef PN_BSDF_LAMBERT_GLSL
 #define PN_BSDF_LAMBERT_GLSL
 
@@ -7,5 +8,13 @@
 vec3 lambertEval(vec3 albedo) { return albedo * PN_INV_PI; }
 
 float lambertPdf(vec3 n, vec3 wi) { return max(dot(n, wi), 0.0) * PN_INV_PI; }
+
+float lambertPdfLocal(vec3 wi) { return max(wi.z, 0.0) * PN_INV_PI; }
+
+vec3 lambertSampleLocal(vec2 u) {
+    float r = sqrt(u.x);
+    float phi = 2.0 * PN_PI * u.y;
+    return vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u.x)));
+}
 
 #endif

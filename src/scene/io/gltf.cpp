@@ -194,6 +194,21 @@ double extNumber(const tinygltf::ExtensionMap& ext, const char* name, const char
 
 float clamp01(double v) { return std::isfinite(v) ? float(std::clamp(v, 0.0, 1.0)) : 0.0f; }
 
+// An RGB array of an extension's key, each channel clamped to [0, 1].
+Vec3 extColor(const tinygltf::ExtensionMap& ext, const char* name, const char* key, Vec3 fallback) {
+    auto it = ext.find(name);
+    if (it == ext.end() || !it->second.IsObject() || !it->second.Has(key)) return fallback;
+    const tinygltf::Value& v = it->second.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 3) return fallback;
+    Vec3 c;
+    for (int k = 0; k < 3; ++k) {
+        const tinygltf::Value& e = v.Get(k);
+        if (!e.IsNumber()) return fallback;
+        c[k] = clamp01(e.GetNumberAsDouble());
+    }
+    return c;
+}
+
 // ---- accessors ------------------------------------------------------------------------------
 
 struct AccessorView {
@@ -436,6 +451,14 @@ private:
         const double ior = extNumber(g.extensions, "KHR_materials_ior", "ior", 1.5);
         m.ior = ior >= 1.0 ? float(std::min(ior, 4.0)) : 1.5f;  // 0 ("no refraction") and junk -> default
         m.twoSided = g.doubleSided;
+        // Every glTF dielectric has a specular layer (KHR_materials_specular scales it).
+        m.specular = clamp01(extNumber(g.extensions, "KHR_materials_specular", "specularFactor", 1.0));
+        const double attenuationDistance =
+            extNumber(g.extensions, "KHR_materials_volume", "attenuationDistance", 0.0);
+        if (attenuationDistance > 0) {
+            m.absorptionDistance = float(std::min(attenuationDistance, 1e9));
+            m.absorptionColor = extColor(g.extensions, "KHR_materials_volume", "attenuationColor", Vec3{1.0f});
+        }
         if (g.alphaMode == "MASK") {
             m.alphaCutoff = std::isfinite(g.alphaCutoff) ? float(std::clamp(g.alphaCutoff, 1e-4, 1.0)) : 0.5f;
         } else if (g.alphaMode == "BLEND") {

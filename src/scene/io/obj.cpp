@@ -280,6 +280,7 @@ private:
             // specular colour means a purely diffuse surface.
             m.roughness = maxComponent(ks) > 0 ? std::clamp(std::sqrt(2.0f / (ns + 2.0f)), 0.0f, 1.0f) : 1.0f;
             m.metallic = 0.0f;
+            m.specular = maxComponent(ks) > 0 ? 1.0f : 0.0f;  // a clear coat over Kd
             const float ni = float(t.ior);
             m.ior = (std::isfinite(ni) && ni > 1.0f) ? std::min(ni, 4.0f) : 1.5f;
             m.opacity = std::isfinite(t.dissolve) ? clamp01(float(t.dissolve)) : 1.0f;

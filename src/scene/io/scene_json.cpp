@@ -89,6 +89,11 @@ void readMaterial(const Reader& r, const Json& j, const std::string& where, Mate
     if (j.contains("ior")) m.ior = r.number(j["ior"], where + ".ior", 1, 4);
     if (j.contains("transmission")) m.transmission = r.number(j["transmission"], where + ".transmission", 0, 1);
     if (j.contains("opacity")) m.opacity = r.number(j["opacity"], where + ".opacity", 0, 1);
+    if (j.contains("specular")) m.specular = r.number(j["specular"], where + ".specular", 0, 1);
+    if (j.contains("absorptionColor"))
+        m.absorptionColor = r.vec3(j["absorptionColor"], where + ".absorptionColor", 0, 1);
+    if (j.contains("absorptionDistance"))
+        m.absorptionDistance = r.number(j["absorptionDistance"], where + ".absorptionDistance", 0, 1e9f);
 }
 
 template <typename T, typename F>
@@ -325,7 +330,9 @@ std::string sceneToJson(const Scene& scene) {
     for (const Material& m : scene.materials)
         doc["materials"].push_back({{"name", m.name}, {"albedo", v3(m.albedo)}, {"emission", v3(m.emission)},
                                     {"metallic", m.metallic}, {"roughness", m.roughness}, {"ior", m.ior},
-                                    {"transmission", m.transmission}, {"opacity", m.opacity}});
+                                    {"transmission", m.transmission}, {"opacity", m.opacity},
+                                    {"specular", m.specular}, {"absorptionColor", v3(m.absorptionColor)},
+                                    {"absorptionDistance", m.absorptionDistance}});
     for (const Mesh& mesh : scene.meshes) {
         Json j = {{"name", mesh.name}, {"material", scene.materials.at(mesh.material).name}};
         Json& p = j["positions"] = Json::array();

@@ -94,6 +94,8 @@ TEST_F(GltfScene, Materials) {
     EXPECT_FLOAT_EQ(e.roughness, 0.75f);
     expectNear(e.emission, {4, 2, 0});  // emissiveFactor * KHR_materials_emissive_strength
     EXPECT_FALSE(e.twoSided);
+    EXPECT_FLOAT_EQ(e.specular, 1.0f);  // every glTF dielectric has its specular layer
+    EXPECT_FLOAT_EQ(e.absorptionDistance, 0.0f);
 
     const Material& t = scene_->materials[meshNamed(*scene_, "quad/0")->material];
     EXPECT_TRUE(t.twoSided);
@@ -130,6 +132,12 @@ TEST_F(GltfScene, FirstCameraBecomesTheDefault) {
     expectNear(scene_->camera.lookAt, {0, 0, 4});
     expectNear(scene_->camera.up, {0, 1, 0});
     EXPECT_NEAR(scene_->camera.fovYDegrees, 0.5 * 180 / M_PI, 1e-3);
+}
+
+TEST(GltfLoader, SpecularExtensionTurnsTheCoatOff) {
+    Scene scene = loadGltf(dataDir() / "gltf/textured_quad.gltf");
+    ASSERT_EQ(scene.materials.size(), 1u);
+    EXPECT_FLOAT_EQ(scene.materials[0].specular, 0.0f);
 }
 
 TEST(GltfLoader, EmbeddedWithoutSceneUsesRootNodesAndFitsCamera) {
