@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "scene/environment.h"
 
 namespace penumbra {
 
@@ -57,6 +58,10 @@ void Scene::validate() const {
         for (Vec3 p : m.positions)
             if (!isFinite(p)) throw Error(where + ": a vertex position is not finite");
     }
+    for (const Light& l : lights)
+        if (!(l.angularRadius >= 0 && l.angularRadius <= kMaxAngularRadius))
+            throw Error("light '" + l.name + "': angular radius must be within [0, 45] degrees");
+    validateEnvironment(environment);
 }
 
 void attachTorch(Scene& scene) {
@@ -78,6 +83,7 @@ std::size_t sceneBytes(const Scene& scene) {
         bytes += sizeof(Mesh) + m.positions.capacity() * sizeof(Vec3) + m.normals.capacity() * sizeof(Vec3) +
                  m.uvs.capacity() * sizeof(Vec2) + m.indices.capacity() * sizeof(std::uint32_t);
     for (const Texture& t : scene.textures) bytes += sizeof(Texture) + t.rgba.capacity();
+    if (scene.environment.map) bytes += scene.environment.map->radiance.capacity() * sizeof(Vec3);
     return bytes;
 }
 
