@@ -19,6 +19,7 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 #include "lib/camera.glsl"
 #include "lib/surface.glsl"
 #include "lib/lights.glsl"
+#include "lib/environment.glsl"
 #include "lib/bsdf/lambert.glsl"
 
 layout(std430, set = 0, binding = PN_BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
@@ -27,11 +28,38 @@ layout(std430, set = 0, binding = PN_BINDING_COUNTERS) buffer CounterBuffer { Ra
 uint closestRays = 0u;
 uint shadowRays = 0u;
 
+// Direct light from a sun disk (a directional light with an angular radius), MIS-weighted
+// against the BSDF: escaped rays can hit it too.
+vec3 sampleDirectSun(Surface s, vec3 albedo, PunctualLight l, float pickPmf, inout uint rng) {
+    vec3 wi = sampleSunDisk(l, rngNext2(rng));
+    float cosSurface = dot(s.shadingNormal, wi);
+    if (cosSurface <= 0.0 || dot(s.geometricNormal, wi) <= 0.0 || !(pickPmf > 0.0)) return vec3(0.0);
+    float lightPdf = pickPmf * sunConePdf(l);
+    float weight = distantLightWeight(lightPdf, lambertPdf(s.shadingNormal, wi));
+    if (weight <= 0.0) return vec3(0.0);
+    ++shadowRays;
+    if (traceOccluded(offsetRayOrigin(s.position, s.geometricNormal), wi, PN_INFINITY)) return vec3(0.0);
+    return lambertEval(albedo) * cosSurface * sunRadiance(l) * (weight / lightPdf);
+}
+
+// Direct light from the environment (map or constant background), MIS-weighted against the BSDF.
+vec3 sampleDirectEnvironment(Surface s, vec3 albedo, inout uint rng) {
+    EnvSample es = sampleEnvironment(rng);
+    float cosSurface = dot(s.shadingNormal, es.direction);
+    if (cosSurface <= 0.0 || dot(s.geometricNormal, es.direction) <= 0.0 || !(es.pdf > 0.0)) return vec3(0.0);
+    float weight = distantLightWeight(es.pdf, lambertPdf(s.shadingNormal, es.direction));
+    if (weight <= 0.0 || max(es.radiance.r, max(es.radiance.g, es.radiance.b)) <= 0.0) return vec3(0.0);
+    ++shadowRays;
+    if (traceOccluded(offsetRayOrigin(s.position, s.geometricNormal), es.direction, PN_INFINITY)) return vec3(0.0);
+    return lambertEval(albedo) * cosSurface * es.radiance * (weight / es.pdf);
+}
+
 // Direct light from a punctual light (a delta light: no MIS, BSDF sampling never hits it).
 vec3 sampleDirectPunctual(Surface s, vec3 albedo, inout uint rng) {
     float pmf;
     uint index = pickPunctual(s.position, rngNext(rng), pmf);
     PunctualLight l = punctualLights[index];
+    if (isSunDisk(l)) return sampleDirectSun(s, albedo, l, pmf, rng);
     vec3 wi;
     float dist;
     vec3 incident = punctualIncident(l, s.position, wi, dist);
@@ -78,7 +106,7 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
         ++closestRays;
         Hit hit = traceClosest(origin, direction, PN_INFINITY);
         if (hit.triangle == PN_NO_HIT) {
-            result += throughput * frame.background;
+            result += throughput * escapedRadiance(origin, direction, bsdfPdf);
             break;
         }
         Surface s = surfaceAt(hit, origin, direction);
@@ -98,6 +126,7 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
         vec3 albedo = materialBaseColor(m, s.uv).rgb;
         if (frame.lightCount > 0u) result += throughput * sampleDirectTriangle(s, albedo, rng);
         if (frame.punctualCount > 0u) result += throughput * sampleDirectPunctual(s, albedo, rng);
+        if (environmentIsLight()) result += throughput * sampleDirectEnvironment(s, albedo, rng);
 
         vec3 wi = sampleCosineHemisphere(s.shadingNormal, rngNext2(rng));
         // A sample under the true surface (possible with shading normals) carries no light.

@@ -31,9 +31,18 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.samplesPerPass = settings.samplesPerPass;
     f.background = background;
     f.focusDistance = 1.0f;
-    f.envTexture = PN_NO_TEXTURE;
+    f.envWidth = 0;
+    f.envHeight = 0;
     f.envIntensity = 1.0f;
     return f;
+}
+
+void setEnvironmentUniforms(shader::FrameUniforms& frame, const Environment& env, std::uint32_t width,
+                            std::uint32_t height) {
+    frame.envWidth = width;
+    frame.envHeight = height;
+    frame.envIntensity = env.intensity;
+    frame.envRotation = env.rotationDegrees * 3.14159265358979f / 180.0f;
 }
 
 }  // namespace penumbra

@@ -8,6 +8,7 @@
 #include "bvh/stats.h"
 #include "gpu/buffer.h"
 #include "gpu/commands.h"
+#include "render/env_table.h"
 #include "scene/scene.h"
 #include "shared/types.h"
 
@@ -23,8 +24,10 @@ struct SceneArrays {
     std::vector<shader::TextureInfo> textures;
     std::vector<std::uint32_t> texels;  // RGBA8, one texel per word
     std::vector<shader::PunctualLight> punctual;
+    EnvTable env;  // empty without an environment map
     bvh::BvhStats stats{};
     double buildMilliseconds = 0;
+    double envBuildMilliseconds = 0;
 };
 
 SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options = {});
@@ -33,8 +36,8 @@ class GpuScene {
 public:
     GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& arrays);
 
-    gpu::Buffer nodes, triVerts, triAttribs, materials, lights, textures, texels, punctual;
-    std::uint32_t nodeCount = 0, triCount = 0, lightCount = 0, punctualCount = 0;
+    gpu::Buffer nodes, triVerts, triAttribs, materials, lights, textures, texels, punctual, envTable, envTexels;
+    std::uint32_t nodeCount = 0, triCount = 0, lightCount = 0, punctualCount = 0, envWidth = 0, envHeight = 0;
 
     std::size_t deviceBytes() const;
 };

@@ -15,6 +15,7 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
     shader::FrameUniforms frame = makeFrameUniforms(scene.camera, scene.background, settings_, gpuScene_->lightCount,
                                                     gpuScene_->triCount, gpuScene_->nodeCount);
     frame.punctualCount = gpuScene_->punctualCount;
+    setEnvironmentUniforms(frame, scene.environment, gpuScene_->envWidth, gpuScene_->envHeight);
     frameUniforms_ = gpu::Buffer(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryKind::HostVisible);
     std::memcpy(frameUniforms_.mapped(), &frame, sizeof(frame));
 

@@ -45,8 +45,8 @@ void expectMembers(const Offsets& spv, const std::string& name, const std::vecto
 
 TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
     using namespace shader;
-    int structsChecked = 0;
-    for (const char* shaderName : {"trace", "raybench", "test_ray_query"}) {
+    int structsChecked = 0, envStructsChecked = 0;
+    for (const char* shaderName : {"trace", "raybench", "test_ray_query", "test_env_sample"}) {
         Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
         expectMembers(spv, "BvhNode", {0, offsetof(BvhNode, firstOrRight), offsetof(BvhNode, boundsMax), offsetof(BvhNode, triCount)});
         expectMembers(spv, "TriVerts", {0, offsetof(TriVerts, flags), offsetof(TriVerts, e1), 28, offsetof(TriVerts, e2), 44});
@@ -67,23 +67,27 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, background), offsetof(FrameUniforms, punctualCount),
                        offsetof(FrameUniforms, lensRadius), offsetof(FrameUniforms, focusDistance),
                        offsetof(FrameUniforms, sphereCount), offsetof(FrameUniforms, sphereLightCount),
-                       offsetof(FrameUniforms, envTexture), offsetof(FrameUniforms, envIntensity),
-                       offsetof(FrameUniforms, envRotation), offsetof(FrameUniforms, envAliasCount),
+                       offsetof(FrameUniforms, envWidth), offsetof(FrameUniforms, envIntensity),
+                       offsetof(FrameUniforms, envRotation), offsetof(FrameUniforms, envHeight),
                        offsetof(FrameUniforms, misMode), offsetof(FrameUniforms, debugMode),
                        offsetof(FrameUniforms, pad0), offsetof(FrameUniforms, pad1)});
         expectMembers(spv, "PunctualLight", {0, offsetof(PunctualLight, type), offsetof(PunctualLight, intensity),
                                              offsetof(PunctualLight, range), offsetof(PunctualLight, direction),
                                              offsetof(PunctualLight, cosOuter), offsetof(PunctualLight, cosInner),
-                                             offsetof(PunctualLight, selectPmf)});
+                                             offsetof(PunctualLight, selectPmf), offsetof(PunctualLight, coneOneMinusCos),
+                                             offsetof(PunctualLight, pad1)});
+        expectMembers(spv, "EnvAlias", {0, offsetof(EnvAlias, alias), offsetof(EnvAlias, pdf), offsetof(EnvAlias, pad)});
         expectMembers(spv, "PassPush", {0, 4, 8, offsetof(PassPush, countRays)});
         expectMembers(spv, "RayCounters", {0, 4, offsetof(RayCounters, invalidSamples), 12});
         expectMembers(spv, "RayDesc", {0, offsetof(RayDesc, tMax), offsetof(RayDesc, direction), 28});
         expectMembers(spv, "HitRecord", {0, offsetof(HitRecord, triangle), 8, offsetof(HitRecord, v)});
         expectMembers(spv, "SurfacePoint", {0, offsetof(SurfacePoint, valid), offsetof(SurfacePoint, normal), 28});
         for (const char* s : {"BvhNode", "TriVerts", "FrameUniforms", "Material"}) structsChecked += int(spv.count(s));
+        envStructsChecked += int(spv.count("EnvAlias"));
     }
     // The reflection must actually have found the structs, or this test proves nothing.
     EXPECT_GE(structsChecked, 8);
+    EXPECT_GE(envStructsChecked, 2);  // the tracer and the environment test kernel
 }
 
 }  // namespace
