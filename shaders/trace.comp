@@ -44,7 +44,7 @@ vec3 sampleDirectSun(Surface s, vec3 albedo, PunctualLight l, float pickPmf, ino
 
 // Direct light from the environment (map or constant background), MIS-weighted against the BSDF.
 vec3 sampleDirectEnvironment(Surface s, vec3 albedo, inout uint rng) {
-    EnvSample es = sampleEnvironment(rng);
+    EnvSample es = sampleEnvironment(s.shadingNormal, rng);
     float cosSurface = dot(s.shadingNormal, es.direction);
     if (cosSurface <= 0.0 || dot(s.geometricNormal, es.direction) <= 0.0 || !(es.pdf > 0.0)) return vec3(0.0);
     float weight = distantLightWeight(es.pdf, lambertPdf(s.shadingNormal, es.direction));
@@ -102,11 +102,12 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
     vec3 result = vec3(0.0);
     vec3 throughput = vec3(1.0);
     float bsdfPdf = 0.0;  // solid-angle pdf of the direction that led here (0: camera ray)
+    vec3 previousNormal = vec3(0.0);  // shading normal where that direction was sampled
     for (uint depth = 0u;; ++depth) {
         ++closestRays;
         Hit hit = traceClosest(origin, direction, PN_INFINITY);
         if (hit.triangle == PN_NO_HIT) {
-            result += throughput * escapedRadiance(origin, direction, bsdfPdf);
+            result += throughput * escapedRadiance(origin, previousNormal, direction, bsdfPdf);
             break;
         }
         Surface s = surfaceAt(hit, origin, direction);
@@ -142,6 +143,7 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
         }
         origin = offsetRayOrigin(s.position, s.geometricNormal);
         direction = wi;
+        previousNormal = s.shadingNormal;
     }
     return result;
 }

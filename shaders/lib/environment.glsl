@@ -55,23 +55,23 @@ vec3 environmentRadiance(vec3 direction) {
     return envTexels[envTexelIndex(direction)].rgb * frame.envIntensity;
 }
 
-// Solid-angle pdf with which sampleEnvironment returns `direction`.
-float environmentPdf(vec3 direction) {
-    if (frame.envWidth == 0u) return 0.25 * PN_INV_PI;
+// Solid-angle pdf with which sampleEnvironment(n, ...) returns `direction`.
+float environmentPdf(vec3 direction, vec3 n) {
+    if (frame.envWidth == 0u) return max(dot(n, direction), 0.0) * PN_INV_PI;
     return envTable[envTexelIndex(direction)].pdf;
 }
 
-EnvSample sampleEnvironment(inout uint rng) {
+// A direction toward the environment as seen from a surface of shading normal n (the map's
+// sampling ignores n).
+EnvSample sampleEnvironment(vec3 n, inout uint rng) {
     EnvSample es;
     if (frame.envWidth == 0u) {
-        // The constant background: uniform over the sphere (it does not depend on the surface).
-        vec2 u = rngNext2(rng);
-        float z = 1.0 - 2.0 * u.x;
-        float r = sqrt(max(0.0, 1.0 - z * z));
-        float phi = 2.0 * PN_PI * u.y;
-        es.direction = vec3(r * cos(phi), r * sin(phi), z);
+        // The constant background: cosine-weighted around n, the distribution of its
+        // contribution to any diffuse surface (for a Lambertian BSDF, MIS then gives every
+        // unoccluded sample the exact answer).
+        es.direction = sampleCosineHemisphere(n, rngNext2(rng));
         es.radiance = frame.background * frame.envIntensity;
-        es.pdf = 0.25 * PN_INV_PI;
+        es.pdf = max(dot(n, es.direction), 0.0) * PN_INV_PI;
         return es;
     }
     uint count = frame.envWidth * frame.envHeight;
@@ -107,14 +107,14 @@ float distantBsdfWeight(float bsdfPdf, float lightPdf) {
     return powerHeuristic(bsdfPdf, lightPdf);
 }
 
-// Light carried by a ray that left the scene from `from` along `direction`: the environment and
-// any sun disk it points into. bsdfPdf is the solid-angle pdf of the BSDF sample that made the
-// ray (0: a camera ray, which no light sampling competes with).
-vec3 escapedRadiance(vec3 from, vec3 direction, float bsdfPdf) {
+// Light carried by a ray that left the scene from `from` (shading normal fromNormal) along
+// `direction`: the environment and any sun disk it points into. bsdfPdf is the solid-angle pdf of
+// the BSDF sample that made the ray (0: a camera ray, which no light sampling competes with).
+vec3 escapedRadiance(vec3 from, vec3 fromNormal, vec3 direction, float bsdfPdf) {
     vec3 L = vec3(0.0);
     if (frame.envIntensity > 0.0) {
         float weight = 1.0;
-        if (bsdfPdf > 0.0) weight = distantBsdfWeight(bsdfPdf, environmentIsLight() ? environmentPdf(direction) : 0.0);
+        if (bsdfPdf > 0.0) weight = distantBsdfWeight(bsdfPdf, environmentIsLight() ? environmentPdf(direction, fromNormal) : 0.0);
         L += environmentRadiance(direction) * weight;
     }
     for (uint i = 0u; i < frame.punctualCount; ++i) {

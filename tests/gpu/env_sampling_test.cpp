@@ -137,17 +137,28 @@ TEST_F(GpuTest, EnvironmentPdfIntegratesToOneAndLookupMatchesTheCpu) {
     }
 }
 
-TEST_F(GpuTest, ConstantBackgroundPdfIsUniformOverTheSphere) {
+// The constant background is sampled cosine-weighted around the surface normal (the kernel's
+// fixed normal): cos^2 theta is then uniform in [0, 1], and phi uniform.
+TEST_F(GpuTest, ConstantBackgroundIsSampledCosineWeighted) {
     Scene scene;
     scene.name = "bg";
     scene.background = Vec3{0.5f, 1.0f, 2.0f};
-    std::vector<Vec4> out = runEnvKernel(*ctx, scene, 0, 20000);
-    std::vector<double> observed(8, 0.0), expected(8, 20000.0 / 8);
-    for (std::uint32_t s = 0; s < 20000; ++s) {
-        EXPECT_NEAR(out[2 * s].w, 1.0 / (4 * kPi), 1e-6);
-        EXPECT_NEAR(out[2 * s + 1].z, 1.0f, 1e-6f);  // green radiance
-        const int octant = (out[2 * s].x > 0) + 2 * (out[2 * s].y > 0) + 4 * (out[2 * s].z > 0);
-        observed[octant] += 1;
+    const std::uint32_t n = 20000;
+    std::vector<Vec4> out = runEnvKernel(*ctx, scene, 0, n);
+    const Vec3 normal = normalize(Vec3{0.3f, 0.8f, -0.52f});
+    const Vec3 t = normalize(cross(normal, Vec3{1, 0, 0})), b = cross(normal, t);
+    const int rings = 8, sectors = 8;
+    std::vector<double> observed(rings * sectors, 0.0), expected(observed.size(), double(n) / (rings * sectors));
+    for (std::uint32_t s = 0; s < n; ++s) {
+        const Vec3 d{out[2 * s].x, out[2 * s].y, out[2 * s].z};
+        const double cosTheta = dot(d, normal);
+        ASSERT_GE(cosTheta, -1e-6);
+        EXPECT_NEAR(out[2 * s].w, cosTheta / kPi, 1e-5);
+        EXPECT_NEAR(out[2 * s + 1].x, out[2 * s].w, 1e-5);  // environmentPdf agrees
+        EXPECT_NEAR(out[2 * s + 1].z, 1.0f, 1e-6f);          // green radiance
+        const int ring = std::min(int(cosTheta * cosTheta * rings), rings - 1);
+        const double phi = std::atan2(double(dot(d, b)), double(dot(d, t))) + kPi;
+        observed[std::size_t(ring) * sectors + std::min(int(phi / (2 * kPi) * sectors), sectors - 1)] += 1;
     }
     EXPECT_GT(chiSquarePValue(observed, expected), 1e-3);
 }
