@@ -36,10 +36,10 @@ void printScene(const std::string& name, const std::string& map, const Environme
                 s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.buildMilliseconds);
     std::printf("  %zu textures, %zu punctual lights\n", scene.textures.size(), scene.lights.size());
     if (scene.environment.map)
-        std::printf("  environment %s: %dx%d, intensity %g, rotation %g deg, sampling table built in %.2f ms\n",
+        std::printf("  environment %s: %dx%d, intensity %g, rotation %g deg, sampling table built in %.2f ms%s\n",
                     scene.environment.map->name.c_str(), scene.environment.map->width, scene.environment.map->height,
                     double(scene.environment.intensity), double(scene.environment.rotationDegrees),
-                    arrays.envBuildMilliseconds);
+                    arrays.envBuildMilliseconds, scene.environment.sun ? ", plus a sun disk" : "");
     std::printf("  cpu memory (scene model): %zu bytes (%.1f per triangle)\n", cpuBytes,
                 tris ? double(cpuBytes) / double(tris) : 0.0);
     std::printf("  gpu memory: %zu bytes (%.1f per triangle)\n", gpuBytes, tris ? double(gpuBytes) / double(tris) : 0.0);
