@@ -1,8 +1,8 @@
 #version 460
 // The path tracer: one thread per pixel, samplesPerPass paths each, added into the accumulation
 // buffer (rgb = sum of radiance, a = sum of squared luminance, for variance estimates).
-// Unidirectional path tracing with next event estimation to emissive triangles, emissive spheres
-// and punctual lights, combined with BSDF sampling per frame.misMode (lib/mis.glsl); every surface is shaded
+// Unidirectional path tracing with next event estimation to emissive triangles, emissive spheres,
+// punctual lights, sun disks and the environment, combined with BSDF sampling per frame.misMode (lib/mis.glsl); every surface is shaded
 // by the one principled BSDF (lib/bsdf/bsdf.glsl) in its local shading frame.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
@@ -21,6 +21,7 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 #include "lib/surface.glsl"
 #include "lib/lights.glsl"
 #include "lib/sphere_lights.glsl"
+#include "lib/environment.glsl"
 #include "lib/material.glsl"
 #include "lib/shading_frame.glsl"
 #include "lib/mis.glsl"
@@ -68,10 +69,25 @@ vec3 shadeLightSample(ShadingPoint sp, vec3 wi, float dist, vec3 radiance, float
     return f * abs(wiLocal.z) * radiance * transmittance * (weight / lightPdf);
 }
 
-// Direct light from a punctual light (a delta light: no MIS, BSDF sampling never hits it).
+// Direct light from a sun disk (a directional light with an angular radius), MIS-weighted
+// against the BSDF: escaped rays can hit it too (escapedRadiance).
+vec3 sampleDirectSun(ShadingPoint sp, PunctualLight l, float pickPmf, inout uint rng) {
+    vec3 wi = sampleSunDisk(l, rngNext2(rng));
+    return shadeLightSample(sp, wi, PN_INFINITY, sunRadiance(l), pickPmf * sunConePdf(l), false);
+}
+
+// Direct light from the environment (map or constant background), MIS-weighted against the BSDF.
+vec3 sampleDirectEnvironment(ShadingPoint sp, inout uint rng) {
+    EnvSample es = sampleEnvironment(sp.frame.n, rng);
+    return shadeLightSample(sp, es.direction, PN_INFINITY, es.radiance, es.pdf, false);
+}
+
+// Direct light from a punctual light (a delta light: no MIS, BSDF sampling never hits it), or
+// from a sun disk, which is not a delta light.
 vec3 sampleDirectPunctual(ShadingPoint sp, inout uint rng) {
     float pmf;
     uint index = pickPunctual(sp.surface.position, rngNext(rng), pmf);
+    if (isSunDisk(punctualLights[index])) return sampleDirectSun(sp, punctualLights[index], pmf, rng);
     vec3 wi;
     float dist;
     vec3 incident = punctualIncident(punctualLights[index], sp.surface.position, wi, dist);
@@ -108,12 +124,14 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
     float bsdfPdfPrev = 0.0;  // solid-angle pdf of the direction that led here
     bool afterDelta = true;   // the camera ray, or a delta lobe: light sampling could not see this
     vec3 medium = vec3(0.0);  // absorption coefficient of the medium the ray travels in
+    vec3 previousNormal = vec3(0.0);  // shading normal where the current direction was sampled
     for (uint depth = 0u;; ++depth) {
         ++closestRays;
         Hit hit = traceClosest(origin, direction, PN_INFINITY);
         if (hit.triangle == PN_NO_HIT) {
             // Escaping inside an absorbing medium (an open mesh) leaves nothing.
-            if (medium == vec3(0.0)) result += throughput * frame.background;
+            if (medium == vec3(0.0))
+                result += throughput * escapedRadiance(origin, previousNormal, direction, afterDelta ? 0.0 : bsdfPdfPrev);
             break;
         }
         throughput *= exp(-medium * hit.t);
@@ -139,6 +157,7 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
         if (frame.lightCount > 0u && misSamplesLights()) result += throughput * sampleDirectTriangle(sp, rng);
         if (frame.punctualCount > 0u) result += throughput * sampleDirectPunctual(sp, rng);
         if (frame.sphereLightCount > 0u) result += throughput * sampleDirectSphere(sp, rng);
+        if (environmentIsLight() && misSamplesLights()) result += throughput * sampleDirectEnvironment(sp, rng);
 
         vec3 u = vec3(rngNext2(rng), rngNext(rng));
         BsdfSample bs = bsdfSample(sp.bsdf, sp.wo, u);
@@ -160,6 +179,7 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
         }
         origin = leavingOrigin(s, wi);
         direction = wi;
+        previousNormal = sp.frame.n;
     }
     return result;
 }

@@ -37,8 +37,9 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_PUNCTUAL 12  // PunctualLight per point, spot or directional light
 #define PN_BINDING_SPHERES 13        // reserved; spheres live in the triangle arrays (PN_TRI_SPHERE)
 #define PN_BINDING_SPHERE_LIGHTS 14  // SphereLight per emissive sphere or spot light with a radius
-#define PN_BINDING_ENV_TABLE 15      // environment importance-sampling table
+#define PN_BINDING_ENV_TABLE 15      // EnvAlias per environment texel (importance sampling)
 // Bindings 16-23 are for the viewer's passes (G-buffer, history, denoiser, debug views).
+#define PN_BINDING_ENV_TEXELS 24     // environment radiance, one vec4 (rgb, unused) per texel
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic
@@ -160,6 +161,15 @@ PN_STRUCT(TextureInfo) {
     uint flags;  // PN_TEXTURE_*
 };
 
+// One texel of the environment's alias table, 16 bytes. The table has one entry per texel of the
+// equirectangular map (row-major, top row = +y), so entry i is also texel i.
+PN_STRUCT(EnvAlias) {
+    float threshold;  // keep texel i when u < threshold, else take the alias
+    uint alias;       // index of the alias texel
+    float pdf;        // solid-angle pdf of directions inside texel i (its pmf / its solid angle)
+    float pad;
+};
+
 // One entry of the alias table over emissive triangles, 16 bytes (Vose's method).
 PN_STRUCT(LightAlias) {
     uint triangle;    // triangle index (in BVH leaf order)
@@ -178,7 +188,8 @@ PN_STRUCT(PunctualLight) {
     float cosOuter;       // spot: cosine of the outer cone angle
     float cosInner;       // spot: cosine of the inner cone angle
     float selectPmf;      // share of the lights' total power (used to pick among many lights)
-    float pad0;
+    float coneOneMinusCos;  // directional: 1 - cos(angular radius); 0 is a delta light (a sun
+                            // disk of radiance intensity / (pi sin^2 radius) otherwise)
     float pad1;
 };
 
@@ -224,11 +235,12 @@ PN_STRUCT(FrameUniforms) {
     float focusDistance;   // metres along cameraForward
     uint sphereCount;      // entries in the sphere buffer
     uint sphereLightCount; // entries in the emissive-sphere table
-    // Environment light (PN_NO_TEXTURE: the constant background only).
-    uint envTexture;       // index into the texture table of an equirectangular map
-    float envIntensity;    // multiplies the map
-    float envRotation;     // radians about +y
-    uint envAliasCount;    // entries in the environment's importance table
+    // Environment light: an equirectangular map (envWidth x envHeight texels at
+    // PN_BINDING_ENV_TEXELS), or the constant background when envWidth is 0.
+    uint envWidth;         // 0: no map
+    float envIntensity;    // multiplies the map or the background
+    float envRotation;     // radians about +y (world direction = rotation * map direction)
+    uint envHeight;
     uint misMode;          // PN_MIS_*: which estimators the integrator combines (tests compare them)
     uint debugMode;        // viewer debug views; 0: the image
     uint pad0;
@@ -311,6 +323,7 @@ static_assert(sizeof(Material) == 96 && offsetof(Material, flags) == 12 &&
               offsetof(Material, emissionTexture) == 88 && offsetof(Material, emissionWrap) == 92);
 static_assert(sizeof(TextureInfo) == 16 && offsetof(TextureInfo, flags) == 12);
 static_assert(sizeof(LightAlias) == 16 && offsetof(LightAlias, pmf) == 12);
+static_assert(sizeof(EnvAlias) == 16 && offsetof(EnvAlias, alias) == 4 && offsetof(EnvAlias, pdf) == 8);
 static_assert(sizeof(FrameUniforms) == 160 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
               offsetof(FrameUniforms, cameraRight) == 16 && offsetof(FrameUniforms, aspect) == 28 &&
               offsetof(FrameUniforms, cameraUp) == 32 && offsetof(FrameUniforms, width) == 44 &&
@@ -318,11 +331,12 @@ static_assert(sizeof(FrameUniforms) == 160 && offsetof(FrameUniforms, tanHalfFov
               offsetof(FrameUniforms, maxBounces) == 64 && offsetof(FrameUniforms, samplesPerPass) == 92 &&
               offsetof(FrameUniforms, background) == 96 && offsetof(FrameUniforms, punctualCount) == 108 &&
               offsetof(FrameUniforms, lensRadius) == 112 && offsetof(FrameUniforms, sphereLightCount) == 124 &&
-              offsetof(FrameUniforms, envTexture) == 128 && offsetof(FrameUniforms, envAliasCount) == 140 &&
+              offsetof(FrameUniforms, envWidth) == 128 && offsetof(FrameUniforms, envHeight) == 140 &&
               offsetof(FrameUniforms, misMode) == 144 && offsetof(FrameUniforms, debugMode) == 148);
 static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, type) == 12 &&
               offsetof(PunctualLight, range) == 28 && offsetof(PunctualLight, direction) == 32 &&
-              offsetof(PunctualLight, cosOuter) == 44 && offsetof(PunctualLight, selectPmf) == 52);
+              offsetof(PunctualLight, cosOuter) == 44 && offsetof(PunctualLight, selectPmf) == 52 &&
+              offsetof(PunctualLight, coneOneMinusCos) == 56);
 static_assert(sizeof(SphereLight) == 64 && offsetof(SphereLight, radius) == 12 &&
               offsetof(SphereLight, radiance) == 16 && offsetof(SphereLight, selectPmf) == 28 &&
               offsetof(SphereLight, spotDirection) == 32 && offsetof(SphereLight, cosOuter) == 44 &&

@@ -17,6 +17,7 @@ struct BenchArgs {
     std::uint32_t width = 1920, height = 1080, bounces = 4;
     int repeats = 20;
     bool json = false;
+    EnvironmentSpec env;
 };
 
 double mrays(std::uint64_t rays, double ms) { return ms > 0 ? double(rays) / (ms * 1e3) : 0.0; }
@@ -30,7 +31,7 @@ void runBench(const BenchArgs& args) {
     settings.samplesPerPixel = 1;
     settings.accel = parseAccel(args.accel);
     validateSettings(settings);
-    Scene scene = loadScene(args.scene, args.map, {});
+    Scene scene = loadScene(args.scene, args.map, {}, nullptr, args.env);
     auto ctx = openDevice(args.device);
     Renderer renderer(*ctx, scene, settings);
     RayBenchResult r = runRayBench(*ctx, renderer, args.repeats);
@@ -54,6 +55,8 @@ void runBench(const BenchArgs& args) {
                 settings.width, settings.height, accelName(settings.accel), r.repeats);
     std::printf("  bvh build        %10.3f ms  (%zu triangles, %zu nodes, SAH cost %.2f)\n", a.buildMilliseconds,
                 a.triVerts.size(), a.nodes.size(), a.stats.sahCost);
+    if (!a.env.alias.empty())
+        std::printf("  env table build  %10.3f ms  (%ux%u texels)\n", a.envBuildMilliseconds, a.env.width, a.env.height);
     std::printf("  primary rays     %10.1f Mrays/s  (%.3f ms)\n", mrays(r.primaryRays, r.primaryMs), r.primaryMs);
     std::printf("  shadow rays      %10.1f Mrays/s  (%.3f ms)\n", mrays(r.shadowRays, r.shadowMs), r.shadowMs);
     std::printf("  diffuse bounces  %10.1f Mrays/s  (%.3f ms)\n", mrays(r.diffuseRays, r.diffuseMs), r.diffuseMs);
@@ -75,6 +78,7 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--accel", args->accel, "bvh or brute");
     cmd->add_flag("--json", args->json, "print one JSON object instead of text");
     addDeviceOption(*cmd, args->device);
+    addEnvironmentOptions(*cmd, args->env);
     cmd->callback([args, &action] { action = [args] { runBench(*args); }; });
 }
 

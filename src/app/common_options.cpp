@@ -26,6 +26,13 @@ void addCameraOptions(CLI::App& cmd, CameraOverrides& o) {
     cmd.add_option("--torch", o.torch, "intensity in candela of a light carried at the camera (0: off; on for WAD levels)");
 }
 
+void addEnvironmentOptions(CLI::App& cmd, EnvironmentSpec& env) {
+    cmd.add_option("--env", env.file,
+                   "environment light: an equirectangular .hdr or .exr map, or 'sky' for a procedural sky and sun");
+    cmd.add_option("--env-intensity", env.intensity, "multiplies the environment (map, background, sky and its sun)");
+    cmd.add_option("--env-rotation", env.rotationDegrees, "turns the environment about +y, in degrees");
+}
+
 Vec3 parseVec3(const std::string& text, const std::string& flag) {
     Vec3 v;
     std::istringstream in(text);
@@ -37,7 +44,7 @@ Vec3 parseVec3(const std::string& text, const std::string& flag) {
 }
 
 Scene loadScene(const std::string& nameOrPath, const std::string& map, const CameraOverrides& o,
-                SceneFileSettings* fileSettings) {
+                SceneFileSettings* fileSettings, const EnvironmentSpec& env) {
     const std::filesystem::path path(nameOrPath);
     Scene scene = (path.extension() == ".json" && !isPreset(nameOrPath))
                       ? loadSceneJson(path, fileSettings)
@@ -58,6 +65,7 @@ Scene loadScene(const std::string& nameOrPath, const std::string& map, const Cam
         if (!(depth > 0)) throw UsageError("--focus-point must lie in front of the camera");
         scene.camera.focusDistance = depth;
     }
+    applyEnvironment(scene, env);
     if (o.torch) {
         if (!(*o.torch >= 0 && *o.torch <= 1e9f)) throw UsageError("--torch must be between 0 and 1e9 candela");
         scene.torch.enabled = *o.torch > 0;

@@ -10,6 +10,7 @@
 
 #include "gpu/context.h"
 #include "render/settings.h"
+#include "scene/io/env_spec.h"
 #include "scene/io/scene_json.h"
 #include "scene/scene.h"
 
@@ -25,15 +26,17 @@ struct CameraOverrides {
 
 void addDeviceOption(CLI::App& cmd, std::string& device);
 void addCameraOptions(CLI::App& cmd, CameraOverrides& overrides);
+// --env FILE|sky, --env-intensity X, --env-rotation DEG.
+void addEnvironmentOptions(CLI::App& cmd, EnvironmentSpec& env);
 
 // Parses "x,y,z"; UsageError naming the flag on anything else.
 Vec3 parseVec3(const std::string& text, const std::string& flag);
 
 // A built-in scene by name or a scene file (`map` picks a WAD level), with the camera overrides
-// applied and checked, and the torch attached. A .json scene file's render settings go to
-// *fileSettings when given.
+// applied and checked, the environment options applied, and the torch attached. A .json scene
+// file's render settings go to *fileSettings when given.
 Scene loadScene(const std::string& nameOrPath, const std::string& map, const CameraOverrides& overrides,
-                SceneFileSettings* fileSettings = nullptr);
+                SceneFileSettings* fileSettings = nullptr, const EnvironmentSpec& env = {});
 
 // The Vulkan context, or an Error saying why there is none and how to get one.
 std::unique_ptr<gpu::Context> openDevice(const std::string& selector);

@@ -15,11 +15,12 @@ struct InfoArgs {
     std::string scene;
     std::string map;
     std::string device;
+    EnvironmentSpec env;
 };
 
-void printScene(const std::string& name, const std::string& map) {
+void printScene(const std::string& name, const std::string& map, const EnvironmentSpec& env) {
     const auto start = std::chrono::steady_clock::now();
-    Scene scene = loadScene(name, map, {});
+    Scene scene = loadScene(name, map, {}, nullptr, env);
     const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const std::size_t cpuBytes = sceneBytes(scene);
     SceneArrays arrays = buildSceneArrays(scene);
@@ -27,13 +28,19 @@ void printScene(const std::string& name, const std::string& map) {
     const std::size_t tris = arrays.triVerts.size();
     const std::size_t gpuBytes = arrays.nodes.size() * sizeof(shader::BvhNode) + tris * (sizeof(shader::TriVerts) + sizeof(shader::TriAttribs)) +
                                  arrays.materials.size() * sizeof(shader::Material) + arrays.lights.size() * sizeof(shader::LightAlias) +
-                                 arrays.textures.size() * sizeof(shader::TextureInfo) + arrays.texels.size() * 4;
+                                 arrays.textures.size() * sizeof(shader::TextureInfo) + arrays.texels.size() * 4 +
+                                 arrays.env.alias.size() * (sizeof(shader::EnvAlias) + sizeof(Vec4));
     std::printf("scene %s: %zu triangles, %zu materials, %zu emissive triangles, loaded in %.0f ms\n",
                 scene.name.c_str(), tris, scene.materials.size(), arrays.lights.size(), loadMs);
     std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, built in %.2f ms\n", s.nodes,
                 s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.buildMilliseconds);
     std::printf("  %zu textures, %zu punctual lights, %u spheres (in the triangle count), %zu sphere lights\n",
                 scene.textures.size(), arrays.punctual.size(), arrays.sphereCount, arrays.sphereLights.size());
+    if (scene.environment.map)
+        std::printf("  environment %s: %dx%d, intensity %g, rotation %g deg, sampling table built in %.2f ms%s\n",
+                    scene.environment.map->name.c_str(), scene.environment.map->width, scene.environment.map->height,
+                    double(scene.environment.intensity), double(scene.environment.rotationDegrees),
+                    arrays.envBuildMilliseconds, scene.environment.sun ? ", plus a sun disk" : "");
     std::printf("  cpu memory (scene model): %zu bytes (%.1f per triangle)\n", cpuBytes,
                 tris ? double(cpuBytes) / double(tris) : 0.0);
     std::printf("  gpu memory: %zu bytes (%.1f per triangle)\n", gpuBytes, tris ? double(gpuBytes) / double(tris) : 0.0);
@@ -57,7 +64,7 @@ void runInfo(const InfoArgs& args) {
                     l.maxComputeWorkGroupInvocations, l.maxStorageBufferRange,
                     ctx->timestampsSupported() ? "yes" : "no", double(l.timestampPeriod));
     }
-    if (!args.scene.empty()) printScene(args.scene, args.map);
+    if (!args.scene.empty()) printScene(args.scene, args.map, args.env);
 }
 
 }  // namespace
@@ -68,6 +75,7 @@ void registerInfo(CLI::App& app, Action& action) {
     cmd->add_option("scene", args->scene, "built-in scene or scene file");
     cmd->add_option("--map", args->map, "level of a .wad file");
     addDeviceOption(*cmd, args->device);
+    addEnvironmentOptions(*cmd, args->env);
     cmd->callback([args, &action] { action = [args] { runInfo(*args); }; });
 }
 

@@ -26,6 +26,7 @@ struct RenderArgs {
     float exposure = 0;
     bool quiet = false;
     CameraOverrides camera;
+    EnvironmentSpec env;
     RenderSettings settings;
 };
 
@@ -35,7 +36,7 @@ void runRender(const RenderArgs& args, const CLI::App& cmd) {
     settings.mis = parseMisMode(args.mis);
     validateSettings(settings);
     SceneFileSettings fileSettings;
-    Scene scene = loadScene(args.scene, args.map, args.camera, &fileSettings);
+    Scene scene = loadScene(args.scene, args.map, args.camera, &fileSettings, args.env);
     // A scene file's render settings apply unless the command line gave the same flag.
     auto fromFile = [&](const char* flag, const auto& value, auto& target) {
         if (value && cmd.count(flag) == 0) target = *value;
@@ -104,6 +105,7 @@ void registerRender(CLI::App& app, Action& action) {
     cmd->add_flag("-q,--quiet", args->quiet, "no progress bar or summary");
     addDeviceOption(*cmd, args->device);
     addCameraOptions(*cmd, args->camera);
+    addEnvironmentOptions(*cmd, args->env);
     cmd->callback([args, cmd, &action] { action = [args, cmd] { runRender(*args, *cmd); }; });
 }
 

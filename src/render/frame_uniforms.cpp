@@ -34,12 +34,21 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     // along cameraForward (0 radius: a pinhole, and the shader draws no lens sample).
     f.lensRadius = camera.apertureRadius;
     f.focusDistance = effectiveFocusDistance(camera);
-    f.envTexture = PN_NO_TEXTURE;
+    f.envWidth = 0;
+    f.envHeight = 0;
     f.envIntensity = 1.0f;
     f.misMode = settings.mis == MisMode::LightOnly  ? PN_MIS_LIGHT_ONLY
                 : settings.mis == MisMode::BsdfOnly ? PN_MIS_BSDF_ONLY
                                                     : PN_MIS_BOTH;
     return f;
+}
+
+void setEnvironmentUniforms(shader::FrameUniforms& frame, const Environment& env, std::uint32_t width,
+                            std::uint32_t height) {
+    frame.envWidth = width;
+    frame.envHeight = height;
+    frame.envIntensity = env.intensity;
+    frame.envRotation = env.rotationDegrees * 3.14159265358979f / 180.0f;
 }
 
 }  // namespace penumbra

@@ -12,4 +12,8 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
                                         std::uint32_t lightCount, std::uint32_t triCount,
                                         std::uint32_t nodeCount);
 
+// The environment's fields: map size (0: the constant background), intensity, rotation.
+void setEnvironmentUniforms(shader::FrameUniforms& frame, const Environment& env, std::uint32_t width,
+                            std::uint32_t height);
+
 }  // namespace penumbra

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "render/light_table.h"
 #include "render/sphere_lights.h"
+#include "scene/environment.h"
 
 namespace penumbra {
 
@@ -64,7 +65,9 @@ void addPunctualLights(const Scene& scene, std::vector<shader::PunctualLight>& o
     const Aabb box = scene.bounds();
     const double sceneRadius = box.empty() ? 1.0 : 0.5 * length(box.extent());
     std::vector<double> power;
-    for (const Light& l : scene.lights) {
+    std::vector<Light> lights = scene.lights;
+    for (const Light& sun : distantLights(scene.environment)) lights.push_back(sun);
+    for (const Light& l : lights) {
         if (isSphereLight(l)) continue;  // in the sphere-light table instead
         shader::PunctualLight p{};
         p.position = l.position;
@@ -74,6 +77,9 @@ void addPunctualLights(const Scene& scene, std::vector<shader::PunctualLight>& o
         p.type = l.type == LightType::Point ? PN_LIGHT_POINT : (l.type == LightType::Spot ? PN_LIGHT_SPOT : PN_LIGHT_DIRECTIONAL);
         p.cosOuter = std::cos(l.outerConeRadians);
         p.cosInner = std::cos(l.innerConeRadians);
+        // 1 - cos, written so that a tiny radius (the sun's 0.0047 rad) keeps its precision.
+        const double halfSin = std::sin(0.5 * double(l.angularRadius));
+        if (l.type == LightType::Directional) p.coneOneMinusCos = float(2 * halfSin * halfSin);
         const double lum = luminance(p.intensity);
         // Point: 4 pi I. Spot: the cone's solid angle. Directional: irradiance over the scene's
         // cross-section.
@@ -173,6 +179,12 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
         out.texels.resize(first + texels);
         std::memcpy(out.texels.data() + first, t.rgba.data(), texels * 4);
     }
+    if (scene.environment.map) {
+        start = std::chrono::steady_clock::now();
+        out.env = buildEnvTable(*scene.environment.map);
+        out.envBuildMilliseconds =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    }
     for (const Material& m : materials) out.materials.push_back(toGpuMaterial(m));
     // Traversal checks alpha only where the flag says so, keeping the common path cheap.
     for (std::size_t i = 0; i < out.triVerts.size(); ++i)
@@ -191,16 +203,20 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       texels(gpu::uploadStorageBuffer<std::uint32_t>(ctx, commands, a.texels)),
       punctual(gpu::uploadStorageBuffer<shader::PunctualLight>(ctx, commands, a.punctual)),
       sphereLights(gpu::uploadStorageBuffer<shader::SphereLight>(ctx, commands, a.sphereLights)),
+      envTable(gpu::uploadStorageBuffer<shader::EnvAlias>(ctx, commands, a.env.alias)),
+      envTexels(gpu::uploadStorageBuffer<Vec4>(ctx, commands, a.env.radiance)),
       nodeCount(static_cast<std::uint32_t>(a.nodes.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
       lightCount(static_cast<std::uint32_t>(a.lights.size())),
       punctualCount(static_cast<std::uint32_t>(a.punctual.size())),
       sphereCount(a.sphereCount),
-      sphereLightCount(static_cast<std::uint32_t>(a.sphereLights.size())) {}
+      sphereLightCount(static_cast<std::uint32_t>(a.sphereLights.size())),
+      envWidth(a.env.width),
+      envHeight(a.env.height) {}
 
 std::size_t GpuScene::deviceBytes() const {
     return nodes.size() + triVerts.size() + triAttribs.size() + materials.size() + lights.size() +
-           textures.size() + texels.size() + punctual.size() + sphereLights.size();
+           textures.size() + texels.size() + punctual.size() + sphereLights.size() + envTable.size() + envTexels.size();
 }
 
 }  // namespace penumbra

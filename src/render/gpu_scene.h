@@ -8,6 +8,7 @@
 #include "bvh/stats.h"
 #include "gpu/buffer.h"
 #include "gpu/commands.h"
+#include "render/env_table.h"
 #include "scene/scene.h"
 #include "shared/types.h"
 
@@ -25,8 +26,10 @@ struct SceneArrays {
     std::vector<shader::PunctualLight> punctual;
     std::vector<shader::SphereLight> sphereLights;
     std::uint32_t sphereCount = 0;  // sphere slots among triVerts
+    EnvTable env;  // empty without an environment map
     bvh::BvhStats stats{};
     double buildMilliseconds = 0;
+    double envBuildMilliseconds = 0;
 };
 
 // Beer-Lambert coefficient per metre of a material's absorption colour and distance (0: clear).
@@ -38,8 +41,10 @@ class GpuScene {
 public:
     GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& arrays);
 
-    gpu::Buffer nodes, triVerts, triAttribs, materials, lights, textures, texels, punctual, sphereLights;
-    std::uint32_t nodeCount = 0, triCount = 0, lightCount = 0, punctualCount = 0, sphereCount = 0, sphereLightCount = 0;
+    gpu::Buffer nodes, triVerts, triAttribs, materials, lights, textures, texels, punctual, sphereLights, envTable,
+        envTexels;
+    std::uint32_t nodeCount = 0, triCount = 0, lightCount = 0, punctualCount = 0, sphereCount = 0, sphereLightCount = 0,
+                  envWidth = 0, envHeight = 0;
 
     std::size_t deviceBytes() const;
 };

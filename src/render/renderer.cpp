@@ -17,6 +17,7 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
     frame.punctualCount = gpuScene_->punctualCount;
     frame.sphereCount = gpuScene_->sphereCount;
     frame.sphereLightCount = gpuScene_->sphereLightCount;
+    setEnvironmentUniforms(frame, scene.environment, gpuScene_->envWidth, gpuScene_->envHeight);
     frameUniforms_ = gpu::Buffer(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryKind::HostVisible);
     std::memcpy(frameUniforms_.mapped(), &frame, sizeof(frame));
 

@@ -13,7 +13,8 @@ std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx,
         {PN_BINDING_TRI_ATTRIBS, storage}, {PN_BINDING_MATERIALS, storage},
         {PN_BINDING_LIGHTS, storage},    {PN_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
         {PN_BINDING_TEXTURES, storage},  {PN_BINDING_TEXELS, storage},
-        {PN_BINDING_PUNCTUAL, storage},  {PN_BINDING_SPHERE_LIGHTS, storage}};
+        {PN_BINDING_PUNCTUAL, storage},  {PN_BINDING_SPHERE_LIGHTS, storage}, {PN_BINDING_ENV_TABLE, storage},
+        {PN_BINDING_ENV_TEXELS, storage}};
     for (std::uint32_t b : extraStorageBindings) bindings.push_back({b, storage});
     auto pipeline = std::make_unique<gpu::ComputePipeline>(ctx, shader, bindings, sizeof(shader::PassPush));
     pipeline->bind(PN_BINDING_NODES, scene.nodes);
@@ -26,6 +27,8 @@ std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx,
     pipeline->bind(PN_BINDING_TEXELS, scene.texels);
     pipeline->bind(PN_BINDING_PUNCTUAL, scene.punctual);
     pipeline->bind(PN_BINDING_SPHERE_LIGHTS, scene.sphereLights);
+    pipeline->bind(PN_BINDING_ENV_TABLE, scene.envTable);
+    pipeline->bind(PN_BINDING_ENV_TEXELS, scene.envTexels);
     return pipeline;
 }
 

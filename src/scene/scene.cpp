@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "scene/environment.h"
 
 namespace penumbra {
 
@@ -69,6 +70,10 @@ void Scene::validate() const {
         if (s.material >= materials.size())
             throw Error(where + ": material " + std::to_string(s.material) + " does not exist");
     }
+    for (const Light& l : lights)
+        if (!(l.angularRadius >= 0 && l.angularRadius <= kMaxAngularRadius))
+            throw Error("light '" + l.name + "': angular radius must be within [0, 45] degrees");
+    validateEnvironment(environment);
 }
 
 void attachTorch(Scene& scene) {
@@ -91,6 +96,7 @@ std::size_t sceneBytes(const Scene& scene) {
         bytes += sizeof(Mesh) + m.positions.capacity() * sizeof(Vec3) + m.normals.capacity() * sizeof(Vec3) +
                  m.uvs.capacity() * sizeof(Vec2) + m.indices.capacity() * sizeof(std::uint32_t);
     for (const Texture& t : scene.textures) bytes += sizeof(Texture) + t.rgba.capacity();
+    if (scene.environment.map) bytes += scene.environment.map->radiance.capacity() * sizeof(Vec3);
     return bytes;
 }
 

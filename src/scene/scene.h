@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,30 @@ struct Light {
     float radius = 0.0f;       // > 0: a sphere light of this radius (soft shadows)
     float innerConeRadians = 0.0f;
     float outerConeRadians = 0.7853982f;
+    // Directional only: > 0 makes it a disk of this angular radius (the sun: 0.0047 rad), with
+    // soft shadows; 0 is a delta light. At most kMaxAngularRadius.
+    float angularRadius = 0.0f;
+};
+
+constexpr float kMaxAngularRadius = 0.7853982f;  // 45 degrees
+
+// Linear radiance over the sphere of directions, equirectangular: column u in [0, 1) is the
+// azimuth phi = 2 pi (u - 0.5) measured from -z toward +x, row v in [0, 1] the polar angle
+// theta = pi v from +y, top row first. Direction (sin theta sin phi, cos theta, -sin theta cos phi).
+struct EnvironmentMap {
+    std::string name;  // file name or "sky", for messages
+    int width = 0;
+    int height = 0;
+    std::vector<Vec3> radiance;  // width * height, row-major
+};
+
+// Light from infinitely far away: the map when there is one, else Scene::background, plus the
+// procedural sky's sun; all scaled by intensity and turned by rotation about +y.
+struct Environment {
+    std::optional<EnvironmentMap> map;
+    std::optional<Light> sun;  // directional, map-local direction (see distantLights)
+    float intensity = 1.0f;
+    float rotationDegrees = 0.0f;
 };
 
 // An indexed triangle mesh with one material. normals and uvs are either empty or one per
@@ -122,7 +147,8 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<Light> lights;
     Camera camera;
-    Vec3 background{0};  // radiance of rays that leave the scene
+    Vec3 background{0};  // radiance of rays that leave the scene (when environment has no map)
+    Environment environment;
     Torch torch;
 
     std::size_t triangleCount() const;

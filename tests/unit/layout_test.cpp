@@ -45,8 +45,9 @@ void expectMembers(const Offsets& spv, const std::string& name, const std::vecto
 
 TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
     using namespace shader;
-    int structsChecked = 0;
-    for (const char* shaderName : {"trace", "raybench", "test_ray_query", "test_sphere_light_sample", "test_bsdf_sample"}) {
+    int structsChecked = 0, envStructsChecked = 0;
+    for (const char* shaderName :
+         {"trace", "raybench", "test_ray_query", "test_sphere_light_sample", "test_bsdf_sample", "test_env_sample"}) {
         Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
         expectMembers(spv, "BvhNode", {0, offsetof(BvhNode, firstOrRight), offsetof(BvhNode, boundsMax), offsetof(BvhNode, triCount)});
         expectMembers(spv, "TriVerts", {0, offsetof(TriVerts, flags), offsetof(TriVerts, e1), 28, offsetof(TriVerts, e2), 44});
@@ -72,14 +73,16 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, background), offsetof(FrameUniforms, punctualCount),
                        offsetof(FrameUniforms, lensRadius), offsetof(FrameUniforms, focusDistance),
                        offsetof(FrameUniforms, sphereCount), offsetof(FrameUniforms, sphereLightCount),
-                       offsetof(FrameUniforms, envTexture), offsetof(FrameUniforms, envIntensity),
-                       offsetof(FrameUniforms, envRotation), offsetof(FrameUniforms, envAliasCount),
+                       offsetof(FrameUniforms, envWidth), offsetof(FrameUniforms, envIntensity),
+                       offsetof(FrameUniforms, envRotation), offsetof(FrameUniforms, envHeight),
                        offsetof(FrameUniforms, misMode), offsetof(FrameUniforms, debugMode),
                        offsetof(FrameUniforms, pad0), offsetof(FrameUniforms, pad1)});
         expectMembers(spv, "PunctualLight", {0, offsetof(PunctualLight, type), offsetof(PunctualLight, intensity),
                                              offsetof(PunctualLight, range), offsetof(PunctualLight, direction),
                                              offsetof(PunctualLight, cosOuter), offsetof(PunctualLight, cosInner),
-                                             offsetof(PunctualLight, selectPmf)});
+                                             offsetof(PunctualLight, selectPmf), offsetof(PunctualLight, coneOneMinusCos),
+                                             offsetof(PunctualLight, pad1)});
+        expectMembers(spv, "EnvAlias", {0, offsetof(EnvAlias, alias), offsetof(EnvAlias, pdf), offsetof(EnvAlias, pad)});
         expectMembers(spv, "SphereLight", {0, offsetof(SphereLight, radius), offsetof(SphereLight, radiance),
                                            offsetof(SphereLight, selectPmf), offsetof(SphereLight, spotDirection),
                                            offsetof(SphereLight, cosOuter), offsetof(SphereLight, cosInner),
@@ -95,10 +98,12 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                                               offsetof(BsdfTestResult, isDelta)});
         for (const char* s : {"BvhNode", "TriVerts", "FrameUniforms", "Material", "BsdfTestQuery", "BsdfTestResult"})
             structsChecked += int(spv.count(s));
+        envStructsChecked += int(spv.count("EnvAlias"));
     }
     // The reflection must actually have found the structs, or this test proves nothing.
     EXPECT_GE(structsChecked, 12);
     EXPECT_EQ(readMemberOffsets(gpu::shaderCode("trace")).count("SphereLight"), 1u);
+    EXPECT_GE(envStructsChecked, 2);  // the tracer and the environment test kernel
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/transform.h"
+#include "scene/io/env_spec.h"
 #include "scene/io/load.h"
 #include "scene/merge.h"
 #include "scene/presets/presets.h"
@@ -182,7 +183,38 @@ Light readLight(const Reader& r, const Json& j, const std::string& where) {
     if (j.contains("intensity")) l.intensity = r.number(j["intensity"], where + ".intensity", 0, 1e12f);
     if (j.contains("range")) l.range = r.number(j["range"], where + ".range", 0);
     if (j.contains("radius")) l.radius = r.number(j["radius"], where + ".radius", 0);
+    if (j.contains("angular_radius")) {
+        if (l.type != LightType::Directional) r.fail(where + ".angular_radius", "only directional lights have one");
+        l.angularRadius = r.number(j["angular_radius"], where + ".angular_radius", 0, 45) * 3.14159265f / 180.0f;
+    }
     return l;
+}
+
+// "environment": {"file": "x.hdr" | "sky": {...}, "intensity": x, "rotation": degrees}
+EnvironmentSpec readEnvironment(const Reader& r, const Json& j, const std::filesystem::path& baseDir) {
+    const std::string where = "environment";
+    if (!j.is_object()) r.fail(where, "expected an object");
+    EnvironmentSpec spec;
+    if (j.contains("file") && j.contains("sky")) r.fail(where, "give either \"file\" or \"sky\", not both");
+    if (j.contains("file")) {
+        std::filesystem::path file = r.string(j["file"], where + ".file");
+        if (file.is_relative()) file = baseDir / file;
+        spec.file = file.string();
+    }
+    if (j.contains("sky")) {
+        const Json& k = j["sky"];
+        if (!k.is_object()) r.fail(where + ".sky", "expected an object");
+        SkyParams p;
+        if (k.contains("sun_elevation")) p.sunElevationDegrees = r.number(k["sun_elevation"], where + ".sky.sun_elevation", 0, 90);
+        if (k.contains("sun_azimuth")) p.sunAzimuthDegrees = r.number(k["sun_azimuth"], where + ".sky.sun_azimuth", -360, 360);
+        if (k.contains("turbidity")) p.turbidity = r.number(k["turbidity"], where + ".sky.turbidity", 1.7f, 10);
+        if (k.contains("sun_radius")) p.sunRadiusDegrees = r.number(k["sun_radius"], where + ".sky.sun_radius", 0, 45);
+        if (k.contains("ground_albedo")) p.groundAlbedo = r.number(k["ground_albedo"], where + ".sky.ground_albedo", 0, 1);
+        spec.sky = p;
+    }
+    if (j.contains("intensity")) spec.intensity = r.number(j["intensity"], where + ".intensity", 0, 1e9f);
+    if (j.contains("rotation")) spec.rotationDegrees = r.number(j["rotation"], where + ".rotation", -3600, 3600);
+    return spec;
 }
 
 }  // namespace
@@ -231,6 +263,7 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
                 scene.camera.lookAt = t.point(part.camera.lookAt);
                 scene.camera.up = normalize(t.vector(part.camera.up));
                 scene.background = part.background;
+                scene.environment = part.environment;
                 haveCamera = true;
             }
             appendScene(scene, std::move(part), readTransform(r, a, where));
@@ -278,6 +311,13 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
             scene.lights.push_back(readLight(r, lights[i], "lights[" + std::to_string(i) + "]"));
     }
     if (doc.contains("background")) scene.background = r.vec3(doc["background"], "background", 0, 1e9f);
+    if (doc.contains("environment")) {
+        try {
+            applyEnvironment(scene, readEnvironment(r, doc["environment"], baseDir));
+        } catch (const Error& e) {
+            r.fail("environment", e.what());
+        }
+    }
     if (doc.contains("camera")) {
         const Json& c = doc["camera"];
         if (!c.is_object()) r.fail("camera", "expected an object");
@@ -356,6 +396,15 @@ std::string sceneToJson(const Scene& scene) {
         doc["lights"].push_back({{"name", l.name}, {"type", type}, {"position", v3(l.position)},
                                  {"direction", v3(l.direction)}, {"color", v3(l.color)}, {"intensity", l.intensity},
                                  {"range", l.range}, {"radius", l.radius}});
+        if (l.type == LightType::Directional && l.angularRadius > 0)
+            doc["lights"].back()["angular_radius"] = l.angularRadius * 180.0f / 3.14159265f;
+    }
+    const Environment& env = scene.environment;
+    if (env.map || env.intensity != 1.0f || env.rotationDegrees != 0.0f) {
+        doc["environment"] = {{"intensity", env.intensity}, {"rotation", env.rotationDegrees}};
+        if (env.map)
+            logWarning("scene '" + scene.name + "' has an environment map, which scene files refer to by file name " +
+                       "only; add \"file\" or \"sky\" to \"environment\" by hand");
     }
     return doc.dump(1) + "\n";
 }
