@@ -20,6 +20,13 @@ Scene makeFurnace(float albedo, Vec3 emission);
 // light, and a thin-lens camera focused on the molecule.
 Scene makeCaffeine();
 
+// A room with mirror walls, a glass sphere, a semi-specular floor, a ceiling light and two soft
+// bulbs around the Stanford bunny (Debian glmark2-data), or a stand-in mesh when it is missing.
+Scene makeBunnyRoom();
+
+// Rows of spheres sweeping roughness and metalness, plus glass and mirror, under a daylight sky.
+Scene makeMaterialSpheres();
+
 std::vector<std::string> presetNames();
 bool isPreset(const std::string& name);
 // Throws UsageError listing the built-in names when `name` is not one.
