@@ -24,6 +24,8 @@ void addCameraOptions(CLI::App& cmd, CameraOverrides& o) {
     cmd.add_option("--focus-point", o.focusPoint, "point x,y,z to focus on (sets the focus distance to its depth)")
         ->excludes("--focus-distance");
     cmd.add_option("--torch", o.torch, "intensity in candela of a light carried at the camera (0: off; on for WAD levels)");
+    cmd.add_option("--torch-color", o.torchColor, "torch colour r,g,b (linear, each in [0, 1])");
+    cmd.add_option("--torch-range", o.torchRange, "distance in metres at which the torch fades to nothing (0: unlimited)");
 }
 
 void addEnvironmentOptions(CLI::App& cmd, EnvironmentSpec& env) {
@@ -70,6 +72,16 @@ Scene loadScene(const std::string& nameOrPath, const std::string& map, const Cam
         if (!(*o.torch >= 0 && *o.torch <= 1e9f)) throw UsageError("--torch must be between 0 and 1e9 candela");
         scene.torch.enabled = *o.torch > 0;
         scene.torch.intensity = *o.torch;
+    }
+    if (!o.torchColor.empty()) {
+        const Vec3 c = parseVec3(o.torchColor, "--torch-color");
+        if (!(c.x >= 0 && c.x <= 1 && c.y >= 0 && c.y <= 1 && c.z >= 0 && c.z <= 1))
+            throw UsageError("--torch-color needs three numbers between 0 and 1, e.g. 1,0.85,0.6");
+        scene.torch.color = c;
+    }
+    if (o.torchRange) {
+        if (!(*o.torchRange >= 0 && *o.torchRange <= 1e6f)) throw UsageError("--torch-range must be between 0 and 1e6 metres");
+        scene.torch.range = *o.torchRange;
     }
     attachTorch(scene);
     return scene;

@@ -20,6 +20,8 @@ struct CameraOverrides {
     std::string position, lookAt, up;  // "x,y,z" as typed
     std::optional<float> fov;
     std::optional<float> torch;  // candela; 0 turns the torch off
+    std::string torchColor;      // "r,g,b" linear colour of the torch
+    std::optional<float> torchRange;  // metres; 0: unlimited
     std::optional<float> aperture, focusDistance;  // thin lens, metres
     std::string focusPoint;                        // "x,y,z": focus at its depth along the view
 };

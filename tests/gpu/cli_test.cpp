@@ -90,6 +90,23 @@ TEST_F(CliTest, ExrOutputHoldsLinearRadiance) {
     EXPECT_EQ(filesIn(dir).size(), 1u);
 }
 
+// A red torch adds red light only; a range shorter than any wall's distance adds nothing.
+TEST_F(CliTest, TorchColourAndRangeShapeTheCameraLight) {
+    auto meanOf = [&](const std::string& flags) {
+        RunResult r = run("render cornell -o t.exr --width 16 --height 16 --spp 64 --quiet " + flags);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return readExr(dir / "t.exr").mean();
+    };
+    const Vec3 plain = meanOf("");
+    const Vec3 red = meanOf("--torch 5 --torch-color 1,0,0");
+    const Vec3 faded = meanOf("--torch 5 --torch-color 1,0,0 --torch-range 0.05");
+    EXPECT_GT(red.x - plain.x, 0.05f);
+    EXPECT_GT(red.x - plain.x, 5 * std::abs(red.y - plain.y));
+    EXPECT_LT(std::abs(faded.x - plain.x), 0.2f * (red.x - plain.x));
+    expectOneLineError(run("render --torch-color 2,0,0"), 2, "--torch-color");
+    expectOneLineError(run("render --torch-range -1"), 2, "--torch-range");
+}
+
 TEST_F(CliTest, UnknownSceneIsAUsageError) { expectOneLineError(run("render nosuchscene"), 2, "cornell"); }
 
 TEST_F(CliTest, BadFlagsAreUsageErrors) {
