@@ -1,0 +1,24 @@
+// `penumbra view`: the window, its input and the frame loop.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace penumbra::viewer {
+
+struct ViewerOptions {
+    std::string device;
+    int width = 1280, height = 720;
+    bool vsync = true;
+    // Automation (tests, scripted captures): start playing, render this many frames, write the
+    // screenshot (if a path is given) and exit.
+    std::optional<std::uint32_t> frames;
+    std::string screenshot;
+    std::uint32_t samplesPerFrame = 1;
+};
+
+void runViewer(Scene scene, const ViewerOptions& options);
+
+}  // namespace penumbra::viewer
