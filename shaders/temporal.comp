@@ -97,8 +97,10 @@ void main() {
                 h.samples = min(h.samples / weightSum, viewer.maxHistory);
                 h.moment1 /= weightSum;
                 h.moment2 /= weightSum;
-                vec3 clamped = clamp(rgbToYCoCg(h.color), mean - viewer.clampSigma * sigma, mean + viewer.clampSigma * sigma);
-                h.color = max(yCoCgToRgb(clamped), vec3(0.0));
+                if (viewer.clampSigma > 0.0) {
+                    vec3 box = viewer.clampSigma * sigma;
+                    h.color = max(yCoCgToRgb(clamp(rgbToYCoCg(h.color), mean - box, mean + box)), vec3(0.0));
+                }
                 haveHistory = true;
             }
         }

@@ -250,7 +250,7 @@ PN_STRUCT(ViewerUniforms) {
     uint toneMapper;       // PN_TONEMAP_*
     uint debugMode;        // PN_DEBUG_*
     uint samplesPerFrame;  // paths per pixel the trace pass added this frame
-    float clampSigma;      // history is clamped to the neighbourhood's mean +- clampSigma * sigma
+    float clampSigma;      // history is clamped to the neighbourhood's mean +- clampSigma * sigma (0: off)
     float depthTolerance;  // relative depth difference above which history is disoccluded
     float normalTolerance; // cosine below which history is disoccluded
     float maxHistory;      // cap on N while moving: the blend weight never falls below 1/maxHistory

@@ -17,6 +17,7 @@ struct ViewArgs {
     CameraOverrides camera;
     viewer::ViewerOptions options;
     bool noVsync = false;
+    std::string debug = "none";
 };
 
 void runView(ViewArgs args) {
@@ -31,6 +32,7 @@ void runView(ViewArgs args) {
         checkWritable(args.options.screenshot);
     }
     args.options.vsync = !args.noVsync;
+    args.options.debug = viewer::parseDebugView(args.debug);
     Scene scene = loadScene(args.scene, args.map, args.camera);
     viewer::runViewer(std::move(scene), args.options);
 }
@@ -48,6 +50,8 @@ void registerView(CLI::App& app, Action& action) {
     cmd->add_flag("--no-vsync", args->noVsync, "present as fast as possible");
     cmd->add_option("--frames", args->options.frames, "automation: play at once, render N frames, then exit");
     cmd->add_option("--screenshot", args->options.screenshot, "automation: with --frames, write frame N to this PNG");
+    cmd->add_flag("--denoise", args->options.denoise, "start with the a-trous denoiser on");
+    cmd->add_option("--debug", args->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles");
     addDeviceOption(*cmd, args->options.device);
     addCameraOptions(*cmd, args->camera);
     cmd->callback([args, &action] { action = [args] { runView(*args); }; });

@@ -113,7 +113,7 @@ void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& s
         if (ImGui::SliderInt("max bounces", &bounces, 0, 32)) s.maxBounces = std::uint32_t(bounces);
         ImGui::SliderFloat("resolution scale", &s.resolutionScale, 0.25f, 1.0f, "%.2f");
         ImGui::Checkbox("temporal accumulation", &s.temporal);
-        ImGui::SliderFloat("history clamp (sigma)", &s.clampSigma, 0.5f, 4.0f);
+        ImGui::SliderFloat("history clamp (sigma, 0: off)", &s.clampSigma, 0.0f, 4.0f);
         ImGui::SliderFloat("max history (moving)", &s.maxHistory, 1.0f, 256.0f, "%.0f");
     }
     if (ImGui::CollapsingHeader("Denoiser", ImGuiTreeNodeFlags_DefaultOpen)) {

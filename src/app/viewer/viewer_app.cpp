@@ -59,9 +59,22 @@ std::string defaultScreenshotPath() {
 
 }  // namespace
 
+DebugView parseDebugView(const std::string& name) {
+    const std::pair<const char*, DebugView> views[] = {
+        {"none", DebugView::None},     {"normals", DebugView::Normals}, {"albedo", DebugView::Albedo},
+        {"depth", DebugView::Depth},   {"motion", DebugView::Motion},   {"samples", DebugView::Samples},
+        {"nodes", DebugView::HeatNodes}, {"triangles", DebugView::HeatTriangles}};
+    for (const auto& [n, v] : views)
+        if (name == n) return v;
+    throw UsageError("--debug must be one of none, normals, albedo, depth, motion, samples, nodes, triangles (got '" +
+                     name + "')");
+}
+
 void runViewer(Scene scene, const ViewerOptions& options) {
     ViewSettings settings;
     settings.samplesPerFrame = options.samplesPerFrame;
+    settings.denoise = options.denoise;
+    settings.debug = options.debug;
     std::optional<std::uint32_t> torch = prepareTorch(scene, settings);
 
     Window window(options.width, options.height, "penumbra - " + scene.name);

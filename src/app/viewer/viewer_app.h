@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "render/view_settings.h"
 #include "scene/scene.h"
 
 namespace penumbra::viewer {
@@ -17,7 +18,12 @@ struct ViewerOptions {
     std::optional<std::uint32_t> frames;
     std::string screenshot;
     std::uint32_t samplesPerFrame = 1;
+    bool denoise = false;
+    DebugView debug = DebugView::None;
 };
+
+// "normals", "albedo", "depth", "motion", "samples", "nodes", "triangles" or "none"; UsageError otherwise.
+DebugView parseDebugView(const std::string& name);
 
 void runViewer(Scene scene, const ViewerOptions& options);
 
