@@ -16,6 +16,10 @@ Scene makeCornellBox();
 // toward the inside. Every pixel's exact value is emission / (1 - albedo) (the furnace test).
 Scene makeFurnace(float albedo, Vec3 emission);
 
+// A room for looking at the BVH: cubes far apart on one side, a dense cluster of small cubes on
+// the other, and a slab laid diagonally across (bvh_lesson.cpp).
+Scene makeBvhLesson();
+
 std::vector<std::string> presetNames();
 bool isPreset(const std::string& name);
 // Throws UsageError listing the built-in names when `name` is not one.

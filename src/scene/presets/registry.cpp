@@ -3,7 +3,7 @@
 
 namespace penumbra {
 
-std::vector<std::string> presetNames() { return {"cornell", "furnace"}; }
+std::vector<std::string> presetNames() { return {"cornell", "furnace", "bvh-lesson"}; }
 
 bool isPreset(const std::string& name) {
     for (const std::string& n : presetNames())
@@ -14,6 +14,7 @@ bool isPreset(const std::string& name) {
 Scene makePreset(const std::string& name) {
     if (name == "cornell") return makeCornellBox();
     if (name == "furnace") return makeFurnace(0.5f, Vec3{1.0f});
+    if (name == "bvh-lesson") return makeBvhLesson();
     std::string list;
     for (const std::string& n : presetNames()) list += (list.empty() ? "" : ", ") + n;
     throw UsageError("unknown scene '" + name + "'; built-in scenes are: " + list);
