@@ -49,12 +49,14 @@ const char* viewerPassName(ViewerPass pass) {
     return "?";
 }
 
-InteractiveRenderer::InteractiveRenderer(const gpu::Context& ctx, const Scene& scene,
-                                         std::optional<std::uint32_t> torchLight, std::uint32_t seed)
-    : ctx_(ctx), arrays_(buildSceneArrays(scene)), commands_(ctx), background_(scene.background),
-      torchLight_(torchLight), seed_(seed), timer_(ctx, std::uint32_t(ViewerPass::Count)) {
+InteractiveRenderer::InteractiveRenderer(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight,
+                                         std::uint32_t seed)
+    : ctx_(ctx), arrays_(buildSceneArrays(scene)), commands_(ctx), background_(scene.background), seed_(seed),
+      timer_(ctx, std::uint32_t(ViewerPass::Count)) {
     gpuScene_ = std::make_unique<GpuScene>(ctx, commands_, arrays_);
-    if (torchLight_) PN_CHECK(*torchLight_ < gpuScene_->punctualCount);
+    // Lights without power are dropped on conversion, but the torch has power, so it stays last.
+    if (torchIsLastLight && !arrays_.punctual.empty() && !scene.lights.empty() && scene.lights.back().intensity > 0)
+        torchLight_ = static_cast<std::uint32_t>(arrays_.punctual.size() - 1);
     frameUniforms_ = gpu::Buffer(ctx, sizeof(shader::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                  gpu::MemoryKind::HostVisible);
     viewerUniforms_ = gpu::Buffer(ctx, sizeof(shader::ViewerUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,

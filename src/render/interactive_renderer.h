@@ -32,10 +32,9 @@ struct ViewerStats {
 
 class InteractiveRenderer {
 public:
-    // torchLight: index of the torch among the scene's punctual lights (SceneArrays::punctual),
-    // moved to the camera every frame; none if the scene carries no torch.
-    InteractiveRenderer(const gpu::Context& ctx, const Scene& scene, std::optional<std::uint32_t> torchLight,
-                        std::uint32_t seed = 1);
+    // torchIsLastLight: the scene's last light is the camera torch (attachTorch), which then is
+    // the last punctual light too; it is moved to the camera every frame and can be switched off.
+    InteractiveRenderer(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight, std::uint32_t seed = 1);
     ~InteractiveRenderer();
 
     // Sets the render resolution; a change reallocates the per-pixel buffers and drops history.
@@ -55,6 +54,8 @@ public:
     const gpu::Buffer& history() const { return *historyOut_; }  // HistoryTexel per pixel
     const gpu::Buffer& gbuffer() const { return gbuffer_; }
     const ViewerStats& stats() const { return stats_; }
+    bool hasTorch() const { return torchLight_.has_value(); }
+    const GpuScene& gpuScene() const { return *gpuScene_; }
     const SceneArrays& sceneArrays() const { return arrays_; }
     gpu::Commands& commands() { return commands_; }
 

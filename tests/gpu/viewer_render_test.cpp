@@ -23,7 +23,7 @@ TEST_F(ViewerRenderTest, StillCameraConvergesToTheHeadlessRender) {
     reference.render();
     ImageRgb expected = reference.image();
 
-    InteractiveRenderer viewer(*ctx, scene, std::nullopt, rs.seed);
+    InteractiveRenderer viewer(*ctx, scene, false, rs.seed);
     viewer.resize(w, h);
     ViewSettings vs;
     vs.samplesPerFrame = 1;
@@ -48,7 +48,7 @@ TEST_F(ViewerRenderTest, StillCameraConvergesToTheHeadlessRender) {
 
 TEST_F(ViewerRenderTest, HeatMapMaximaAreCountsWithinTheBvh) {
     Scene scene = makeCornellBox();
-    InteractiveRenderer viewer(*ctx, scene, std::nullopt);
+    InteractiveRenderer viewer(*ctx, scene, false);
     viewer.resize(16, 12);
     ViewSettings vs;
     vs.debug = DebugView::HeatNodes;
@@ -62,6 +62,42 @@ TEST_F(ViewerRenderTest, HeatMapMaximaAreCountsWithinTheBvh) {
     EXPECT_GE(viewer.stats().heatMaxTriangles, 1u);
     EXPECT_LE(viewer.stats().heatMaxNodes, std::uint32_t(viewer.sceneArrays().nodes.size()));
     EXPECT_LE(viewer.stats().heatMaxTriangles, std::uint32_t(viewer.sceneArrays().triVerts.size()));
+}
+
+TEST_F(ViewerRenderTest, TheTorchFollowsTheCameraAndSwitchesOff) {
+    Scene scene = makeCornellBox();
+    scene.torch.enabled = true;
+    attachTorch(scene);
+    InteractiveRenderer viewer(*ctx, scene, true);
+    ASSERT_TRUE(viewer.hasTorch());
+    viewer.resize(16, 12);
+    ViewSettings vs;
+    vs.maxBounces = 2;
+    vs.torch = true;
+    vs.torchIntensity = 5.0f;
+    Camera moved = scene.camera;
+    moved.position = moved.position + Vec3{0.1f, 0.05f, 0.3f};
+    moved.lookAt = moved.lookAt + Vec3{0.1f, 0.05f, 0.3f};
+    auto frameMean = [&](const Camera& cam) {
+        viewer.commands().run([&](VkCommandBuffer cmd) { viewer.record(cmd, cam, vs); });
+        viewer.finishFrame();
+        auto h = gpu::downloadBuffer<shader::HistoryTexel>(*ctx, viewer.commands(), viewer.history(), 16 * 12);
+        double sum = 0;
+        for (const auto& t : h) sum += luminance(t.color);
+        return sum / h.size();
+    };
+    const double on = frameMean(moved);
+    auto lights = gpu::downloadBuffer<shader::PunctualLight>(*ctx, viewer.commands(), viewer.gpuScene().punctual,
+                                                             viewer.gpuScene().punctualCount);
+    const shader::PunctualLight& torch = lights.back();
+    EXPECT_NEAR(torch.position.x, moved.position.x, 1e-6);
+    EXPECT_NEAR(torch.position.y, moved.position.y - 0.15f, 1e-6);  // attachTorch's 15 cm below the eye
+    EXPECT_NEAR(torch.position.z, moved.position.z, 1e-6);
+    EXPECT_NEAR(torch.intensity.x, vs.torchColor.x * 5.0f, 1e-5);
+    vs.torch = false;
+    const double off = frameMean(moved);
+    // Same samples (switching resets the running mean to frame 0), minus the torch's light.
+    EXPECT_GT(on, off * 1.05) << "on " << on << " off " << off;
 }
 
 }  // namespace

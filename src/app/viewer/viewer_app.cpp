@@ -36,7 +36,7 @@ InputState* inputOf(GLFWwindow* w) { return static_cast<InputState*>(glfwGetWind
 
 // The torch: attached as the scene's last punctual light so the renderer can move it; when the
 // scene did not ask for one it starts switched off.
-std::optional<std::uint32_t> prepareTorch(Scene& scene, ViewSettings& settings) {
+void prepareTorch(Scene& scene, ViewSettings& settings) {
     settings.torch = scene.torch.enabled && scene.torch.intensity > 0;
     if (!settings.torch) {
         scene.torch.enabled = true;
@@ -46,8 +46,6 @@ std::optional<std::uint32_t> prepareTorch(Scene& scene, ViewSettings& settings) 
     settings.torchColor = scene.torch.color;
     settings.torchIntensity = scene.torch.intensity;
     settings.torchRange = scene.torch.range;
-    // Every light before it converts to one punctual light (each has positive power).
-    return static_cast<std::uint32_t>(scene.lights.size() - 1);
 }
 
 std::string defaultScreenshotPath() {
@@ -75,7 +73,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     settings.samplesPerFrame = options.samplesPerFrame;
     settings.denoise = options.denoise;
     settings.debug = options.debug;
-    std::optional<std::uint32_t> torch = prepareTorch(scene, settings);
+    prepareTorch(scene, settings);
 
     Window window(options.width, options.height, "penumbra - " + scene.name);
     gpu::ContextOptions ctxOptions;
@@ -86,9 +84,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     if (!result.context) throw Error(result.error);
     gpu::Context& ctx = *result.context;
 
-    InteractiveRenderer renderer(ctx, scene, torch);
-    if (renderer.sceneArrays().punctual.size() != scene.lights.size())
-        torch.reset();  // a light was dropped, so the torch's index is unknown: leave it where it is
+    InteractiveRenderer renderer(ctx, scene, true);
     Presenter presenter(ctx, window, options.vsync);
     UiLayer ui(ctx, window.get(), presenter);
 
@@ -122,7 +118,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     panel.playing = options.frames.has_value();  // automation plays from the start
     panel.triangles = scene.triangleCount();
     panel.bvhNodes = renderer.sceneArrays().nodes.size();
-    panel.hasTorch = torch.has_value();
+    panel.hasTorch = renderer.hasTorch();
 
     bool frameInFlight = false;  // a rendered frame was submitted and not yet finished
     std::uint32_t framesRendered = 0;
