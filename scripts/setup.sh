@@ -10,6 +10,7 @@ packages=(
   libstb-dev libtinyexr-dev libcli11-dev
   libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
+  libglfw3-dev libimgui-dev xvfb xauth         # the viewer (penumbra view) and its test under Xvfb
   clang libclang-rt-14-dev                      # libFuzzer targets (tests/fuzz)
   freedoom glmark2-data assimp-testmodels       # real scenes the tests load (never committed)
 )

@@ -6,6 +6,13 @@
 #include "lib/intersect.glsl"
 #include "lib/textures.glsl"
 
+// Traversal statistics hooks: empty, except in heatmap.comp, which counts with them.
+#ifndef PN_COUNT_NODE
+#define PN_COUNT_NODE()
+#endif
+#ifndef PN_COUNT_TRIANGLE
+#define PN_COUNT_TRIANGLE()
+#endif
 // A hit on primitive i: a sphere, or a triangle that an alpha-tested material does not punch out.
 // The flag is the only branch spheres add to the hot loop.
 bool hitPrimitive(uint i, vec3 o, vec3 d, float tMax, out float t, out float u, out float v) {
@@ -38,8 +45,10 @@ Hit traverseBvh(vec3 o, vec3 d, float tMax, bool anyHit) {
     uint current = 0u;
     while (true) {
         BvhNode node = nodes[current];
+        PN_COUNT_NODE();
         if (node.triCount > 0u) {
             for (uint i = node.firstOrRight; i < node.firstOrRight + node.triCount; ++i) {
+                PN_COUNT_TRIANGLE();
                 float t, u, v;
                 if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
                     hit = Hit(t, i, u, v);

@@ -39,6 +39,14 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_SPHERE_LIGHTS 14  // SphereLight per emissive sphere or spot light with a radius
 #define PN_BINDING_ENV_TABLE 15      // EnvAlias per environment texel (importance sampling)
 // Bindings 16-23 are for the viewer's passes (G-buffer, history, denoiser, debug views).
+#define PN_BINDING_VIEWER 16        // ViewerUniforms
+#define PN_BINDING_GBUFFER 17       // GBufferTexel per pixel, this frame
+#define PN_BINDING_GBUFFER_PREV 18  // GBufferTexel per pixel, last frame
+#define PN_BINDING_HISTORY 19       // HistoryTexel per pixel, last frame (read)
+#define PN_BINDING_HISTORY_OUT 20   // HistoryTexel per pixel, this frame (written)
+#define PN_BINDING_FILTER_IN 21     // vec4 per pixel: denoiser input (rgb illumination, a variance)
+#define PN_BINDING_FILTER_OUT 22    // vec4 per pixel: denoiser output
+#define PN_BINDING_DISPLAY 23       // uint per pixel: RGBA8 (r in the low byte), what the window shows
 #define PN_BINDING_ENV_TEXELS 24     // environment radiance, one vec4 (rgb, unused) per texel
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
@@ -247,6 +255,77 @@ PN_STRUCT(FrameUniforms) {
     uint pad1;
 };
 
+// ---- viewer passes (temporal.comp, atrous.comp, tonemap.comp, gbuffer.comp, heatmap.comp) ----
+#define PN_TONEMAP_REINHARD 0u
+#define PN_TONEMAP_ACES 1u
+#define PN_DEBUG_NONE 0u
+#define PN_DEBUG_NORMALS 1u
+#define PN_DEBUG_ALBEDO 2u
+#define PN_DEBUG_DEPTH 3u
+#define PN_DEBUG_MOTION 4u
+#define PN_DEBUG_SAMPLES 5u
+#define PN_DEBUG_HEAT_NODES 6u   // BVH nodes visited by the primary ray
+#define PN_DEBUG_HEAT_TRIS 7u    // triangles tested by the primary ray
+#define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
+
+// What the primary ray saw at a pixel's centre, 48 bytes.
+PN_STRUCT(GBufferTexel) {
+    vec3 normal;     // shading normal, unit, facing the camera; zero where the ray missed
+    float depth;     // linear depth (distance along cameraForward); 0 where the ray missed
+    vec3 albedo;     // textured base colour at the hit, what the denoiser divides out
+    uint surfaceId;  // material + 1 (0: miss); a change at a pixel means a different surface
+    vec2 motion;     // pixels from here to where the same point was in the previous frame
+    float pad0;
+    float pad1;
+};
+
+// The temporal accumulation of one pixel, 32 bytes.
+PN_STRUCT(HistoryTexel) {
+    vec3 color;     // running mean of radiance
+    float samples;  // N of the running mean (capped while the camera moves)
+    float moment1;  // running mean of per-sample luminance
+    float moment2;  // running mean of per-sample squared luminance (variance = m2 - m1^2)
+    float pad0;
+    float pad1;
+};
+
+// Settings of the viewer's passes (uniform buffer), 128 bytes. The previous camera is what
+// reprojection projects into: it plays the role of the previous view-projection matrix.
+PN_STRUCT(ViewerUniforms) {
+    vec3 prevCameraPosition;
+    float prevTanHalfFovY;
+    vec3 prevCameraRight;
+    float prevAspect;
+    vec3 prevCameraUp;
+    uint historyValid;     // 0: no usable history (first frame, reset, lighting changed)
+    vec3 prevCameraForward;
+    uint cameraMoved;      // 0: exact running mean; else reproject, reject, clamp and blend
+    float exposure;        // stops
+    uint toneMapper;       // PN_TONEMAP_*
+    uint debugMode;        // PN_DEBUG_*
+    uint samplesPerFrame;  // paths per pixel the trace pass added this frame
+    float clampSigma;      // history is clamped to the neighbourhood's mean +- clampSigma * sigma (0: off)
+    float depthTolerance;  // relative depth difference above which history is disoccluded
+    float normalTolerance; // cosine below which history is disoccluded
+    float maxHistory;      // cap on N while moving: the blend weight never falls below 1/maxHistory
+    float sigmaLuminance;  // a-trous edge stopping: luminance, in standard deviations
+    float sigmaNormal;     // exponent on the normals' cosine
+    float sigmaDepth;      // relative depth difference per pixel of step
+    float heatMax;         // heat-map count shown as the hottest colour
+    uint denoise;          // nonzero: the tonemap input is the denoiser's output
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+
+// Largest traversal counts of a heat-map frame (for the legend), 16 bytes.
+PN_STRUCT(HeatCounters) {
+    uint maxNodes;
+    uint maxTris;
+    uint pad0;
+    uint pad1;
+};
+
 // Per-dispatch constants, 16 bytes.
 PN_STRUCT(PassPush) {
     uint passIndex;      // which progressive pass this is; with seed it decorrelates samples
@@ -352,6 +431,20 @@ static_assert(sizeof(BsdfTestResult) == 32 && offsetof(BsdfTestResult, pdf) == 1
               offsetof(BsdfTestResult, value) == 16 && offsetof(BsdfTestResult, isDelta) == 28);
 static_assert(sizeof(SurfacePoint) == 32 && offsetof(SurfacePoint, valid) == 12 &&
               offsetof(SurfacePoint, normal) == 16);
+static_assert(sizeof(GBufferTexel) == 48 && offsetof(GBufferTexel, depth) == 12 &&
+              offsetof(GBufferTexel, albedo) == 16 && offsetof(GBufferTexel, surfaceId) == 28 &&
+              offsetof(GBufferTexel, motion) == 32);
+static_assert(sizeof(HistoryTexel) == 32 && offsetof(HistoryTexel, samples) == 12 &&
+              offsetof(HistoryTexel, moment1) == 16 && offsetof(HistoryTexel, moment2) == 20);
+static_assert(sizeof(ViewerUniforms) == 128 && offsetof(ViewerUniforms, prevTanHalfFovY) == 12 &&
+              offsetof(ViewerUniforms, prevCameraRight) == 16 && offsetof(ViewerUniforms, prevAspect) == 28 &&
+              offsetof(ViewerUniforms, prevCameraUp) == 32 && offsetof(ViewerUniforms, historyValid) == 44 &&
+              offsetof(ViewerUniforms, prevCameraForward) == 48 && offsetof(ViewerUniforms, cameraMoved) == 60 &&
+              offsetof(ViewerUniforms, exposure) == 64 && offsetof(ViewerUniforms, samplesPerFrame) == 76 &&
+              offsetof(ViewerUniforms, clampSigma) == 80 && offsetof(ViewerUniforms, maxHistory) == 92 &&
+              offsetof(ViewerUniforms, sigmaLuminance) == 96 && offsetof(ViewerUniforms, heatMax) == 108 &&
+              offsetof(ViewerUniforms, denoise) == 112);
+static_assert(sizeof(HeatCounters) == 16);
 }  // namespace penumbra::shader
 #endif
 #endif

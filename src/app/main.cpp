@@ -18,6 +18,9 @@ int main(int argc, char** argv) {
     penumbra::app::registerInfo(app, action);
     penumbra::app::registerBench(app, action);
     penumbra::app::registerExport(app, action);
+#ifdef PENUMBRA_HAVE_VIEWER
+    penumbra::app::registerView(app, action);
+#endif
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -96,7 +96,25 @@ DeviceInfo describe(VkPhysicalDevice device, std::uint32_t index) {
     return info;
 }
 
-VkInstance createInstance(bool validation) {
+// A family that can draw (the UI), compute and present to `surface`, or UINT32_MAX.
+std::uint32_t presentQueueFamily(VkPhysicalDevice device, VkSurfaceKHR surface, std::uint32_t* timestampBits) {
+    std::uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+    const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        VkBool32 present = VK_FALSE;
+        PN_VK(vkGetPhysicalDeviceSurfaceSupportKHR(device, i, surface, &present));
+        if ((families[i].queueFlags & needed) == needed && present) {
+            if (timestampBits) *timestampBits = families[i].timestampValidBits;
+            return i;
+        }
+    }
+    return UINT32_MAX;
+}
+
+VkInstance createInstance(bool validation, const std::vector<std::string>& extraExtensions = {}) {
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "penumbra";
     app.pEngineName = "penumbra";
@@ -104,13 +122,15 @@ VkInstance createInstance(bool validation) {
     VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     info.pApplicationInfo = &app;
     const char* layers[] = {kValidationLayer};
-    const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
+    std::vector<const char*> extensions;
+    for (const std::string& e : extraExtensions) extensions.push_back(e.c_str());
     if (validation) {
         info.enabledLayerCount = 1;
         info.ppEnabledLayerNames = layers;
-        info.enabledExtensionCount = 1;
-        info.ppEnabledExtensionNames = extensions;
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     }
+    info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
     VkInstance instance = VK_NULL_HANDLE;
     VkResult r = vkCreateInstance(&info, nullptr, &instance);
     if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED) return VK_NULL_HANDLE;
@@ -172,7 +192,7 @@ ContextResult Context::create(const ContextOptions& options) {
     if (validation && !layerAvailable(kValidationLayer))
         throw Error("Vulkan validation was requested but VK_LAYER_KHRONOS_validation is not "
                     "installed; install the Debian package vulkan-validationlayers");
-    ctx->instance_ = createInstance(validation);
+    ctx->instance_ = createInstance(validation, options.instanceExtensions);
     if (!ctx->instance_) return {nullptr, kNoVulkan};
 
     if (validation) {
@@ -188,6 +208,8 @@ ContextResult Context::create(const ContextOptions& options) {
         if (!create) throw Error("the Vulkan loader lacks vkCreateDebugUtilsMessengerEXT");
         PN_VK(create(ctx->instance_, &info, nullptr, &ctx->messenger_));
     }
+
+    if (options.createSurface) ctx->surface_ = options.createSurface(ctx->instance_);
 
     auto devices = physicalDevices(ctx->instance_);
     std::vector<DeviceInfo> infos;
@@ -227,6 +249,14 @@ ContextResult Context::create(const ContextOptions& options) {
     ctx->physical_ = devices[chosen];
     ctx->info_ = infos[chosen];
     ctx->queueFamily_ = computeQueueFamily(ctx->physical_, &ctx->timestampBits_);
+    std::vector<const char*> deviceExtensions;
+    if (ctx->surface_) {
+        ctx->queueFamily_ = presentQueueFamily(ctx->physical_, ctx->surface_, &ctx->timestampBits_);
+        if (ctx->queueFamily_ == UINT32_MAX)
+            throw Error("device " + ctx->info_.name + " cannot present to this window (no queue with graphics, "
+                        "compute and present); pick another with --device");
+        deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    }
     vkGetPhysicalDeviceMemoryProperties(ctx->physical_, &ctx->memory_);
 
     float priority = 1.0f;
@@ -246,6 +276,8 @@ ContextResult Context::create(const ContextOptions& options) {
     VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
     deviceInfo.queueCreateInfoCount = 1;
     deviceInfo.pQueueCreateInfos = &queueInfo;
+    deviceInfo.enabledExtensionCount = static_cast<std::uint32_t>(deviceExtensions.size());
+    deviceInfo.ppEnabledExtensionNames = deviceExtensions.data();
     PN_VK(vkCreateDevice(ctx->physical_, &deviceInfo, nullptr, &ctx->device_));
     vkGetDeviceQueue(ctx->device_, ctx->queueFamily_, 0, &ctx->queue_);
     return {std::move(ctx), {}};
@@ -256,6 +288,7 @@ Context::~Context() {
         vkDeviceWaitIdle(device_);  // nothing useful to do with a failure while tearing down
         vkDestroyDevice(device_, nullptr);
     }
+    if (surface_) vkDestroySurfaceKHR(instance_, surface_, nullptr);
     if (messenger_) {
         auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));

@@ -3,6 +3,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -33,6 +34,11 @@ struct ContextOptions {
     // Enables VK_LAYER_KHRONOS_validation and records every warning and error it reports.
     // PENUMBRA_VALIDATION=1 turns it on too.
     bool validation = false;
+    // Presentation (the viewer): extra instance extensions, and a function that makes the
+    // window's surface once the instance exists. The device then needs one queue family with
+    // graphics, compute and present support, and VK_KHR_swapchain.
+    std::vector<std::string> instanceExtensions;
+    std::function<VkSurfaceKHR(VkInstance)> createSurface;
 };
 
 class Context;
@@ -62,6 +68,7 @@ public:
     const DeviceInfo& info() const { return info_; }
     double timestampPeriodNs() const { return info_.limits.timestampPeriod; }
     bool timestampsSupported() const { return timestampBits_ > 0; }
+    VkSurfaceKHR surface() const { return surface_; }  // null unless ContextOptions::createSurface
 
     // Finds a memory type with all `required` flags among those allowed by `typeBits`.
     std::uint32_t findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags required) const;
@@ -76,6 +83,7 @@ private:
 
     VkInstance instance_ = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkSurfaceKHR surface_ = VK_NULL_HANDLE;
     VkPhysicalDevice physical_ = VK_NULL_HANDLE;
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;

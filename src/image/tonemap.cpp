@@ -12,6 +12,13 @@ float reinhard(float x) {
     return x / (1 + x);
 }
 
+float acesFilmic(float x) {
+    if (!(x > 0)) return 0;
+    if (std::isinf(x)) return 1;
+    float y = x * (2.51f * x + 0.03f) / (x * (2.43f * x + 0.59f) + 0.14f);
+    return y < 1 ? y : 1;
+}
+
 float srgbOetf(float x) {
     // IEC 61966-2-1: the linear toe and the power segment meet at 0.0031308.
     if (x <= 0.0031308f) return 12.92f * x;

@@ -19,6 +19,9 @@ struct ToneMapSettings {
 };
 
 float reinhard(float x);     // x / (1 + x) for x >= 0; negatives and NaN -> 0, +inf -> 1
+// Narkowicz's fit of the ACES filmic curve (the viewer's second tone mapper, in tonemap.comp):
+// x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14), clamped to [0, 1]; negatives and NaN -> 0.
+float acesFilmic(float x);
 float srgbOetf(float x);     // exact piecewise sRGB encoding of a linear value in [0, 1]
 std::uint8_t toSrgb8(float linear);  // clamps to [0, 1], encodes, rounds to nearest
 

@@ -27,19 +27,21 @@ std::string lowercase(std::string s) {
 
 // Encoders write to memory and atomic_file does the I/O: neither stb nor tinyexr reports why
 // a file write failed, while our own write() reports errno (disk full, permission denied).
-std::vector<unsigned char> encodePng(const ImageRgb& image, const ToneMapSettings& settings) {
-    std::vector<std::uint8_t> rgb = toneMapToSrgb8(image, settings);
+std::vector<unsigned char> encodePngRgb8(int width, int height, const std::vector<std::uint8_t>& rgb) {
     std::vector<unsigned char> out;
     auto append = [](void* context, void* data, int size) {
         auto* bytes = static_cast<unsigned char*>(data);
         static_cast<std::vector<unsigned char>*>(context)->insert(
             static_cast<std::vector<unsigned char>*>(context)->end(), bytes, bytes + size);
     };
-    if (!stbi_write_png_to_func(append, &out, image.width, image.height, 3, rgb.data(),
-                                image.width * 3)) {
+    if (!stbi_write_png_to_func(append, &out, width, height, 3, rgb.data(), width * 3)) {
         throw Error("PNG encoding failed");
     }
     return out;
+}
+
+std::vector<unsigned char> encodePng(const ImageRgb& image, const ToneMapSettings& settings) {
+    return encodePngRgb8(image.width, image.height, toneMapToSrgb8(image, settings));
 }
 
 struct MallocFree {
@@ -129,6 +131,12 @@ ImageRgb readExr(const fs::path& path) {
         image.pixels[i] = {rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]};
     }
     return image;
+}
+
+void writePngRgb8(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& rgb) {
+    PN_CHECK(width > 0 && height > 0 && rgb.size() == std::size_t(width) * std::size_t(height) * 3);
+    std::vector<unsigned char> bytes = encodePngRgb8(width, height, rgb);
+    writeBytesAtomically(path, bytes);
 }
 
 }  // namespace penumbra

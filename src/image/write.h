@@ -3,7 +3,9 @@
 // never damages an existing one.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 #include "image/image.h"
 #include "image/tonemap.h"
@@ -19,6 +21,10 @@ ImageFormat formatFromPath(const std::filesystem::path& path);
 // (an EXR keeps the radiance the renderer computed; exposure is a viewing choice).
 void writeImage(const std::filesystem::path& path, const ImageRgb& image,
                 const ToneMapSettings& settings);
+
+// A PNG of display-ready 8-bit sRGB pixels (RGB, row-major, top row first), written atomically:
+// the viewer's screenshots, which must hold exactly what the window showed.
+void writePngRgb8(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& rgb);
 
 // Reads the RGB channels of a single-part EXR (alpha dropped; a one-channel file becomes grey).
 ImageRgb readExr(const std::filesystem::path& path);

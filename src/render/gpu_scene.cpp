@@ -65,8 +65,9 @@ void addPunctualLights(const Scene& scene, std::vector<shader::PunctualLight>& o
     const Aabb box = scene.bounds();
     const double sceneRadius = box.empty() ? 1.0 : 0.5 * length(box.extent());
     std::vector<double> power;
-    std::vector<Light> lights = scene.lights;
-    for (const Light& sun : distantLights(scene.environment)) lights.push_back(sun);
+    // The environment's sun first, so the scene's own last light (the viewer's torch) stays last.
+    std::vector<Light> lights = distantLights(scene.environment);
+    lights.insert(lights.end(), scene.lights.begin(), scene.lights.end());
     for (const Light& l : lights) {
         if (isSphereLight(l)) continue;  // in the sphere-light table instead
         shader::PunctualLight p{};

@@ -106,5 +106,37 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
     EXPECT_GE(envStructsChecked, 2);  // the tracer and the environment test kernel
 }
 
+TEST(Layout, ViewerStructsMatchInTheViewerShaders) {
+    using namespace shader;
+    std::map<std::string, int> found;
+    for (const char* shaderName : {"gbuffer", "temporal", "atrous", "tonemap", "heatmap"}) {
+        Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
+        expectMembers(spv, "GBufferTexel", {0, offsetof(GBufferTexel, depth), offsetof(GBufferTexel, albedo),
+                                            offsetof(GBufferTexel, surfaceId), offsetof(GBufferTexel, motion),
+                                            offsetof(GBufferTexel, pad0), offsetof(GBufferTexel, pad1)});
+        expectMembers(spv, "HistoryTexel", {0, offsetof(HistoryTexel, samples), offsetof(HistoryTexel, moment1),
+                                            offsetof(HistoryTexel, moment2), offsetof(HistoryTexel, pad0),
+                                            offsetof(HistoryTexel, pad1)});
+        expectMembers(spv, "ViewerUniforms",
+                      {0, offsetof(ViewerUniforms, prevTanHalfFovY), offsetof(ViewerUniforms, prevCameraRight),
+                       offsetof(ViewerUniforms, prevAspect), offsetof(ViewerUniforms, prevCameraUp),
+                       offsetof(ViewerUniforms, historyValid), offsetof(ViewerUniforms, prevCameraForward),
+                       offsetof(ViewerUniforms, cameraMoved), offsetof(ViewerUniforms, exposure),
+                       offsetof(ViewerUniforms, toneMapper), offsetof(ViewerUniforms, debugMode),
+                       offsetof(ViewerUniforms, samplesPerFrame), offsetof(ViewerUniforms, clampSigma),
+                       offsetof(ViewerUniforms, depthTolerance), offsetof(ViewerUniforms, normalTolerance),
+                       offsetof(ViewerUniforms, maxHistory), offsetof(ViewerUniforms, sigmaLuminance),
+                       offsetof(ViewerUniforms, sigmaNormal), offsetof(ViewerUniforms, sigmaDepth),
+                       offsetof(ViewerUniforms, heatMax), offsetof(ViewerUniforms, denoise)});
+        expectMembers(spv, "HeatCounters", {0, offsetof(HeatCounters, maxTris)});
+        expectMembers(spv, "FrameUniforms", {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight)});
+        expectMembers(spv, "PassPush", {0, offsetof(PassPush, mode), offsetof(PassPush, itemCount), offsetof(PassPush, countRays)});
+        for (const auto& [name, members] : spv) found[name] += 1;
+    }
+    // Each viewer struct is used by at least one of these shaders; the check above saw it.
+    for (const char* s : {"GBufferTexel", "HistoryTexel", "ViewerUniforms", "HeatCounters"})
+        EXPECT_GE(found[s], 1) << s << " not found in any viewer shader";
+}
+
 }  // namespace
 }  // namespace penumbra

@@ -27,6 +27,10 @@ Scene makeBunnyRoom();
 // Rows of spheres sweeping roughness and metalness, plus glass and mirror, under a daylight sky.
 Scene makeMaterialSpheres();
 
+// A room for looking at the BVH: cubes far apart on one side, a dense cluster of small cubes on
+// the other, and a slab laid diagonally across (bvh_lesson.cpp).
+Scene makeBvhLesson();
+
 std::vector<std::string> presetNames();
 bool isPreset(const std::string& name);
 // Throws UsageError listing the built-in names when `name` is not one.

@@ -3,7 +3,7 @@
 
 namespace penumbra {
 
-std::vector<std::string> presetNames() { return {"cornell", "furnace", "caffeine", "bunny-room", "materials"}; }
+std::vector<std::string> presetNames() { return {"cornell", "furnace", "caffeine", "bunny-room", "materials", "bvh-lesson"}; }
 
 bool isPreset(const std::string& name) {
     for (const std::string& n : presetNames())
@@ -17,6 +17,7 @@ Scene makePreset(const std::string& name) {
     if (name == "caffeine") return makeCaffeine();
     if (name == "bunny-room") return makeBunnyRoom();
     if (name == "materials") return makeMaterialSpheres();
+    if (name == "bvh-lesson") return makeBvhLesson();
     std::string list;
     for (const std::string& n : presetNames()) list += (list.empty() ? "" : ", ") + n;
     throw UsageError("unknown scene '" + name + "'; built-in scenes are: " + list);

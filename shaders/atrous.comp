@@ -1,0 +1,73 @@
+#version 460
+// One a-trous wavelet pass of an SVGF-style denoiser: a 5x5 B3-spline kernel whose taps are
+// push.passIndex pixels apart (1, 2, 4, ...), weighted down across normal and depth edges and
+// across luminance differences large compared with the local noise (the variance channel, which
+// each pass filters with the squared weights). It runs on illumination (albedo divided out by
+// temporal.comp); the last pass multiplies the albedo back, so texture detail is never blurred.
+#extension GL_GOOGLE_include_directive : require
+
+#include "shared/types.h"
+
+layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
+
+#include "lib/viewer_common.glsl"
+
+layout(push_constant) uniform PushBlock { PassPush push; };
+layout(std430, set = 0, binding = PN_BINDING_GBUFFER) readonly buffer GBufferIn { GBufferTexel gbuffer[]; };
+layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) readonly buffer FilterIn { vec4 src[]; };
+layout(std430, set = 0, binding = PN_BINDING_FILTER_OUT) writeonly buffer FilterOut { vec4 dst[]; };
+
+const float kB3[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
+
+float depthAt(ivec2 q, float fallback) { return insideImage(q) ? gbuffer[pixelIndex(q)].depth : fallback; }
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (!insideImage(p)) return;
+    uint i = pixelIndex(p);
+    GBufferTexel g = gbuffer[i];
+    vec4 centre = src[i];
+    vec4 result = centre;
+    if (g.surfaceId != 0u) {
+        // Local noise: 3x3 Gaussian of the variance (a single pixel's estimate is itself noisy).
+        float variance = 0.0, kernelSum = 0.0;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                ivec2 q = p + ivec2(dx, dy);
+                if (!insideImage(q)) continue;
+                float k = (dx == 0 ? 0.5 : 0.25) * (dy == 0 ? 0.5 : 0.25);
+                variance += k * src[pixelIndex(q)].a;
+                kernelSum += k;
+            }
+        float lumScale = viewer.sigmaLuminance * sqrt(max(variance / kernelSum, 0.0)) + 1e-6;
+        // Screen-space depth gradient, so slanted surfaces are not cut into strips.
+        vec2 gradient = 0.5 * vec2(depthAt(p + ivec2(1, 0), g.depth) - depthAt(p - ivec2(1, 0), g.depth),
+                                   depthAt(p + ivec2(0, 1), g.depth) - depthAt(p - ivec2(0, 1), g.depth));
+        int step = int(push.passIndex);
+        float centreLum = luminance(centre.rgb);
+        vec3 colorSum = vec3(0.0);
+        float varianceSum = 0.0, weightSum = 0.0;
+        for (int dy = -2; dy <= 2; ++dy)
+            for (int dx = -2; dx <= 2; ++dx) {
+                ivec2 offset = ivec2(dx, dy) * step;
+                ivec2 q = p + offset;
+                if (!insideImage(q)) continue;
+                uint qi = pixelIndex(q);
+                GBufferTexel gq = gbuffer[qi];
+                if (gq.surfaceId == 0u) continue;
+                vec4 s = src[qi];
+                float wNormal = pow(max(dot(g.normal, gq.normal), 0.0), viewer.sigmaNormal);
+                float depthScale = viewer.sigmaDepth * abs(dot(gradient, vec2(offset))) + 1e-3 * g.depth;
+                float wDepth = exp(-abs(g.depth - gq.depth) / depthScale);
+                float wLum = exp(-abs(centreLum - luminance(s.rgb)) / lumScale);
+                float w = kB3[abs(dx)] * kB3[abs(dy)] * wNormal * wDepth * wLum;
+                colorSum += w * s.rgb;
+                varianceSum += w * w * s.a;
+                weightSum += w;
+            }
+        // The centre tap always has weight kB3[0]^2 > 0.
+        result = vec4(colorSum / weightSum, varianceSum / (weightSum * weightSum));
+    }
+    if ((push.mode & PN_ATROUS_LAST) != 0u) result.rgb *= demodulationAlbedo(g);
+    dst[i] = result;
+}

@@ -1,0 +1,46 @@
+#version 460
+// The G-buffer: what the pixel-centre primary ray hits (normal, linear depth, textured albedo,
+// surface id) and the motion vector to where that point was in the previous frame. A pass of its
+// own, so the path tracer stays untouched and the denoiser's guides are noise-free.
+#extension GL_GOOGLE_include_directive : require
+
+#include "shared/types.h"
+
+layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
+
+#include "lib/scene_bindings.glsl"
+#define PN_HAVE_FRAME
+#include "lib/viewer_common.glsl"
+#include "lib/offset.glsl"
+#include "lib/bvh.glsl"
+#include "lib/surface.glsl"
+
+layout(std430, set = 0, binding = PN_BINDING_GBUFFER) writeonly buffer GBufferOut { GBufferTexel gbuffer[]; };
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (!insideImage(p)) return;
+    vec2 centre = vec2(p) + 0.5;
+    vec3 direction = viewDirection(centre);
+    Hit hit = traceClosest(frame.cameraPosition, direction, PN_INFINITY);
+    GBufferTexel g;
+    g.pad0 = 0.0;
+    g.pad1 = 0.0;
+    if (hit.triangle == PN_NO_HIT) {
+        g.normal = vec3(0.0);
+        g.depth = 0.0;
+        g.albedo = vec3(0.0);
+        g.surfaceId = 0u;
+        // The background is at infinity: only the camera's rotation moves it.
+        g.motion = projectDirectionPrev(direction) - centre;
+    } else {
+        Surface s = surfaceAt(hit, frame.cameraPosition, direction);
+        Material m = materials[s.material];
+        g.normal = s.shadingNormal;
+        g.depth = hit.t * dot(direction, frame.cameraForward);
+        g.albedo = materialBaseColor(m, s.uv).rgb;
+        g.surfaceId = s.material + 1u;
+        g.motion = projectPointPrev(s.position) - centre;
+    }
+    gbuffer[pixelIndex(p)] = g;
+}

@@ -1,0 +1,47 @@
+// What the viewer's image passes share: the per-frame and viewer settings, pixel indexing,
+// luminance and YCoCg, and projection into the previous frame's camera (the reprojection that a
+// previous view-projection matrix would do, written with the camera basis the frame uses).
+// Include after shared/types.h. Kernels that trace the scene get `frame` from scene_bindings.glsl
+// and define PN_HAVE_FRAME first.
+#ifndef PN_VIEWER_COMMON_GLSL
+#define PN_VIEWER_COMMON_GLSL
+
+#ifndef PN_HAVE_FRAME
+layout(std140, set = 0, binding = PN_BINDING_FRAME) uniform FrameBuffer { FrameUniforms frame; };
+#endif
+layout(std430, set = 0, binding = PN_BINDING_VIEWER) readonly buffer ViewerBuffer { ViewerUniforms viewer; };
+
+bool insideImage(ivec2 p) { return p.x >= 0 && p.y >= 0 && p.x < int(frame.width) && p.y < int(frame.height); }
+uint pixelIndex(ivec2 p) { return uint(p.y) * frame.width + uint(p.x); }
+
+float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+
+vec3 rgbToYCoCg(vec3 c) {
+    return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b, -0.25 * c.r + 0.5 * c.g - 0.25 * c.b);
+}
+vec3 yCoCgToRgb(vec3 y) { return vec3(y.x + y.y - y.z, y.x + y.z, y.x - y.y - y.z); }
+
+// Direction of the ray through a continuous pixel position in the current camera.
+vec3 viewDirection(vec2 pixelPosition) {
+    vec2 ndc = vec2(2.0 * pixelPosition.x / float(frame.width) - 1.0, 1.0 - 2.0 * pixelPosition.y / float(frame.height));
+    vec2 plane = ndc * vec2(frame.aspect * frame.tanHalfFovY, frame.tanHalfFovY);
+    return normalize(frame.cameraForward + plane.x * frame.cameraRight + plane.y * frame.cameraUp);
+}
+
+// Continuous pixel position of camera-space offset d (view z > 0) in the previous camera, or a
+// position far outside the image when d is behind it.
+vec2 projectDirectionPrev(vec3 d) {
+    float z = dot(d, viewer.prevCameraForward);
+    if (z <= 1e-6) return vec2(-1e9);
+    vec2 ndc = vec2(dot(d, viewer.prevCameraRight) / (z * viewer.prevTanHalfFovY * viewer.prevAspect),
+                    dot(d, viewer.prevCameraUp) / (z * viewer.prevTanHalfFovY));
+    return vec2((ndc.x + 1.0) * 0.5 * float(frame.width), (1.0 - ndc.y) * 0.5 * float(frame.height));
+}
+vec2 projectPointPrev(vec3 p) { return projectDirectionPrev(p - viewer.prevCameraPosition); }
+
+// The albedo the denoiser divides out: 1 where the primary ray missed or the surface is black.
+vec3 demodulationAlbedo(GBufferTexel g) {
+    return g.surfaceId == 0u ? vec3(1.0) : max(g.albedo, vec3(1e-3));
+}
+
+#endif

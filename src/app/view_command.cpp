@@ -1,0 +1,62 @@
+// penumbra view [SCENE]: the interactive viewer (src/app/viewer/).
+#include <memory>
+
+#include "app/commands.h"
+#include "app/common_options.h"
+#include "app/viewer/viewer_app.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "image/write.h"
+
+namespace penumbra::app {
+namespace {
+
+struct ViewArgs {
+    std::string scene = "cornell";
+    std::string map;
+    CameraOverrides camera;
+    viewer::ViewerOptions options;
+    bool noVsync = false;
+    std::string debug = "none";
+    EnvironmentSpec env;
+};
+
+void runView(ViewArgs args) {
+    if (args.options.width < 64 || args.options.height < 64 || args.options.width > 16384 || args.options.height > 16384)
+        throw UsageError("--width and --height must be between 64 and 16384");
+    if (args.options.samplesPerFrame < 1 || args.options.samplesPerFrame > 64)
+        throw UsageError("--spp must be between 1 and 64 samples per frame");
+    if (args.options.frames && *args.options.frames == 0) throw UsageError("--frames must be at least 1");
+    if (!args.options.screenshot.empty()) {
+        if (!args.options.frames) throw UsageError("--screenshot needs --frames N (the frame to capture)");
+        if (formatFromPath(args.options.screenshot) != ImageFormat::Png) throw UsageError("--screenshot must be a .png file");
+        checkWritable(args.options.screenshot);
+    }
+    args.options.vsync = !args.noVsync;
+    args.options.debug = viewer::parseDebugView(args.debug);
+    Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env);
+    viewer::runViewer(std::move(scene), args.options);
+}
+
+}  // namespace
+
+void registerView(CLI::App& app, Action& action) {
+    auto args = std::make_shared<ViewArgs>();
+    CLI::App* cmd = app.add_subcommand("view", "open a window and explore a scene interactively (starts paused)");
+    cmd->add_option("scene", args->scene, "built-in scene or a scene file, as for 'render' (default cornell)");
+    cmd->add_option("--map", args->map, "level of a .wad file, e.g. E1M1 or MAP01 (default: the first)");
+    cmd->add_option("--width", args->options.width, "window width (default 1280)");
+    cmd->add_option("--height", args->options.height, "window height (default 720)");
+    cmd->add_option("--spp", args->options.samplesPerFrame, "samples per pixel per frame (default 1)");
+    cmd->add_flag("--no-vsync", args->noVsync, "present as fast as possible");
+    cmd->add_option("--frames", args->options.frames, "automation: play at once, render N frames, then exit");
+    cmd->add_option("--screenshot", args->options.screenshot, "automation: with --frames, write frame N to this PNG");
+    cmd->add_flag("--denoise", args->options.denoise, "start with the a-trous denoiser on");
+    cmd->add_option("--debug", args->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles");
+    addDeviceOption(*cmd, args->options.device);
+    addCameraOptions(*cmd, args->camera);
+    addEnvironmentOptions(*cmd, args->env);
+    cmd->callback([args, &action] { action = [args] { runView(*args); }; });
+}
+
+}  // namespace penumbra::app

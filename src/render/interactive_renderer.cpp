@@ -1,0 +1,244 @@
+#include "render/interactive_renderer.h"
+
+#include <cstring>
+#include <utility>
+
+#include "core/error.h"
+#include "render/frame_uniforms.h"
+#include "render/passes/gbuffer_pass.h"
+
+namespace penumbra {
+namespace {
+
+constexpr VkBufferUsageFlags kPixelUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+bool sameCamera(const shader::FrameUniforms& a, const shader::FrameUniforms& b) {
+    auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
+    return same(a.cameraPosition, b.cameraPosition) && same(a.cameraForward, b.cameraForward) &&
+           same(a.cameraUp, b.cameraUp) && a.tanHalfFovY == b.tanHalfFovY && a.aspect == b.aspect;
+}
+
+// Settings whose change makes the running mean mix two different images.
+bool changesTheImage(const ViewSettings& a, const ViewSettings& b) {
+    auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
+    return a.samplesPerFrame != b.samplesPerFrame || a.maxBounces != b.maxBounces || a.torch != b.torch ||
+           !same(a.torchColor, b.torchColor) || a.torchIntensity != b.torchIntensity || a.torchRange != b.torchRange;
+}
+
+void transferToComputeBarrier(VkCommandBuffer cmd) {
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier,
+                         0, nullptr, 0, nullptr);
+}
+
+}  // namespace
+
+const char* viewerPassName(ViewerPass pass) {
+    switch (pass) {
+        case ViewerPass::Trace: return "trace";
+        case ViewerPass::GBuffer: return "G-buffer";
+        case ViewerPass::Temporal: return "temporal";
+        case ViewerPass::Denoise: return "denoise";
+        case ViewerPass::Tonemap: return "tonemap";
+        case ViewerPass::Heatmap: return "heat map";
+        case ViewerPass::Count: break;
+    }
+    return "?";
+}
+
+InteractiveRenderer::InteractiveRenderer(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight,
+                                         std::uint32_t seed)
+    : ctx_(ctx), arrays_(buildSceneArrays(scene)), commands_(ctx), background_(scene.background),
+      environment_{std::nullopt, std::nullopt, scene.environment.intensity, scene.environment.rotationDegrees}, seed_(seed),
+      timer_(ctx, std::uint32_t(ViewerPass::Count)) {
+    gpuScene_ = std::make_unique<GpuScene>(ctx, commands_, arrays_);
+    // Lights without power are dropped on conversion, but the torch has power, so it stays last.
+    if (torchIsLastLight && !arrays_.punctual.empty() && !scene.lights.empty() && scene.lights.back().intensity > 0)
+        torchLight_ = static_cast<std::uint32_t>(arrays_.punctual.size() - 1);
+    frameUniforms_ = gpu::Buffer(ctx, sizeof(shader::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                 gpu::MemoryKind::HostVisible);
+    viewerUniforms_ = gpu::Buffer(ctx, sizeof(shader::ViewerUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                  gpu::MemoryKind::HostVisible);
+    counters_ = gpu::Buffer(ctx, sizeof(shader::RayCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                            gpu::MemoryKind::HostVisible);
+    heatCounters_ = gpu::Buffer(ctx, sizeof(shader::HeatCounters),
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                gpu::MemoryKind::HostVisible);
+    std::memset(counters_.mapped(), 0, sizeof(shader::RayCounters));
+    std::memset(heatCounters_.mapped(), 0, sizeof(shader::HeatCounters));
+    std::memset(frameUniforms_.mapped(), 0, sizeof(shader::FrameUniforms));
+    std::memset(viewerUniforms_.mapped(), 0, sizeof(shader::ViewerUniforms));
+}
+
+InteractiveRenderer::~InteractiveRenderer() = default;
+
+void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
+    if (width == width_ && height == height_) return;
+    RenderSettings check;
+    check.width = width;
+    check.height = height;
+    validateSettings(check);
+    vkDeviceWaitIdle(ctx_.device());  // the old buffers may still be in use by the last frame
+    width_ = width;
+    height_ = height;
+    const VkDeviceSize pixels = VkDeviceSize(width) * height;
+    auto pixelBuffer = [&](VkDeviceSize bytesPerPixel) {
+        return gpu::Buffer(ctx_, pixels * bytesPerPixel, kPixelUsage, gpu::MemoryKind::DeviceLocal);
+    };
+    accumulation_ = pixelBuffer(sizeof(Vec4));
+    gbuffer_ = pixelBuffer(sizeof(shader::GBufferTexel));
+    gbufferPrev_ = pixelBuffer(sizeof(shader::GBufferTexel));
+    historyA_ = pixelBuffer(sizeof(shader::HistoryTexel));
+    historyB_ = pixelBuffer(sizeof(shader::HistoryTexel));
+    filterA_ = pixelBuffer(sizeof(Vec4));
+    filterB_ = pixelBuffer(sizeof(Vec4));
+    display_ = pixelBuffer(sizeof(std::uint32_t));
+    historyIn_ = &historyA_;
+    historyOut_ = &historyB_;
+    // Everything starts defined, so no pass ever reads uninitialised memory.
+    commands_.run([&](VkCommandBuffer cmd) {
+        for (gpu::Buffer* b : {&accumulation_, &gbuffer_, &gbufferPrev_, &historyA_, &historyB_, &filterA_, &filterB_, &display_})
+            vkCmdFillBuffer(cmd, b->get(), 0, VK_WHOLE_SIZE, 0);
+    });
+    createPasses();
+    historyValid_ = false;
+    previousFrame_.reset();
+}
+
+void InteractiveRenderer::createPasses() {
+    trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_);
+    gbufferPass_ = std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, gbuffer_);
+    auto temporal = [&](const gpu::Buffer& in, const gpu::Buffer& out) {
+        return std::make_unique<TemporalPass>(
+            ctx_, TemporalBuffers{&frameUniforms_, &viewerUniforms_, &accumulation_, &gbuffer_, &gbufferPrev_, &in,
+                                  &out, &filterA_});
+    };
+    temporalAB_ = temporal(historyA_, historyB_);
+    temporalBA_ = temporal(historyB_, historyA_);
+    denoise_ = std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer_, filterA_, filterB_);
+    tonemapA_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyA_, filterB_, gbuffer_, display_);
+    tonemapB_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyB_, filterB_, gbuffer_, display_);
+    heatmap_ = std::make_unique<HeatmapPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, filterB_, heatCounters_);
+}
+
+void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& s) {
+    PN_CHECK(width_ > 0 && height_ > 0);
+    if (previousSettings_ && changesTheImage(*previousSettings_, s)) historyValid_ = false;
+    if (!s.temporal) historyValid_ = false;
+    previousSettings_ = s;
+    if (!historyValid_) frameIndex_ = 0;
+    if (frameIndex_ > 0) std::swap(historyIn_, historyOut_);
+
+    RenderSettings rs;
+    rs.width = width_;
+    rs.height = height_;
+    rs.samplesPerPass = s.samplesPerFrame;
+    rs.maxBounces = s.maxBounces;
+    rs.seed = seed_;
+    shader::FrameUniforms f = makeFrameUniforms(camera, background_, rs, gpuScene_->lightCount, gpuScene_->triCount,
+                                                gpuScene_->nodeCount);
+    // The torch is the last punctual light, so switching it off is leaving it out of the count.
+    f.punctualCount = gpuScene_->punctualCount - (torchLight_ && !s.torch ? 1u : 0u);
+    f.sphereCount = gpuScene_->sphereCount;
+    f.sphereLightCount = gpuScene_->sphereLightCount;
+    setEnvironmentUniforms(f, environment_, gpuScene_->envWidth, gpuScene_->envHeight);
+    f.debugMode = std::uint32_t(s.debug);
+    const bool moved = previousFrame_ && !sameCamera(*previousFrame_, f);
+    const shader::FrameUniforms& prev = previousFrame_ ? *previousFrame_ : f;
+
+    shader::ViewerUniforms v{};
+    v.prevCameraPosition = prev.cameraPosition;
+    v.prevTanHalfFovY = prev.tanHalfFovY;
+    v.prevCameraRight = prev.cameraRight;
+    v.prevAspect = prev.aspect;
+    v.prevCameraUp = prev.cameraUp;
+    v.prevCameraForward = prev.cameraForward;
+    v.historyValid = historyValid_ ? 1u : 0u;
+    v.cameraMoved = moved ? 1u : 0u;
+    v.exposure = s.exposure;
+    v.toneMapper = std::uint32_t(s.toneMapper);
+    v.debugMode = std::uint32_t(s.debug);
+    v.samplesPerFrame = s.samplesPerFrame;
+    v.clampSigma = s.clampSigma;
+    v.depthTolerance = 0.1f;
+    v.normalTolerance = 0.9f;
+    v.maxHistory = s.maxHistory;
+    v.sigmaLuminance = s.sigmaLuminance;
+    v.sigmaNormal = s.sigmaNormal;
+    v.sigmaDepth = s.sigmaDepth;
+    const bool heat = s.debug == DebugView::HeatNodes || s.debug == DebugView::HeatTriangles;
+    const auto* heatMax = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());
+    v.heatMax = heat ? float(s.debug == DebugView::HeatNodes ? heatMax->maxNodes : heatMax->maxTris)
+                     : float(frameIndex_ + 1) * float(s.samplesPerFrame);
+    const bool denoise = s.denoise && s.denoiseIterations > 0 && s.debug == DebugView::None;
+    v.denoise = denoise ? 1u : 0u;
+    std::memcpy(frameUniforms_.mapped(), &f, sizeof(f));
+    std::memcpy(viewerUniforms_.mapped(), &v, sizeof(v));
+    std::memset(counters_.mapped(), 0, sizeof(shader::RayCounters));
+    heatFrame_ = heat;
+
+    timer_.reset();
+    if (torchLight_ && s.torch) {
+        // attachTorch's placement: 15 cm below the eye.
+        shader::PunctualLight light = arrays_.punctual[*torchLight_];
+        light.position = camera.position - normalize(camera.up) * 0.15f;
+        light.intensity = s.torchColor * s.torchIntensity;
+        light.range = s.torchRange;
+        vkCmdUpdateBuffer(cmd, gpuScene_->punctual.get(), VkDeviceSize(*torchLight_) * sizeof(light), sizeof(light),
+                          &light);
+    }
+    vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0);
+    if (heat) vkCmdFillBuffer(cmd, heatCounters_.get(), 0, VK_WHOLE_SIZE, 0);
+    transferToComputeBarrier(cmd);
+
+    auto timed = [&](ViewerPass pass, auto&& body) {
+        timer_.begin(cmd, std::uint32_t(pass));
+        body();
+        timer_.end(cmd, std::uint32_t(pass));
+        recorded_ |= 1u << std::uint32_t(pass);
+    };
+    recorded_ = 0;
+    timed(ViewerPass::Trace, [&] { trace_->record(cmd, width_, height_, frameIndex_, true); });
+    timed(ViewerPass::GBuffer, [&] { gbufferPass_->record(cmd, width_, height_); });
+    if (heat) timed(ViewerPass::Heatmap, [&] { heatmap_->record(cmd, width_, height_); });
+    gpu::computeBarrier(cmd);
+    const bool fromA = historyIn_ == &historyA_;
+    timed(ViewerPass::Temporal, [&] { (fromA ? temporalAB_ : temporalBA_)->record(cmd, width_, height_); });
+    gpu::computeBarrier(cmd);
+    TonemapPass& tonemap = fromA ? *tonemapB_ : *tonemapA_;
+    if (denoise) {
+        timed(ViewerPass::Denoise, [&] { denoise_->record(cmd, width_, height_, s.denoiseIterations); });
+        tonemap.setFiltered(denoise_->output(s.denoiseIterations));
+    } else {
+        tonemap.setFiltered(filterB_);  // the heat map's counts, when it ran
+    }
+    timed(ViewerPass::Tonemap, [&] { tonemap.record(cmd, width_, height_); });
+    gpu::computeBarrier(cmd);
+    // This frame's G-buffer is the next frame's previous one.
+    VkBufferCopy copy{0, 0, gbuffer_.size()};
+    vkCmdCopyBuffer(cmd, gbuffer_.get(), gbufferPrev_.get(), 1, &copy);
+    gpu::computeBarrier(cmd);
+
+    previousFrame_ = f;
+    historyValid_ = true;
+    ++frameIndex_;
+    stats_.samplesPerPixel = frameIndex_ * s.samplesPerFrame;
+}
+
+void InteractiveRenderer::finishFrame() {
+    for (std::uint32_t p = 0; p < std::uint32_t(ViewerPass::Count); ++p)
+        stats_.passMilliseconds[p] = (recorded_ >> p) & 1u ? timer_.milliseconds(p) : 0.0;
+    const auto* counts = static_cast<const shader::RayCounters*>(counters_.mapped());
+    const double traceSeconds = stats_.passMilliseconds[std::size_t(ViewerPass::Trace)] * 1e-3;
+    stats_.raysPerSecond = traceSeconds > 0 ? double(counts->closestRays + counts->shadowRays) / traceSeconds : 0.0;
+    if (heatFrame_) {
+        const auto* heat = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());
+        stats_.heatMaxNodes = heat->maxNodes;
+        stats_.heatMaxTriangles = heat->maxTris;
+    }
+}
+
+}  // namespace penumbra

@@ -1,0 +1,94 @@
+// The viewer's frame: trace (this frame's samples) -> G-buffer -> temporal accumulation ->
+// optional a-trous denoiser -> tonemap into an RGBA8 display buffer; or a debug view. Records
+// into the caller's command buffer so the window can add its copy, UI and present to the same
+// submission. Resolution changes rebuild the per-pixel buffers, never the scene.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "gpu/commands.h"
+#include "gpu/timer.h"
+#include "render/gpu_scene.h"
+#include "render/passes/denoise_pass.h"
+#include "render/passes/gbuffer_pass.h"
+#include "render/passes/temporal_pass.h"
+#include "render/passes/tonemap_pass.h"
+#include "render/passes/trace_pass.h"
+#include "render/settings.h"
+#include "render/view_settings.h"
+
+namespace penumbra {
+
+enum class ViewerPass : std::uint32_t { Trace, GBuffer, Temporal, Denoise, Tonemap, Heatmap, Count };
+const char* viewerPassName(ViewerPass pass);
+
+struct ViewerStats {
+    std::uint32_t samplesPerPixel = 0;  // accumulated since the last reset (the running mean's N)
+    double passMilliseconds[std::size_t(ViewerPass::Count)] = {};  // last frame; -1: no timestamps
+    double raysPerSecond = 0;           // last frame's rays over its trace time
+    std::uint32_t heatMaxNodes = 0, heatMaxTriangles = 0;  // last heat-map frame
+};
+
+class InteractiveRenderer {
+public:
+    // torchIsLastLight: the scene's last light is the camera torch (attachTorch), which then is
+    // the last punctual light too; it is moved to the camera every frame and can be switched off.
+    InteractiveRenderer(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight, std::uint32_t seed = 1);
+    ~InteractiveRenderer();
+
+    // Sets the render resolution; a change reallocates the per-pixel buffers and drops history.
+    void resize(std::uint32_t width, std::uint32_t height);
+    // The next frame starts a new running mean (use after the scene or lighting changed).
+    void resetHistory() { historyValid_ = false; }
+
+    // Writes this frame's uniforms (the previous submission must have finished) and records its
+    // passes; the display buffer holds the frame once the submission completes.
+    void record(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& settings);
+    // Reads the frame's timestamps and counters; call after its submission completed.
+    void finishFrame();
+
+    std::uint32_t width() const { return width_; }
+    std::uint32_t height() const { return height_; }
+    const gpu::Buffer& display() const { return display_; }  // uint RGBA8 per pixel
+    const gpu::Buffer& history() const { return *historyOut_; }  // HistoryTexel per pixel
+    const gpu::Buffer& gbuffer() const { return gbuffer_; }
+    const ViewerStats& stats() const { return stats_; }
+    bool hasTorch() const { return torchLight_.has_value(); }
+    const GpuScene& gpuScene() const { return *gpuScene_; }
+    const SceneArrays& sceneArrays() const { return arrays_; }
+    gpu::Commands& commands() { return commands_; }
+
+private:
+    void createPasses();
+
+    const gpu::Context& ctx_;
+    SceneArrays arrays_;
+    gpu::Commands commands_;
+    std::unique_ptr<GpuScene> gpuScene_;
+    Vec3 background_;
+    Environment environment_;  // intensity and rotation only (the map itself is on the GPU)
+    std::optional<std::uint32_t> torchLight_;
+    std::uint32_t seed_;
+    gpu::Buffer frameUniforms_, viewerUniforms_, counters_, heatCounters_;
+    gpu::Buffer accumulation_, gbuffer_, gbufferPrev_, historyA_, historyB_, filterA_, filterB_, display_;
+    gpu::Buffer* historyIn_ = nullptr;  // last frame's history; the two swap every frame
+    gpu::Buffer* historyOut_ = nullptr;
+    std::unique_ptr<TracePass> trace_;
+    std::unique_ptr<GBufferPass> gbufferPass_;
+    std::unique_ptr<TemporalPass> temporalAB_, temporalBA_;  // one per direction of the swap
+    std::unique_ptr<DenoisePass> denoise_;
+    std::unique_ptr<TonemapPass> tonemapA_, tonemapB_;
+    std::unique_ptr<HeatmapPass> heatmap_;
+    gpu::GpuTimer timer_;
+    std::uint32_t width_ = 0, height_ = 0;
+    bool historyValid_ = false;
+    std::uint32_t frameIndex_ = 0;  // frames since the last reset: the trace pass index
+    std::optional<shader::FrameUniforms> previousFrame_;
+    std::optional<ViewSettings> previousSettings_;
+    bool heatFrame_ = false;
+    std::uint32_t recorded_ = 0;  // bit per ViewerPass timed this frame
+    ViewerStats stats_;
+};
+
+}  // namespace penumbra

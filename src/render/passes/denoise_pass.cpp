@@ -1,0 +1,36 @@
+#include "render/passes/denoise_pass.h"
+
+#include "core/error.h"
+#include "gpu/commands.h"
+#include "render/passes/image_pipeline.h"
+#include "shared/types.h"
+
+namespace penumbra {
+
+DenoisePass::DenoisePass(const gpu::Context& ctx, const gpu::Buffer& frameUniforms, const gpu::Buffer& viewerUniforms,
+                         const gpu::Buffer& gbuffer, const gpu::Buffer& a, const gpu::Buffer& b)
+    : a_(a), b_(b) {
+    auto make = [&](const gpu::Buffer& in, const gpu::Buffer& out) {
+        return makeImagePipeline(ctx, "atrous", frameUniforms,
+                                 {{PN_BINDING_VIEWER, &viewerUniforms},
+                                  {PN_BINDING_GBUFFER, &gbuffer},
+                                  {PN_BINDING_FILTER_IN, &in},
+                                  {PN_BINDING_FILTER_OUT, &out}},
+                                 sizeof(shader::PassPush));
+    };
+    aToB_ = make(a, b);
+    bToA_ = make(b, a);
+}
+
+const gpu::Buffer& DenoisePass::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height,
+                                       std::uint32_t iterations) const {
+    PN_CHECK(iterations >= 1);
+    for (std::uint32_t i = 0; i < iterations; ++i) {
+        shader::PassPush push{1u << i, i + 1 == iterations ? PN_ATROUS_LAST : 0u, 0, 0};
+        dispatchImage(i % 2 == 0 ? *aToB_ : *bToA_, cmd, width, height, &push);
+        gpu::computeBarrier(cmd);
+    }
+    return output(iterations);
+}
+
+}  // namespace penumbra

@@ -1,0 +1,29 @@
+// The SVGF-style a-trous denoiser (shaders/atrous.comp): `iterations` passes with step sizes
+// 1, 2, 4, ..., ping-ponging between two buffers; the last pass multiplies the albedo back.
+#pragma once
+
+#include <memory>
+
+#include "gpu/pipeline.h"
+
+namespace penumbra {
+
+class DenoisePass {
+public:
+    // a holds temporal.comp's output (illumination, variance); b is scratch of the same size.
+    DenoisePass(const gpu::Context& ctx, const gpu::Buffer& frameUniforms, const gpu::Buffer& viewerUniforms,
+                const gpu::Buffer& gbuffer, const gpu::Buffer& a, const gpu::Buffer& b);
+
+    // iterations >= 1. Returns the buffer that holds the result (radiance, variance).
+    const gpu::Buffer& record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height,
+                              std::uint32_t iterations) const;
+    // Where the result of `iterations` passes lands, without recording anything.
+    const gpu::Buffer& output(std::uint32_t iterations) const { return iterations % 2 ? b_ : a_; }
+
+private:
+    const gpu::Buffer& a_;
+    const gpu::Buffer& b_;
+    std::unique_ptr<gpu::ComputePipeline> aToB_, bToA_;
+};
+
+}  // namespace penumbra

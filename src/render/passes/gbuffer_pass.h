@@ -1,0 +1,34 @@
+// The G-buffer (shaders/gbuffer.comp) and the BVH heat map (shaders/heatmap.comp): both trace the
+// pixel-centre primary ray through the scene, so both are scene pipelines.
+#pragma once
+
+#include <memory>
+
+#include "gpu/pipeline.h"
+#include "render/gpu_scene.h"
+
+namespace penumbra {
+
+class GBufferPass {
+public:
+    GBufferPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
+                const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer);
+    void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height) const;
+
+private:
+    std::unique_ptr<gpu::ComputePipeline> pipeline_;
+};
+
+class HeatmapPass {
+public:
+    // heat: vec4 per pixel (nodes visited, triangles tested); counters: HeatCounters (maxima),
+    // which the caller zeroes before each frame.
+    HeatmapPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
+                const gpu::Buffer& viewerUniforms, const gpu::Buffer& heat, const gpu::Buffer& counters);
+    void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height) const;
+
+private:
+    std::unique_ptr<gpu::ComputePipeline> pipeline_;
+};
+
+}  // namespace penumbra

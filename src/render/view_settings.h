@@ -1,0 +1,46 @@
+// What the viewer's panel controls: everything that changes how a frame is made or shown.
+#pragma once
+
+#include <cstdint>
+
+#include "core/vec.h"
+#include "shared/types.h"
+
+namespace penumbra {
+
+enum class ToneMapper : std::uint32_t { Reinhard = PN_TONEMAP_REINHARD, Aces = PN_TONEMAP_ACES };
+
+enum class DebugView : std::uint32_t {
+    None = PN_DEBUG_NONE,
+    Normals = PN_DEBUG_NORMALS,
+    Albedo = PN_DEBUG_ALBEDO,
+    Depth = PN_DEBUG_DEPTH,
+    Motion = PN_DEBUG_MOTION,
+    Samples = PN_DEBUG_SAMPLES,
+    HeatNodes = PN_DEBUG_HEAT_NODES,
+    HeatTriangles = PN_DEBUG_HEAT_TRIS,
+};
+
+struct ViewSettings {
+    std::uint32_t samplesPerFrame = 1;
+    std::uint32_t maxBounces = 8;
+    float resolutionScale = 1.0f;  // render at this fraction of the window, upscaled to it
+    bool temporal = true;
+    bool denoise = false;
+    std::uint32_t denoiseIterations = 5;
+    float sigmaLuminance = 4.0f;
+    float sigmaNormal = 128.0f;
+    float sigmaDepth = 1.0f;
+    float clampSigma = 1.5f;
+    float maxHistory = 32.0f;  // samples kept while the camera moves
+    float exposure = 0.0f;     // stops
+    ToneMapper toneMapper = ToneMapper::Reinhard;
+    DebugView debug = DebugView::None;
+    // The camera torch (a point light moved with the camera each frame).
+    bool torch = false;
+    Vec3 torchColor{1.0f, 0.85f, 0.6f};
+    float torchIntensity = 80.0f;  // candela
+    float torchRange = 0.0f;       // 0: unlimited
+};
+
+}  // namespace penumbra
