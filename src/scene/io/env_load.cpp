@@ -145,8 +145,11 @@ EnvironmentMap decodeExr(std::string_view bytes, const std::string& name) {
     if (version.multipart || version.non_image) throw fail("multi-part and deep OpenEXR files are not supported");
     EXRHeader header;
     InitEXRHeader(&header);
-    if (ParseEXRHeaderFromMemory(&header, &version, data, bytes.size(), &err) != TINYEXR_SUCCESS)
+    if (ParseEXRHeaderFromMemory(&header, &version, data, bytes.size(), &err) != TINYEXR_SUCCESS) {
+        // A header that fails part-way holds what was parsed so far (channel names and the like).
+        FreeEXRHeader(&header);
         throw fail("corrupt OpenEXR header");
+    }
     const long long w = (long long)header.data_window.max_x - header.data_window.min_x + 1;
     const long long h = (long long)header.data_window.max_y - header.data_window.min_y + 1;
     FreeEXRHeader(&header);
