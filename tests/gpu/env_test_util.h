@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "render_helpers.h"
 #include "scene/presets/mesh_builder.h"
 #include "scene/scene.h"
 
@@ -30,21 +31,7 @@ inline EnvironmentMap spotAndGradientMap(int w = 16, int h = 8) {
 }
 
 // A diffuse floor of albedo `albedo` at y = 0 (100 m square, facing up) seen from 3 m above.
-inline Scene envFloorScene(float albedo) {
-    Scene s;
-    s.name = "env floor";
-    std::uint32_t m = addMaterial(s, "floor", Vec3{albedo});
-    Mesh floor;
-    floor.name = "floor";
-    floor.material = m;
-    addQuad(floor, {-50, 0, -50}, {-50, 0, 50}, {50, 0, 50}, {50, 0, -50});
-    s.meshes.push_back(floor);
-    s.camera.position = {0, 3, 0};
-    s.camera.lookAt = {0, 0, 0};
-    s.camera.up = {0, 0, -1};
-    s.camera.fovYDegrees = 20.0f;
-    return s;
-}
+inline Scene envFloorScene(float albedo) { return diffuseFloorScene(albedo, {0, 3, 0}, {0, 0, -1}, 20.0f); }
 
 // Irradiance on an upward-facing plane from a map (nearest lookup, rows of even-height maps end
 // exactly at the horizon): sum of L times the projected solid angle of each upper texel.

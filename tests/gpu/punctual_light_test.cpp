@@ -10,22 +10,9 @@ namespace {
 
 constexpr float kAlbedo = 0.5f;
 
-// A large diffuse floor at y = 0 seen straight down from above.
-Scene floorScene() {
-    Scene s;
-    s.name = "floor";
-    std::uint32_t m = addMaterial(s, "floor", Vec3{kAlbedo});
-    Mesh floor;
-    floor.name = "floor";
-    floor.material = m;
-    addQuad(floor, {-50, 0, -50}, {-50, 0, 50}, {50, 0, 50}, {50, 0, -50});
-    s.meshes.push_back(floor);
-    s.camera.position = {0, 3, 0};
-    s.camera.lookAt = {0, 0, 0};
-    s.camera.up = {0, 0, -1};
-    s.camera.fovYDegrees = 1.0f;  // the whole image sees the point under the camera
-    return s;
-}
+// A large diffuse floor at y = 0 seen straight down from above; the 1-degree field of view makes
+// the whole image see the point under the camera.
+Scene floorScene() { return diffuseFloorScene(kAlbedo, {0, 3, 0}, {0, 0, -1}, 1.0f); }
 
 Vec3 centre(const gpu::Context& ctx, const Scene& scene) {
     Renderer r(ctx, scene, testSettings(8, 8, 16, 1));

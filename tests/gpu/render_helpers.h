@@ -9,6 +9,8 @@
 
 #include "core/vec.h"
 #include "render/settings.h"
+#include "scene/presets/mesh_builder.h"
+#include "scene/scene.h"
 
 namespace penumbra::test {
 
@@ -16,6 +18,24 @@ struct PixelStats {
     double mean;    // mean luminance of the pixel
     double stderr;  // standard error of that mean, from the sample variance
 };
+
+// A diffuse floor of albedo `albedo` at y = 0 (100 m square, facing up), seen from `eye` looking
+// at the origin. A narrow field of view makes every pixel see (almost exactly) the origin.
+inline Scene diffuseFloorScene(float albedo, Vec3 eye, Vec3 up, float fovDegrees) {
+    Scene s;
+    s.name = "floor";
+    std::uint32_t m = addMaterial(s, "floor", Vec3{albedo});
+    Mesh floor;
+    floor.name = "floor";
+    floor.material = m;
+    addQuad(floor, {-50, 0, -50}, {-50, 0, 50}, {50, 0, 50}, {50, 0, -50});
+    s.meshes.push_back(floor);
+    s.camera.position = eye;
+    s.camera.lookAt = {0, 0, 0};
+    s.camera.up = up;
+    s.camera.fovYDegrees = fovDegrees;
+    return s;
+}
 
 // A small test render: width x height, `spp` samples per pixel in passes of up to 16.
 inline RenderSettings testSettings(std::uint32_t width, std::uint32_t height, std::uint32_t spp,

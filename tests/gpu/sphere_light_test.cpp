@@ -17,21 +17,7 @@ constexpr double kPi = 3.14159265358979;
 
 // A large diffuse floor at y = 0; the camera looks at the origin from `eye` with a field of
 // view so narrow that every pixel sees (almost exactly) the origin.
-Scene floorScene(Vec3 eye, float fovDegrees = 0.2f) {
-    Scene s;
-    s.name = "floor";
-    std::uint32_t m = addMaterial(s, "floor", Vec3{kAlbedo});
-    Mesh floor;
-    floor.name = "floor";
-    floor.material = m;
-    addQuad(floor, {-50, 0, -50}, {-50, 0, 50}, {50, 0, 50}, {50, 0, -50});
-    s.meshes.push_back(floor);
-    s.camera.position = eye;
-    s.camera.lookAt = {0, 0, 0};
-    s.camera.up = {0, 1, 0};
-    s.camera.fovYDegrees = fovDegrees;
-    return s;
-}
+Scene floorScene(Vec3 eye, float fovDegrees = 0.2f) { return diffuseFloorScene(kAlbedo, eye, {0, 1, 0}, fovDegrees); }
 
 void addSphereLight(Scene& s, Vec3 centre, float radius, Vec3 radiance) {
     std::uint32_t lamp = addMaterial(s, "lamp", Vec3{0}, radiance);

@@ -1,6 +1,8 @@
 // JSON scene files: round trips, transforms, overrides and one-line errors that say where.
 #include <gtest/gtest.h>
 
+#include "scene_json_test_util.h"
+
 #include <filesystem>
 #include <fstream>
 
@@ -11,18 +13,9 @@
 namespace penumbra {
 namespace {
 
-Scene parse(const std::string& text, SceneFileSettings* settings = nullptr) {
-    return loadSceneJsonFromText(text, ".", "test.json", settings);
-}
+Scene parse(const std::string& text, SceneFileSettings* settings = nullptr) { return test::parseSceneText(text, settings); }
 
-std::string errorOf(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
+std::string errorOf(const std::string& text) { return test::sceneTextError(text); }
 
 TEST(SceneJson, ExportedPresetLoadsBackAsTheSameScene) {
     Scene cornell = makeCornellBox();

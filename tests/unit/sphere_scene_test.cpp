@@ -2,6 +2,8 @@
 // preset's data.
 #include <gtest/gtest.h>
 
+#include "scene_json_test_util.h"
+
 #include <map>
 
 #include "core/error.h"
@@ -12,16 +14,9 @@
 namespace penumbra {
 namespace {
 
-Scene parse(const std::string& text) { return loadSceneJsonFromText(text, ".", "test.json", nullptr); }
+Scene parse(const std::string& text, SceneFileSettings* settings = nullptr) { return test::parseSceneText(text, settings); }
 
-std::string errorOf(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
+std::string errorOf(const std::string& text) { return test::sceneTextError(text); }
 
 const char* kSpheresJson = R"({
   "materials": [{"name": "red", "albedo": [0.8, 0.1, 0.1]}, {"name": "lamp", "emission": [5, 5, 5]}],
