@@ -4,6 +4,7 @@
 #include <tinyexr.h>
 
 #include <climits>
+#include <cstdint>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -132,6 +133,40 @@ EnvironmentMap decodeHdr(std::string_view bytes, const std::string& name) {
     return toMap(name, pixels.get(), w, h, 3);
 }
 
+// Debian's tinyexr asserts (aborting the process) when a header's "type" attribute disagrees with
+// the version field's tiled flag or names an unknown type, so the header's attribute list is
+// walked here first: every attribute must fit in the file, and "type" must be a scanline image
+// with the flag clear or a tiled image with it set.
+void checkExrHeaderBeforeTinyexr(std::string_view bytes, bool tiled, const std::string& name) {
+    std::size_t at = 8;  // after the magic number and the version field
+    auto readString = [&](const char* what) {
+        const std::size_t end = bytes.find('\0', at);
+        if (end == std::string_view::npos || end - at > 255)
+            throw Error(name + ": corrupt OpenEXR header (" + what + " runs past the end)");
+        std::string_view text = bytes.substr(at, end - at);
+        at = end + 1;
+        return text;
+    };
+    while (true) {
+        const std::string_view attribute = readString("an attribute name");
+        if (attribute.empty()) return;  // the header's terminating empty name
+        const std::string_view type = readString("an attribute type");
+        if (bytes.size() - at < 4) throw Error(name + ": corrupt OpenEXR header (attribute size missing)");
+        std::uint32_t size = 0;
+        for (int k = 3; k >= 0; --k) size = (size << 8) | static_cast<unsigned char>(bytes[at + std::size_t(k)]);
+        at += 4;
+        if (size > bytes.size() - at) throw Error(name + ": corrupt OpenEXR header (attribute runs past the end)");
+        if (attribute == "type" && type == "string") {
+            const std::string_view value = bytes.substr(at, size);
+            const bool ok = (value == "scanlineimage" && !tiled) || (value == "tiledimage" && tiled);
+            if (!ok)
+                throw Error(name + ": OpenEXR image type '" + std::string(value.substr(0, 32)) +
+                            "' is not supported or disagrees with the file's tiled flag");
+        }
+        at += size;
+    }
+}
+
 EnvironmentMap decodeExr(std::string_view bytes, const std::string& name) {
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     const char* err = nullptr;
@@ -143,6 +178,7 @@ EnvironmentMap decodeExr(std::string_view bytes, const std::string& name) {
     EXRVersion version;
     if (ParseEXRVersionFromMemory(&version, data, bytes.size()) != TINYEXR_SUCCESS) throw fail("not a readable OpenEXR file");
     if (version.multipart || version.non_image) throw fail("multi-part and deep OpenEXR files are not supported");
+    checkExrHeaderBeforeTinyexr(bytes, version.tiled != 0, name);
     EXRHeader header;
     InitEXRHeader(&header);
     if (ParseEXRHeaderFromMemory(&header, &version, data, bytes.size(), &err) != TINYEXR_SUCCESS) {
