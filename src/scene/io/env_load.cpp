@@ -156,9 +156,12 @@ void checkExrHeaderBeforeTinyexr(std::string_view bytes, bool tiled, const std::
         for (int k = 3; k >= 0; --k) size = (size << 8) | static_cast<unsigned char>(bytes[at + std::size_t(k)]);
         at += 4;
         if (size > bytes.size() - at) throw Error(name + ": corrupt OpenEXR header (attribute runs past the end)");
-        if (attribute == "type" && type == "string") {
-            const std::string_view value = bytes.substr(at, size);
-            const bool ok = (value == "scanlineimage" && !tiled) || (value == "tiledimage" && tiled);
+        (void)type;  // tinyexr reads "type" whatever type name it carries, so this does too
+        if (attribute == "type") {
+            // Like tinyexr: the text up to its first NUL; an empty one means no type.
+            std::string_view value = bytes.substr(at, size);
+            value = value.substr(0, value.find('\0'));
+            const bool ok = value.empty() || (value == "scanlineimage" && !tiled) || (value == "tiledimage" && tiled);
             if (!ok)
                 throw Error(name + ": OpenEXR image type '" + std::string(value.substr(0, 32)) +
                             "' is not supported or disagrees with the file's tiled flag");
