@@ -48,6 +48,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_FILTER_OUT 22    // vec4 per pixel: denoiser output
 #define PN_BINDING_DISPLAY 23       // uint per pixel: RGBA8 (r in the low byte), what the window shows
 #define PN_BINDING_ENV_TEXELS 24     // environment radiance, one vec4 (rgb, unused) per texel
+#define PN_BINDING_OVERLAY_BOXES 25  // BvhNode per box the viewer's box overlay outlines (bounds only)
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic
@@ -266,6 +267,9 @@ PN_STRUCT(FrameUniforms) {
 #define PN_DEBUG_SAMPLES 5u
 #define PN_DEBUG_HEAT_NODES 6u   // BVH nodes visited by the primary ray
 #define PN_DEBUG_HEAT_TRIS 7u    // triangles tested by the primary ray
+#define PN_DEBUG_BVH_BOXES 8u    // the image with the BVH's boxes at one depth outlined (boxes.comp)
+#define PN_MAX_OVERLAY_BOXES 4096u  // boxes the overlay draws at most (each pixel tests every one)
+#define PN_OVERLAY_COLOR 0xff00ffffu  // RGBA8 of an outlined pixel: opaque yellow
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
 
 // What the primary ray saw at a pixel's centre, 48 bytes.
@@ -277,6 +281,14 @@ PN_STRUCT(GBufferTexel) {
     vec2 motion;     // pixels from here to where the same point was in the previous frame
     float pad0;
     float pad1;
+};
+
+// Push constants of the box overlay (boxes.comp), 16 bytes.
+PN_STRUCT(BoxOverlayPush) {
+    uint boxCount;    // boxes in the overlay buffer, at most PN_MAX_OVERLAY_BOXES
+    float lineWidth;  // pixels: a pixel centre this close to a projected box edge is outlined
+    uint pad0;
+    uint pad1;
 };
 
 // The temporal accumulation of one pixel, 32 bytes.
@@ -436,6 +448,7 @@ static_assert(sizeof(GBufferTexel) == 48 && offsetof(GBufferTexel, depth) == 12 
               offsetof(GBufferTexel, motion) == 32);
 static_assert(sizeof(HistoryTexel) == 32 && offsetof(HistoryTexel, samples) == 12 &&
               offsetof(HistoryTexel, moment1) == 16 && offsetof(HistoryTexel, moment2) == 20);
+static_assert(sizeof(BoxOverlayPush) == 16 && offsetof(BoxOverlayPush, lineWidth) == 4);
 static_assert(sizeof(ViewerUniforms) == 128 && offsetof(ViewerUniforms, prevTanHalfFovY) == 12 &&
               offsetof(ViewerUniforms, prevCameraRight) == 16 && offsetof(ViewerUniforms, prevAspect) == 28 &&
               offsetof(ViewerUniforms, prevCameraUp) == 32 && offsetof(ViewerUniforms, historyValid) == 44 &&

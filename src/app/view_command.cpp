@@ -52,7 +52,7 @@ void registerView(CLI::App& app, Action& action) {
     cmd->add_option("--frames", args->options.frames, "automation: play at once, render N frames, then exit");
     cmd->add_option("--screenshot", args->options.screenshot, "automation: with --frames, write frame N to this PNG");
     cmd->add_flag("--denoise", args->options.denoise, "start with the a-trous denoiser on");
-    cmd->add_option("--debug", args->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles");
+    cmd->add_option("--debug", args->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles, boxes");
     addDeviceOption(*cmd, args->options.device);
     addCameraOptions(*cmd, args->camera);
     addEnvironmentOptions(*cmd, args->env);

@@ -10,6 +10,7 @@
 #include "bvh/triangle.h"
 #include "core/error.h"
 #include "render/light_table.h"
+#include "render/scene_objects.h"
 #include "render/sphere_lights.h"
 #include "scene/environment.h"
 
@@ -38,6 +39,8 @@ void packTexture(const TextureRef& ref, std::uint32_t& index, std::uint32_t& wra
     wrap = wrapCode(ref.wrapU) | (wrapCode(ref.wrapV) << 8);
 }
 
+}  // namespace
+
 shader::Material toGpuMaterial(const Material& m) {
     shader::Material gm{};
     gm.albedo = m.albedo;
@@ -58,6 +61,8 @@ shader::Material toGpuMaterial(const Material& m) {
     packTexture(m.emissionTexture, gm.emissionTexture, gm.emissionWrap);
     return gm;
 }
+
+namespace {
 
 // Converts the scene's punctual lights, with each one's share of their total power (what picks
 // among them when there are too many to weigh at every shading point).
@@ -128,6 +133,11 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
 
     out.triVerts.resize(primCount);
     out.triAttribs.resize(primCount);
+    out.primitiveObject.assign(primCount, kNoObject);
+    std::vector<std::uint32_t> triangleMesh;  // mesh of each triangle, in flattenTriangles' order
+    triangleMesh.reserve(tris.size());
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m)
+        triangleMesh.insert(triangleMesh.end(), scene.meshes[m].triangleCount(), std::uint32_t(m));
     std::vector<std::uint32_t> emissive;
     std::vector<double> power;
     std::vector<std::uint32_t> sphereSlots(spheres.spheres.size());
@@ -136,6 +146,8 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
             const std::size_t k = tree.primOrder[i] - tris.size();
             const Sphere& sphere = spheres.spheres[k];
             sphereSlots[k] = static_cast<std::uint32_t>(i);
+            // Spheres past the scene's own are light spheres: not objects the user can edit.
+            if (k < scene.spheres.size()) out.primitiveObject[i] = sphereObject(scene, k);
             out.triVerts[i] = bvh::toSphereVerts(sphere.center, sphere.radius);
             out.triAttribs[i] = {};
             out.triAttribs[i].materialId = sphere.material;
@@ -143,6 +155,7 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
             continue;
         }
         const SceneTriangle& t = tris[tree.primOrder[i]];
+        out.primitiveObject[i] = triangleMesh[tree.primOrder[i]];
         out.triVerts[i] = bvh::toTriVerts(geometry[tree.primOrder[i]]);
         shader::TriAttribs& a = out.triAttribs[i];
         a = {};

@@ -26,11 +26,17 @@ struct SceneArrays {
     std::vector<shader::PunctualLight> punctual;
     std::vector<shader::SphereLight> sphereLights;
     std::uint32_t sphereCount = 0;  // sphere slots among triVerts
+    // Host only (never uploaded, so traversal stays lean): for each primitive in leaf order, the
+    // scene object it came from, numbered as sceneObjectOf/objectPrimitive in scene_objects.h.
+    std::vector<std::uint32_t> primitiveObject;
     EnvTable env;  // empty without an environment map
     bvh::BvhStats stats{};
     double buildMilliseconds = 0;
     double envBuildMilliseconds = 0;
 };
+
+// The GPU form of one material (what buildSceneArrays stores in SceneArrays::materials).
+shader::Material toGpuMaterial(const Material& m);
 
 // Beer-Lambert coefficient per metre of a material's absorption colour and distance (0: clear).
 Vec3 absorptionCoefficient(const Material& m);

@@ -3,7 +3,9 @@
 #include <cstring>
 #include <utility>
 
+#include "bvh/depth_boxes.h"
 #include "core/error.h"
+#include "gpu/check.h"
 #include "render/frame_uniforms.h"
 #include "render/passes/gbuffer_pass.h"
 
@@ -22,7 +24,8 @@ bool sameCamera(const shader::FrameUniforms& a, const shader::FrameUniforms& b) 
 // Settings whose change makes the running mean mix two different images.
 bool changesTheImage(const ViewSettings& a, const ViewSettings& b) {
     auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
-    return a.samplesPerFrame != b.samplesPerFrame || a.maxBounces != b.maxBounces || a.torch != b.torch ||
+    return a.apertureRadius != b.apertureRadius || a.focusDistance != b.focusDistance ||
+           a.samplesPerFrame != b.samplesPerFrame || a.maxBounces != b.maxBounces || a.torch != b.torch ||
            !same(a.torchColor, b.torchColor) || a.torchIntensity != b.torchIntensity || a.torchRange != b.torchRange;
 }
 
@@ -44,6 +47,7 @@ const char* viewerPassName(ViewerPass pass) {
         case ViewerPass::Denoise: return "denoise";
         case ViewerPass::Tonemap: return "tonemap";
         case ViewerPass::Heatmap: return "heat map";
+        case ViewerPass::Boxes: return "BVH boxes";
         case ViewerPass::Count: break;
     }
     return "?";
@@ -51,13 +55,8 @@ const char* viewerPassName(ViewerPass pass) {
 
 InteractiveRenderer::InteractiveRenderer(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight,
                                          std::uint32_t seed)
-    : ctx_(ctx), arrays_(buildSceneArrays(scene)), commands_(ctx), background_(scene.background),
-      environment_{std::nullopt, std::nullopt, scene.environment.intensity, scene.environment.rotationDegrees}, seed_(seed),
-      timer_(ctx, std::uint32_t(ViewerPass::Count)) {
-    gpuScene_ = std::make_unique<GpuScene>(ctx, commands_, arrays_);
-    // Lights without power are dropped on conversion, but the torch has power, so it stays last.
-    if (torchIsLastLight && !arrays_.punctual.empty() && !scene.lights.empty() && scene.lights.back().intensity > 0)
-        torchLight_ = static_cast<std::uint32_t>(arrays_.punctual.size() - 1);
+    : ctx_(ctx), commands_(ctx), seed_(seed), timer_(ctx, std::uint32_t(ViewerPass::Count)) {
+    loadScene(scene, buildSceneArrays(scene), torchIsLastLight);
     frameUniforms_ = gpu::Buffer(ctx, sizeof(shader::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                  gpu::MemoryKind::HostVisible);
     viewerUniforms_ = gpu::Buffer(ctx, sizeof(shader::ViewerUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
@@ -75,13 +74,48 @@ InteractiveRenderer::InteractiveRenderer(const gpu::Context& ctx, const Scene& s
 
 InteractiveRenderer::~InteractiveRenderer() = default;
 
+void InteractiveRenderer::loadScene(const Scene& scene, SceneArrays arrays, bool torchIsLastLight) {
+    arrays_ = std::move(arrays);
+    background_ = scene.background;
+    environment_ = Environment{std::nullopt, std::nullopt, scene.environment.intensity,
+                               scene.environment.rotationDegrees};
+    gpuScene_ = std::make_unique<GpuScene>(ctx_, commands_, arrays_);
+    // Lights without power are dropped on conversion, but the torch has power, so it stays last.
+    torchLight_.reset();
+    if (torchIsLastLight && !arrays_.punctual.empty() && !scene.lights.empty() && scene.lights.back().intensity > 0)
+        torchLight_ = static_cast<std::uint32_t>(arrays_.punctual.size() - 1);
+}
+
+void InteractiveRenderer::rebuildScene(const Scene& scene, bool torchIsLastLight) {
+    SceneArrays arrays = buildSceneArrays(scene);  // throws before anything is torn down
+    PN_VK(vkDeviceWaitIdle(ctx_.device()));         // the last frame may still read the old buffers
+    gpuScene_.reset();
+    loadScene(scene, std::move(arrays), torchIsLastLight);
+    if (width_ > 0) createPasses();
+    historyValid_ = false;
+    previousFrame_.reset();
+}
+
+void InteractiveRenderer::setMaterial(std::uint32_t index, const Material& material) {
+    PN_CHECK(index < arrays_.materials.size());
+    shader::Material gm = toGpuMaterial(material);
+    const shader::Material& old = arrays_.materials[index];
+    PN_CHECK(gm.emission.x == old.emission.x && gm.emission.y == old.emission.y && gm.emission.z == old.emission.z);
+    arrays_.materials[index] = gm;
+    PN_VK(vkDeviceWaitIdle(ctx_.device()));
+    commands_.run([&](VkCommandBuffer cmd) {
+        vkCmdUpdateBuffer(cmd, gpuScene_->materials.get(), VkDeviceSize(index) * sizeof(gm), sizeof(gm), &gm);
+    });
+    historyValid_ = false;
+}
+
 void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
     if (width == width_ && height == height_) return;
     RenderSettings check;
     check.width = width;
     check.height = height;
     validateSettings(check);
-    vkDeviceWaitIdle(ctx_.device());  // the old buffers may still be in use by the last frame
+    PN_VK(vkDeviceWaitIdle(ctx_.device()));  // the old buffers may still be in use by the last frame
     width_ = width;
     height_ = height;
     const VkDeviceSize pixels = VkDeviceSize(width) * height;
@@ -122,6 +156,8 @@ void InteractiveRenderer::createPasses() {
     tonemapA_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyA_, filterB_, gbuffer_, display_);
     tonemapB_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyB_, filterB_, gbuffer_, display_);
     heatmap_ = std::make_unique<HeatmapPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, filterB_, heatCounters_);
+    boxes_ = std::make_unique<BoxOverlayPass>(ctx_, frameUniforms_, viewerUniforms_, display_);
+    boxesDepth_.reset();
 }
 
 void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& s) {
@@ -138,14 +174,20 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     rs.samplesPerPass = s.samplesPerFrame;
     rs.maxBounces = s.maxBounces;
     rs.seed = seed_;
-    shader::FrameUniforms f = makeFrameUniforms(camera, background_, rs, gpuScene_->lightCount, gpuScene_->triCount,
+    Camera lens = camera;
+    lens.apertureRadius = s.apertureRadius;
+    lens.focusDistance = s.focusDistance;
+    shader::FrameUniforms f = makeFrameUniforms(lens, background_, rs, gpuScene_->lightCount, gpuScene_->triCount,
                                                 gpuScene_->nodeCount);
     // The torch is the last punctual light, so switching it off is leaving it out of the count.
     f.punctualCount = gpuScene_->punctualCount - (torchLight_ && !s.torch ? 1u : 0u);
     f.sphereCount = gpuScene_->sphereCount;
     f.sphereLightCount = gpuScene_->sphereLightCount;
     setEnvironmentUniforms(f, environment_, gpuScene_->envWidth, gpuScene_->envHeight);
-    f.debugMode = std::uint32_t(s.debug);
+    // The box overlay draws over the ordinary image, so the other passes see no debug view.
+    const bool boxes = s.debug == DebugView::BvhBoxes;
+    const DebugView shown = boxes ? DebugView::None : s.debug;
+    f.debugMode = std::uint32_t(shown);
     const bool moved = previousFrame_ && !sameCamera(*previousFrame_, f);
     const shader::FrameUniforms& prev = previousFrame_ ? *previousFrame_ : f;
 
@@ -160,7 +202,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     v.cameraMoved = moved ? 1u : 0u;
     v.exposure = s.exposure;
     v.toneMapper = std::uint32_t(s.toneMapper);
-    v.debugMode = std::uint32_t(s.debug);
+    v.debugMode = std::uint32_t(shown);
     v.samplesPerFrame = s.samplesPerFrame;
     v.clampSigma = s.clampSigma;
     v.depthTolerance = 0.1f;
@@ -173,7 +215,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     const auto* heatMax = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());
     v.heatMax = heat ? float(s.debug == DebugView::HeatNodes ? heatMax->maxNodes : heatMax->maxTris)
                      : float(frameIndex_ + 1) * float(s.samplesPerFrame);
-    const bool denoise = s.denoise && s.denoiseIterations > 0 && s.debug == DebugView::None;
+    const bool denoise = s.denoise && s.denoiseIterations > 0 && shown == DebugView::None;
     v.denoise = denoise ? 1u : 0u;
     std::memcpy(frameUniforms_.mapped(), &f, sizeof(f));
     std::memcpy(viewerUniforms_.mapped(), &v, sizeof(v));
@@ -217,6 +259,14 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     }
     timed(ViewerPass::Tonemap, [&] { tonemap.record(cmd, width_, height_); });
     gpu::computeBarrier(cmd);
+    if (boxes) {
+        if (boxesDepth_ != s.boxDepth) {  // the previous frame has finished, so its boxes are free
+            boxes_->setBoxes(bvh::nodesAtDepth(arrays_.nodes, s.boxDepth, PN_MAX_OVERLAY_BOXES));
+            boxesDepth_ = s.boxDepth;
+        }
+        timed(ViewerPass::Boxes, [&] { boxes_->record(cmd, width_, height_, s.boxLineWidth); });
+        gpu::computeBarrier(cmd);
+    }
     // This frame's G-buffer is the next frame's previous one.
     VkBufferCopy copy{0, 0, gbuffer_.size()};
     vkCmdCopyBuffer(cmd, gbuffer_.get(), gbufferPrev_.get(), 1, &copy);

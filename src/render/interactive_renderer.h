@@ -10,6 +10,7 @@
 #include "gpu/commands.h"
 #include "gpu/timer.h"
 #include "render/gpu_scene.h"
+#include "render/passes/box_overlay_pass.h"
 #include "render/passes/denoise_pass.h"
 #include "render/passes/gbuffer_pass.h"
 #include "render/passes/temporal_pass.h"
@@ -20,7 +21,7 @@
 
 namespace penumbra {
 
-enum class ViewerPass : std::uint32_t { Trace, GBuffer, Temporal, Denoise, Tonemap, Heatmap, Count };
+enum class ViewerPass : std::uint32_t { Trace, GBuffer, Temporal, Denoise, Tonemap, Heatmap, Boxes, Count };
 const char* viewerPassName(ViewerPass pass);
 
 struct ViewerStats {
@@ -36,6 +37,13 @@ public:
     // the last punctual light too; it is moved to the camera every frame and can be switched off.
     InteractiveRenderer(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight, std::uint32_t seed = 1);
     ~InteractiveRenderer();
+
+    // Replaces the scene (moved objects, another file): rebuilds the BVH and every GPU buffer and
+    // drops history. A full rebuild: simple, and fast enough for the scenes one edits by hand.
+    void rebuildScene(const Scene& scene, bool torchIsLastLight);
+    // Re-uploads one material and drops history. Its emission must be unchanged, because the
+    // light tables weigh emitters by power (an emission edit needs rebuildScene).
+    void setMaterial(std::uint32_t index, const Material& material);
 
     // Sets the render resolution; a change reallocates the per-pixel buffers and drops history.
     void resize(std::uint32_t width, std::uint32_t height);
@@ -60,6 +68,7 @@ public:
     gpu::Commands& commands() { return commands_; }
 
 private:
+    void loadScene(const Scene& scene, SceneArrays arrays, bool torchIsLastLight);
     void createPasses();
 
     const gpu::Context& ctx_;
@@ -80,6 +89,8 @@ private:
     std::unique_ptr<DenoisePass> denoise_;
     std::unique_ptr<TonemapPass> tonemapA_, tonemapB_;
     std::unique_ptr<HeatmapPass> heatmap_;
+    std::unique_ptr<BoxOverlayPass> boxes_;
+    std::optional<std::uint32_t> boxesDepth_;  // the depth boxes_ holds; none: refill it
     gpu::GpuTimer timer_;
     std::uint32_t width_ = 0, height_ = 0;
     bool historyValid_ = false;

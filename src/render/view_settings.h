@@ -19,6 +19,7 @@ enum class DebugView : std::uint32_t {
     Samples = PN_DEBUG_SAMPLES,
     HeatNodes = PN_DEBUG_HEAT_NODES,
     HeatTriangles = PN_DEBUG_HEAT_TRIS,
+    BvhBoxes = PN_DEBUG_BVH_BOXES,  // the image, with the BVH's boxes at boxDepth outlined
 };
 
 struct ViewSettings {
@@ -36,6 +37,11 @@ struct ViewSettings {
     float exposure = 0.0f;     // stops
     ToneMapper toneMapper = ToneMapper::Reinhard;
     DebugView debug = DebugView::None;
+    std::uint32_t boxDepth = 0;   // BvhBoxes: the BVH depth whose boxes are outlined (root: 0)
+    float boxLineWidth = 1.5f;    // BvhBoxes: pixels
+    // Depth of field, overriding the camera's own (a thin lens; radius 0 is a pinhole).
+    float apertureRadius = 0.0f;  // metres
+    float focusDistance = 0.0f;   // metres along the view direction; 0: the camera's look-at distance
     // The camera torch (a point light moved with the camera each frame).
     bool torch = false;
     Vec3 torchColor{1.0f, 0.85f, 0.6f};

@@ -109,7 +109,7 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
 TEST(Layout, ViewerStructsMatchInTheViewerShaders) {
     using namespace shader;
     std::map<std::string, int> found;
-    for (const char* shaderName : {"gbuffer", "temporal", "atrous", "tonemap", "heatmap"}) {
+    for (const char* shaderName : {"gbuffer", "temporal", "atrous", "tonemap", "heatmap", "boxes"}) {
         Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
         expectMembers(spv, "GBufferTexel", {0, offsetof(GBufferTexel, depth), offsetof(GBufferTexel, albedo),
                                             offsetof(GBufferTexel, surfaceId), offsetof(GBufferTexel, motion),
@@ -131,10 +131,14 @@ TEST(Layout, ViewerStructsMatchInTheViewerShaders) {
         expectMembers(spv, "HeatCounters", {0, offsetof(HeatCounters, maxTris)});
         expectMembers(spv, "FrameUniforms", {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight)});
         expectMembers(spv, "PassPush", {0, offsetof(PassPush, mode), offsetof(PassPush, itemCount), offsetof(PassPush, countRays)});
+        expectMembers(spv, "BoxOverlayPush", {0, offsetof(BoxOverlayPush, lineWidth), offsetof(BoxOverlayPush, pad0),
+                                              offsetof(BoxOverlayPush, pad1)});
+        expectMembers(spv, "BvhNode", {0, offsetof(BvhNode, firstOrRight), offsetof(BvhNode, boundsMax),
+                                       offsetof(BvhNode, triCount)});
         for (const auto& [name, members] : spv) found[name] += 1;
     }
     // Each viewer struct is used by at least one of these shaders; the check above saw it.
-    for (const char* s : {"GBufferTexel", "HistoryTexel", "ViewerUniforms", "HeatCounters"})
+    for (const char* s : {"GBufferTexel", "HistoryTexel", "ViewerUniforms", "HeatCounters", "BoxOverlayPush"})
         EXPECT_GE(found[s], 1) << s << " not found in any viewer shader";
 }
 

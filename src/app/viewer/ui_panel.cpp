@@ -94,7 +94,8 @@ void UiLayer::render(VkCommandBuffer cmd) {
     ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
 }
 
-void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& stats) {
+void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& stats, EditState& edit,
+                        EditRequests& requests) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("Penumbra");
@@ -130,10 +131,18 @@ void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& s
         if (ImGui::Combo("tone mapper", &curve, "Reinhard\0ACES\0")) s.toneMapper = curve ? ToneMapper::Aces : ToneMapper::Reinhard;
         int debug = int(s.debug);
         if (ImGui::Combo("debug view", &debug,
-                         "image\0normals\0albedo\0depth\0motion\0sample count\0BVH nodes visited\0triangles tested\0"))
+                         "image\0normals\0albedo\0depth\0motion\0sample count\0BVH nodes visited\0triangles tested\0"
+                         "BVH boxes by depth\0"))
             s.debug = DebugView(debug);
         if (s.debug == DebugView::HeatNodes) heatLegend("nodes", stats.heatMaxNodes);
         if (s.debug == DebugView::HeatTriangles) heatLegend("triangles", stats.heatMaxTriangles);
+        if (s.debug == DebugView::BvhBoxes) {
+            int depth = int(s.boxDepth);
+            if (ImGui::SliderInt("box depth (root: 0)", &depth, 0, int(state.bvhDepth)))
+                s.boxDepth = std::uint32_t(std::max(depth, 0));
+            ImGui::SliderFloat("line width (px)", &s.boxLineWidth, 1.0f, 5.0f, "%.1f");
+            ImGui::Text("at most %u boxes are drawn", PN_MAX_OVERLAY_BOXES);
+        }
     }
     if (state.hasTorch && ImGui::CollapsingHeader("Torch", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::Checkbox("torch on", &s.torch);
@@ -141,6 +150,7 @@ void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& s
         ImGui::SliderFloat("intensity (cd)", &s.torchIntensity, 0.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic);
         ImGui::SliderFloat("range (m, 0: none)", &s.torchRange, 0.0f, 100.0f);
     }
+    drawEditSections(s, edit, requests);
     if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::Text("%.1f fps, render %ux%u", state.fps, state.renderWidth, state.renderHeight);
         ImGui::Text("accumulated: %u spp", stats.samplesPerPixel);

@@ -7,6 +7,7 @@
 
 #include "gpu/context.h"
 #include "gpu/handle.h"
+#include "app/viewer/edit_panel.h"
 #include "render/interactive_renderer.h"
 #include "render/view_settings.h"
 
@@ -27,6 +28,7 @@ struct PanelState {
     double fps = 0;
     float cameraSpeed = 0;
     std::size_t triangles = 0, bvhNodes = 0;
+    std::size_t bvhDepth = 0;  // the slider's range in the box overlay
     bool hasTorch = false;
     std::string message;  // last screenshot path or error
 };
@@ -39,8 +41,9 @@ public:
     UiLayer& operator=(const UiLayer&) = delete;
 
     void newFrame();
-    // Draws the panel, editing settings and state in place.
-    void drawPanel(ViewSettings& settings, PanelState& state, const ViewerStats& stats);
+    // Draws the panel, editing settings and state in place; edits to the scene become requests.
+    void drawPanel(ViewSettings& settings, PanelState& state, const ViewerStats& stats, EditState& edit,
+                   EditRequests& requests);
     void render(VkCommandBuffer cmd);  // inside the presenter's UI render pass
     bool wantsMouse() const;
     bool wantsKeyboard() const;

@@ -10,13 +10,17 @@
 #include <ctime>
 #include <memory>
 
+#include "app/scene_opener.h"
 #include "app/viewer/camera_controller.h"
+#include "app/viewer/edit_panel.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/screenshot.h"
 #include "app/viewer/ui_panel.h"
 #include "app/viewer/window.h"
+#include "bvh/depth_boxes.h"
 #include "core/error.h"
 #include "render/interactive_renderer.h"
+#include "render/scene_objects.h"
 
 namespace penumbra::viewer {
 namespace {
@@ -27,7 +31,29 @@ struct InputState {
     bool pauseToggled = false, resetCamera = false, screenshot = false;
     double lastX = 0, lastY = 0;
     bool dragging = false;
+    // Left button: a press and release within a few pixels, away from the panel, is a click.
+    bool leftDown = false;
+    double leftDownX = 0, leftDownY = 0;
 };
+
+float cameraSpeedFor(const Scene& scene) {
+    const Aabb bounds = scene.bounds();
+    const float sceneSize = bounds.empty() ? 1.0f : length(bounds.extent());
+    return std::max(0.1f, 0.1f * sceneSize);
+}
+
+void select(const Scene& scene, std::uint32_t object, EditState& edit) {
+    edit.object = object;
+    if (object == kNoObject) return;
+    edit.objectName = objectName(scene, object);
+    edit.materialIndex = objectMaterial(scene, object);
+    edit.material = scene.materials[edit.materialIndex];
+    edit.position = objectCentre(scene, object);
+}
+
+// Applies the panel's edits to the scene and the renderer. Failures go to the panel as one line.
+void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& settings, EditState& edit,
+                const EditRequests& requests, CameraController& controller, PanelState& panel);
 
 bool imguiWantsMouse() { return ImGui::GetIO().WantCaptureMouse; }
 bool imguiWantsKeyboard() { return ImGui::GetIO().WantCaptureKeyboard; }
@@ -61,15 +87,17 @@ DebugView parseDebugView(const std::string& name) {
     const std::pair<const char*, DebugView> views[] = {
         {"none", DebugView::None},     {"normals", DebugView::Normals}, {"albedo", DebugView::Albedo},
         {"depth", DebugView::Depth},   {"motion", DebugView::Motion},   {"samples", DebugView::Samples},
-        {"nodes", DebugView::HeatNodes}, {"triangles", DebugView::HeatTriangles}};
+        {"nodes", DebugView::HeatNodes}, {"triangles", DebugView::HeatTriangles}, {"boxes", DebugView::BvhBoxes}};
     for (const auto& [n, v] : views)
         if (name == n) return v;
-    throw UsageError("--debug must be one of none, normals, albedo, depth, motion, samples, nodes, triangles (got '" +
+    throw UsageError("--debug must be one of none, normals, albedo, depth, motion, samples, nodes, triangles, boxes (got '" +
                      name + "')");
 }
 
 void runViewer(Scene scene, const ViewerOptions& options) {
     ViewSettings settings;
+    settings.apertureRadius = scene.camera.apertureRadius;
+    settings.focusDistance = scene.camera.focusDistance;
     settings.samplesPerFrame = options.samplesPerFrame;
     settings.denoise = options.denoise;
     settings.debug = options.debug;
@@ -88,9 +116,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     Presenter presenter(ctx, window, options.vsync);
     UiLayer ui(ctx, window.get(), presenter);
 
-    const Aabb bounds = scene.bounds();
-    const float sceneSize = bounds.empty() ? 1.0f : length(bounds.extent());
-    CameraController controller(scene.camera, std::max(0.1f, 0.1f * sceneSize));
+    CameraController controller(scene.camera, cameraSpeedFor(scene));
 
     InputState input;
     glfwSetWindowUserPointer(window.get(), &input);
@@ -112,12 +138,14 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
     });
 
+    EditState edit;
     PanelState panel;
     panel.sceneName = scene.name;
     panel.vsync = options.vsync;
     panel.playing = options.frames.has_value();  // automation plays from the start
     panel.triangles = scene.triangleCount();
     panel.bvhNodes = renderer.sceneArrays().nodes.size();
+    panel.bvhDepth = bvh::treeDepth(renderer.sceneArrays().nodes);
     panel.hasTorch = renderer.hasTorch();
 
     bool frameInFlight = false;  // a rendered frame was submitted and not yet finished
@@ -159,6 +187,29 @@ void runViewer(Scene scene, const ViewerOptions& options) {
             move.lookY = float(my - input.lastY);
         }
         input.dragging = rightHeld && (input.dragging || !ui.wantsMouse());
+        const bool leftHeld = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        if (leftHeld && !input.leftDown && !ui.wantsMouse()) {
+            input.leftDown = true;
+            input.leftDownX = mx;
+            input.leftDownY = my;
+        } else if (!leftHeld && input.leftDown) {
+            input.leftDown = false;
+            if (std::abs(mx - input.leftDownX) + std::abs(my - input.leftDownY) < 4.0) {
+                // Window coordinates: the render is the window scaled, so the same ray.
+                int ww = 0, wh = 0;
+                glfwGetWindowSize(w, &ww, &wh);
+                if (ww > 0 && wh > 0) {
+                    const Pick pick = pickPixel(renderer.sceneArrays(), controller.camera(), std::uint32_t(ww),
+                                                std::uint32_t(wh), float(mx), float(my));
+                    if (edit.focusOnClick) {
+                        if (pick.depth > 0) settings.focusDistance = pick.depth;
+                        edit.focusOnClick = false;
+                    } else {
+                        select(scene, pick.object, edit);
+                    }
+                }
+            }
+        }
         input.lastX = mx;
         input.lastY = my;
         controller.update(move, dt);
@@ -167,7 +218,9 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         panel.cameraSpeed = controller.speed();
         if (dt > 0) fpsSmoothed = fpsSmoothed == 0 ? 1.0 / dt : 0.9 * fpsSmoothed + 0.1 / dt;
         panel.fps = fpsSmoothed;
-        ui.drawPanel(settings, panel, renderer.stats());
+        EditRequests requests;
+        ui.drawPanel(settings, panel, renderer.stats(), edit, requests);
+        applyEdits(scene, renderer, settings, edit, requests, controller, panel);
         presenter.setVsync(panel.vsync);
 
         if (!presenter.beginFrame()) {
@@ -221,4 +274,61 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     presenter.waitIdle();
 }
 
+}  // namespace penumbra::viewer
+
+namespace penumbra::viewer {
+namespace {
+
+void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& settings, EditState& edit,
+                const EditRequests& requests, CameraController& controller, PanelState& panel) {
+    if (requests.clearSelection) edit.object = kNoObject;
+    try {
+        if (requests.materialChanged && edit.materialIndex < scene.materials.size()) {
+            Material& target = scene.materials[edit.materialIndex];
+            const bool emissionChanged = target.emission.x != edit.material.emission.x ||
+                                         target.emission.y != edit.material.emission.y ||
+                                         target.emission.z != edit.material.emission.z;
+            target = edit.material;
+            // Emitters are weighed by power in the light tables, so new emission rebuilds them.
+            if (emissionChanged) renderer.rebuildScene(scene, true);
+            else renderer.setMaterial(edit.materialIndex, target);
+        }
+        if (requests.moveObject && isObject(scene, edit.object)) {
+            translateObject(scene, edit.object, edit.position - objectCentre(scene, edit.object));
+            renderer.rebuildScene(scene, true);
+            panel.bvhNodes = renderer.sceneArrays().nodes.size();
+            panel.bvhDepth = bvh::treeDepth(renderer.sceneArrays().nodes);
+        }
+        if (requests.openScene) {
+            app::OpenedScene opened = app::openSceneFile(edit.openPath);
+            if (!opened.scene) {
+                edit.openMessage = opened.error;
+                std::fprintf(stderr, "penumbra: error: %s\n", opened.error.c_str());
+                return;
+            }
+            Scene next = std::move(*opened.scene);
+            ViewSettings nextSettings = settings;
+            prepareTorch(next, nextSettings);
+            renderer.rebuildScene(next, true);
+            scene = std::move(next);
+            settings = nextSettings;
+            settings.apertureRadius = scene.camera.apertureRadius;
+            settings.focusDistance = scene.camera.focusDistance;
+            controller = CameraController(scene.camera, cameraSpeedFor(scene));
+            edit.object = kNoObject;
+            edit.openMessage.clear();
+            panel.sceneName = scene.name;
+            panel.triangles = scene.triangleCount();
+            panel.bvhNodes = renderer.sceneArrays().nodes.size();
+            panel.bvhDepth = bvh::treeDepth(renderer.sceneArrays().nodes);
+            panel.hasTorch = renderer.hasTorch();
+        }
+    } catch (const Error& e) {
+        // The renderer keeps its previous scene when a rebuild fails before the upload.
+        edit.openMessage = e.what();
+        std::fprintf(stderr, "penumbra: error: %s\n", e.what());
+    }
+}
+
+}  // namespace
 }  // namespace penumbra::viewer

@@ -1,0 +1,78 @@
+#include "app/viewer/edit_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+
+namespace penumbra::viewer {
+namespace {
+
+void depthOfField(ViewSettings& s, EditState& state) {
+    if (!ImGui::CollapsingHeader("Depth of field", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::SliderFloat("aperture radius (m)", &s.apertureRadius, 0.0f, 0.5f, "%.4f", ImGuiSliderFlags_Logarithmic);
+    ImGui::SliderFloat("focus distance (m, 0: look-at)", &s.focusDistance, 0.0f, 100.0f, "%.3f",
+                       ImGuiSliderFlags_Logarithmic);
+    s.apertureRadius = std::max(s.apertureRadius, 0.0f);
+    s.focusDistance = std::max(s.focusDistance, 0.0f);
+    ImGui::Checkbox("focus on the next clicked point", &state.focusOnClick);
+}
+
+void selection(EditState& state, EditRequests& requests) {
+    if (!ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (state.object == kNoObject) {
+        ImGui::TextWrapped("Left-click a surface to select its object.");
+        return;
+    }
+    ImGui::Text("%s", state.objectName.c_str());
+    ImGui::SameLine();
+    if (ImGui::Button("Deselect")) requests.clearSelection = true;
+    Material& m = state.material;
+    ImGui::Text("material %u '%s' (shared by every object that uses it)", state.materialIndex, m.name.c_str());
+    bool changed = false;
+    changed |= ImGui::ColorEdit3("base colour", &m.albedo.x);
+    changed |= ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f);
+    changed |= ImGui::SliderFloat("roughness", &m.roughness, 0.0f, 1.0f);
+    changed |= ImGui::SliderFloat("transmission", &m.transmission, 0.0f, 1.0f);
+    changed |= ImGui::SliderFloat("ior", &m.ior, 1.0f, 3.0f);
+    changed |= ImGui::DragFloat3("emission", &m.emission.x, 0.05f, 0.0f, 1000.0f);
+    m.emission = Vec3{std::max(m.emission.x, 0.0f), std::max(m.emission.y, 0.0f), std::max(m.emission.z, 0.0f)};
+    requests.materialChanged = changed;
+    // Moving rebuilds the whole BVH, so it happens when the drag ends, not on every step.
+    ImGui::DragFloat3("position", &state.position.x, 0.01f);
+    if (ImGui::IsItemDeactivatedAfterEdit()) requests.moveObject = true;
+}
+
+void openScene(EditState& state, EditRequests& requests) {
+    if (!ImGui::CollapsingHeader("Scene file", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    std::array<char, 1024> buffer{};
+    std::strncpy(buffer.data(), state.openPath.c_str(), buffer.size() - 1);
+    const bool entered = ImGui::InputText("path", buffer.data(), buffer.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    state.openPath = buffer.data();
+    ImGui::SameLine();
+    if (ImGui::Button("Open") || entered) requests.openScene = true;
+    if (!state.openMessage.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", state.openMessage.c_str());
+        ImGui::PopStyleColor();
+    }
+}
+
+}  // namespace
+
+void drawEditSections(ViewSettings& settings, EditState& state, EditRequests& requests) {
+    depthOfField(settings, state);
+    selection(state, requests);
+    openScene(state, requests);
+}
+
+Vec3 objectCentre(const Scene& scene, std::uint32_t object) {
+    if (!isObject(scene, object)) return Vec3{0};
+    if (object >= scene.meshes.size()) return scene.spheres[object - scene.meshes.size()].center;
+    Aabb box;
+    for (const Vec3& p : scene.meshes[object].positions) box.grow(p);
+    return box.empty() ? Vec3{0} : box.center();
+}
+
+}  // namespace penumbra::viewer

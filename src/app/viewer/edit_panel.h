@@ -1,0 +1,39 @@
+// The panel's editing half: depth of field, the selected object (its material and position) and
+// opening another scene. It only edits its state and raises requests; viewer_app applies them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "render/scene_objects.h"
+#include "render/view_settings.h"
+#include "scene/scene.h"
+
+namespace penumbra::viewer {
+
+struct EditState {
+    bool focusOnClick = false;           // the next left click sets the focus distance
+    std::uint32_t object = kNoObject;    // the selection
+    std::string objectName;
+    std::uint32_t materialIndex = 0;
+    Material material;                   // the selection's material as edited
+    Vec3 position{0};                    // the selection's centre as edited
+    std::string openPath;                // the Open field
+    std::string openMessage;             // the last Open error (one line)
+};
+
+// What the user asked for this frame.
+struct EditRequests {
+    bool materialChanged = false;  // write state.material to scene.materials[state.materialIndex]
+    bool moveObject = false;       // translate the selection to state.position
+    bool openScene = false;        // open state.openPath
+    bool clearSelection = false;
+};
+
+// Draws the sections into the current ImGui window.
+void drawEditSections(ViewSettings& settings, EditState& state, EditRequests& requests);
+
+// The centre of an object (a sphere's centre, a mesh's bounding-box centre).
+Vec3 objectCentre(const Scene& scene, std::uint32_t object);
+
+}  // namespace penumbra::viewer

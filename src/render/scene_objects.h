@@ -1,0 +1,36 @@
+// The objects a viewer user can pick and edit: each mesh, then each of the scene's own spheres
+// (the spheres made for sphere lights are lights, not objects). Picking traces the pixel-centre
+// ray on the CPU over the host arrays, so it needs no read-back from the GPU.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "render/gpu_scene.h"
+#include "scene/scene.h"
+
+namespace penumbra {
+
+inline constexpr std::uint32_t kNoObject = 0xffffffffu;
+
+std::uint32_t sphereObject(const Scene& scene, std::size_t sphere);
+bool isObject(const Scene& scene, std::uint32_t object);
+std::string objectName(const Scene& scene, std::uint32_t object);  // "mesh 'floor'", "sphere 2"
+std::uint32_t objectMaterial(const Scene& scene, std::uint32_t object);
+// Moves a mesh's vertices or a sphere's centre by offset (the caller rebuilds the GPU scene).
+void translateObject(Scene& scene, std::uint32_t object, Vec3 offset);
+
+// What the pixel-centre primary ray of pixel (x, y) hits: the same ray gbuffer.comp traces.
+struct Pick {
+    std::uint32_t object = kNoObject;      // kNoObject: a miss, or a light sphere
+    std::uint32_t primitive = PN_NO_HIT;   // leaf-order index into the arrays
+    std::uint32_t material = 0;            // the hit primitive's material (valid when primitive is)
+    float depth = 0;                       // linear depth along the view direction (0: miss)
+};
+// x, y: pixel coordinates of a width x height image, row 0 at the top (fractions allowed; the
+// ray goes through the centre of the pixel that contains the point). Alpha-tested holes are
+// ignored: a click on a cut-out picks the surface it cuts.
+Pick pickPixel(const SceneArrays& arrays, const Camera& camera, std::uint32_t width, std::uint32_t height, float x,
+               float y);
+
+}  // namespace penumbra

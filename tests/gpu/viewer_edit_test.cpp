@@ -1,0 +1,171 @@
+// Editing in the viewer: picking agrees with the G-buffer, a moved sphere moves in the G-buffer,
+// a material edit changes the image as it must, and depth-of-field changes restart the mean.
+#include <cmath>
+
+#include "render/interactive_renderer.h"
+#include "render/scene_objects.h"
+#include "gpu_fixture.h"
+
+namespace penumbra::test {
+namespace {
+
+using ViewerEditTest = GpuTest;
+
+constexpr std::uint32_t kW = 24, kH = 18;
+
+// A grey wall (mesh 0, material 0) at z = 0 behind a sphere (object 1, material 1) at z = 1,
+// under a white sky, seen from z = 5.
+Scene wallAndSphere() {
+    Scene scene;
+    scene.name = "wall and sphere";
+    Material wall;
+    wall.name = "wall";
+    wall.albedo = Vec3{0.8f};
+    Material ball;
+    ball.name = "ball";
+    ball.albedo = Vec3{0.5f, 0.2f, 0.2f};
+    scene.materials = {wall, ball};
+    Mesh quad;
+    quad.name = "wall";
+    quad.positions = {{-4, -4, 0}, {4, -4, 0}, {4, 4, 0}, {-4, 4, 0}};
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    quad.material = 0;
+    scene.meshes.push_back(quad);
+    scene.spheres.push_back({Vec3{0, 0, 1}, 0.5f, 1});
+    scene.background = Vec3{1.0f};
+    scene.camera.position = {0, 0, 5};
+    scene.camera.lookAt = {0, 0, 0};
+    scene.camera.fovYDegrees = 40;
+    return scene;
+}
+
+std::vector<shader::GBufferTexel> renderGBuffer(gpu::Context& ctx, InteractiveRenderer& viewer, const Camera& camera,
+                                                const ViewSettings& vs) {
+    viewer.commands().run([&](VkCommandBuffer cmd) { viewer.record(cmd, camera, vs); });
+    viewer.finishFrame();
+    return gpu::downloadBuffer<shader::GBufferTexel>(ctx, viewer.commands(), viewer.gbuffer(), kW * kH);
+}
+
+TEST_F(ViewerEditTest, PickingSeesWhatTheGBufferSees) {
+    Scene scene = wallAndSphere();
+    InteractiveRenderer viewer(*ctx, scene, false);
+    viewer.resize(kW, kH);
+    auto g = renderGBuffer(*ctx, viewer, scene.camera, ViewSettings{});
+    std::uint32_t sphereHits = 0;
+    for (std::uint32_t y = 0; y < kH; ++y)
+        for (std::uint32_t x = 0; x < kW; ++x) {
+            const Pick pick = pickPixel(viewer.sceneArrays(), scene.camera, kW, kH, float(x) + 0.3f, float(y) + 0.8f);
+            const shader::GBufferTexel& t = g[y * kW + x];
+            ASSERT_NE(pick.primitive, PN_NO_HIT) << x << "," << y;  // the wall fills the view
+            EXPECT_EQ(pick.material + 1, t.surfaceId) << x << "," << y;
+            EXPECT_NEAR(pick.depth, t.depth, 1e-4f * t.depth) << x << "," << y;
+            sphereHits += pick.object == sphereObject(scene, 0);
+        }
+    EXPECT_GT(sphereHits, 4u);
+    // Known pixels: the centre sees the sphere, a corner the wall.
+    EXPECT_EQ(pickPixel(viewer.sceneArrays(), scene.camera, kW, kH, kW / 2, kH / 2).object, sphereObject(scene, 0));
+    EXPECT_EQ(pickPixel(viewer.sceneArrays(), scene.camera, kW, kH, 0, 0).object, 0u);
+    EXPECT_EQ(objectName(scene, 0), "mesh 'wall'");
+}
+
+// The mean image column of the pixels showing material `material`.
+double centroidX(const std::vector<shader::GBufferTexel>& g, std::uint32_t material, std::uint32_t& count) {
+    double sum = 0;
+    count = 0;
+    for (std::uint32_t i = 0; i < g.size(); ++i)
+        if (g[i].surfaceId == material + 1) {
+            sum += double(i % kW) + 0.5;
+            ++count;
+        }
+    return count ? sum / count : -1;
+}
+
+TEST_F(ViewerEditTest, MovingTheSphereMovesItInTheGBuffer) {
+    Scene scene = wallAndSphere();
+    InteractiveRenderer viewer(*ctx, scene, false);
+    viewer.resize(kW, kH);
+    std::uint32_t before = 0, after = 0;
+    const double x0 = centroidX(renderGBuffer(*ctx, viewer, scene.camera, ViewSettings{}), 1, before);
+    EXPECT_NEAR(x0, kW / 2.0, 0.01);  // centred (the image is symmetric about its middle column)
+
+    translateObject(scene, sphereObject(scene, 0), Vec3{1, 0, 0});
+    EXPECT_EQ(scene.spheres[0].center.x, 1.0f);
+    viewer.rebuildScene(scene, false);
+    const double x1 = centroidX(renderGBuffer(*ctx, viewer, scene.camera, ViewSettings{}), 1, after);
+    // +x is the image's right. The centre projects to 1 / (4 tan(20 deg) aspect) in NDC; the
+    // silhouette's centroid is that up to a fraction of a pixel at this size.
+    const double aspect = double(kW) / kH;
+    const double expected = kW / 2.0 + 0.5 * kW / (4.0 * std::tan(20.0 * M_PI / 180.0) * aspect);
+    EXPECT_NEAR(x1, expected, 0.75) << "before " << x0;
+    EXPECT_NEAR(double(after), double(before), 0.25 * before);  // same size, nearly: same depth
+    EXPECT_EQ(pickPixel(viewer.sceneArrays(), scene.camera, kW, kH, kW / 2, kH / 2).object, 0u);  // the wall now
+}
+
+// Mean radiance over the pixels whose G-buffer shows `material` there and at all 8 neighbours
+// (the trace jitters samples over the pixel, so a pixel at a silhouette mixes both surfaces).
+double meanOver(const std::vector<shader::HistoryTexel>& h, const std::vector<shader::GBufferTexel>& g,
+                std::uint32_t material) {
+    double sum = 0;
+    std::uint32_t n = 0;
+    for (std::uint32_t y = 1; y + 1 < kH; ++y)
+        for (std::uint32_t x = 1; x + 1 < kW; ++x) {
+            bool interior = true;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    interior = interior && g[(y + dy) * kW + (x + dx)].surfaceId == material + 1;
+            if (!interior) continue;
+            sum += luminance(h[y * kW + x].color);
+            ++n;
+        }
+    EXPECT_GT(n, 3u) << "material " << material << " covers too few pixels to judge";
+    return n ? sum / n : -1;
+}
+
+TEST_F(ViewerEditTest, ABlackWallTurnsBlackAndTheMeanRestarts) {
+    Scene scene = wallAndSphere();
+    InteractiveRenderer viewer(*ctx, scene, false);
+    viewer.resize(kW, kH);
+    ViewSettings vs;
+    vs.maxBounces = 3;
+    auto run = [&](int frames) {
+        std::vector<shader::GBufferTexel> g;
+        for (int k = 0; k < frames; ++k) g = renderGBuffer(*ctx, viewer, scene.camera, vs);
+        return std::pair{gpu::downloadBuffer<shader::HistoryTexel>(*ctx, viewer.commands(), viewer.history(), kW * kH),
+                         g};
+    };
+    auto [h0, g0] = run(2);
+    // Under a white sky of radiance 1 the wall's radiance is at most its albedo, and the sphere
+    // blocks little of the sky at the wall: well above 0.3.
+    const double wallBefore = meanOver(h0, g0, 0);
+    EXPECT_GT(wallBefore, 0.3);
+    EXPECT_LT(wallBefore, 0.8 + 1e-3);
+
+    Material black = scene.materials[0];
+    black.albedo = Vec3{0};
+    viewer.setMaterial(0, black);
+    auto [h1, g1] = run(1);
+    EXPECT_EQ(viewer.stats().samplesPerPixel, 1u);  // the running mean restarted
+    // A Lambertian wall of albedo 0 that emits nothing reflects nothing: exactly black.
+    EXPECT_EQ(meanOver(h1, g1, 0), 0.0);
+    EXPECT_GT(meanOver(h1, g1, 1), 0.0);  // the sphere still shows
+}
+
+TEST_F(ViewerEditTest, DepthOfFieldChangesRestartTheMean) {
+    Scene scene = wallAndSphere();
+    InteractiveRenderer viewer(*ctx, scene, false);
+    viewer.resize(kW, kH);
+    ViewSettings vs;
+    vs.maxBounces = 1;
+    for (int k = 0; k < 2; ++k) renderGBuffer(*ctx, viewer, scene.camera, vs);
+    EXPECT_EQ(viewer.stats().samplesPerPixel, 2u);
+    vs.apertureRadius = 0.1f;
+    renderGBuffer(*ctx, viewer, scene.camera, vs);
+    EXPECT_EQ(viewer.stats().samplesPerPixel, 1u);
+    renderGBuffer(*ctx, viewer, scene.camera, vs);
+    vs.focusDistance = 4.0f;
+    renderGBuffer(*ctx, viewer, scene.camera, vs);
+    EXPECT_EQ(viewer.stats().samplesPerPixel, 1u);
+}
+
+}  // namespace
+}  // namespace penumbra::test
