@@ -14,6 +14,7 @@
 #include "lib/sampling.glsl"
 #include "lib/rng.glsl"
 #include "lib/sun.glsl"
+#include "lib/mis.glsl"
 
 layout(std430, set = 0, binding = PN_BINDING_ENV_TABLE) readonly buffer EnvTableBuffer { EnvAlias envTable[]; };
 layout(std430, set = 0, binding = PN_BINDING_ENV_TEXELS) readonly buffer EnvTexelBuffer { vec4 envTexels[]; };
@@ -94,35 +95,22 @@ EnvSample sampleEnvironment(vec3 n, inout uint rng) {
     return es;
 }
 
-// MIS weights for the distant lights under frame.misMode. A strategy that cannot produce the
-// sample (pdf 0) leaves it wholly to the other, whatever the mode, so no light is lost.
-float distantLightWeight(float lightPdf, float bsdfPdf) {
-    if (frame.misMode == PN_MIS_LIGHT_ONLY) return 1.0;
-    if (frame.misMode == PN_MIS_BSDF_ONLY) return bsdfPdf > 0.0 ? 0.0 : 1.0;
-    return powerHeuristic(lightPdf, bsdfPdf);
-}
-float distantBsdfWeight(float bsdfPdf, float lightPdf) {
-    if (frame.misMode == PN_MIS_BSDF_ONLY) return 1.0;
-    if (frame.misMode == PN_MIS_LIGHT_ONLY) return lightPdf > 0.0 ? 0.0 : 1.0;
-    return powerHeuristic(bsdfPdf, lightPdf);
-}
-
 // Light carried by a ray that left the scene from `from` (shading normal fromNormal) along
 // `direction`: the environment and any sun disk it points into. bsdfPdf is the solid-angle pdf of
 // the BSDF sample that made the ray (0: a camera ray, which no light sampling competes with).
 vec3 escapedRadiance(vec3 from, vec3 fromNormal, vec3 direction, float bsdfPdf) {
     vec3 L = vec3(0.0);
+    // Weights as for any emitter BSDF sampling hits (lib/mis.glsl); no competing light sample
+    // after the camera or a delta lobe.
+    const bool unsampled = !(bsdfPdf > 0.0);
     if (frame.envIntensity > 0.0) {
-        float weight = 1.0;
-        if (bsdfPdf > 0.0) weight = distantBsdfWeight(bsdfPdf, environmentIsLight() ? environmentPdf(direction, fromNormal) : 0.0);
-        L += environmentRadiance(direction) * weight;
+        float lightPdf = environmentIsLight() ? environmentPdf(direction, fromNormal) : 0.0;
+        L += environmentRadiance(direction) * misWeightHit(bsdfPdf, lightPdf, unsampled);
     }
     for (uint i = 0u; i < frame.punctualCount; ++i) {
         PunctualLight l = punctualLights[i];
         if (!isSunDisk(l) || !insideSunDisk(l, direction)) continue;
-        float weight = 1.0;
-        if (bsdfPdf > 0.0) weight = distantBsdfWeight(bsdfPdf, punctualPickPmf(i, from) * sunConePdf(l));
-        L += sunRadiance(l) * weight;
+        L += sunRadiance(l) * misWeightHit(bsdfPdf, punctualPickPmf(i, from) * sunConePdf(l), unsampled);
     }
     return L;
 }

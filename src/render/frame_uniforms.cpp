@@ -43,6 +43,17 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     return f;
 }
 
+shader::FrameUniforms makeSceneFrameUniforms(const Camera& camera, Vec3 background, const Environment& env,
+                                             const RenderSettings& settings, const GpuScene& scene) {
+    shader::FrameUniforms f =
+        makeFrameUniforms(camera, background, settings, scene.lightCount, scene.triCount, scene.nodeCount);
+    f.punctualCount = scene.punctualCount;
+    f.sphereCount = scene.sphereCount;
+    f.sphereLightCount = scene.sphereLightCount;
+    setEnvironmentUniforms(f, env, scene.envWidth, scene.envHeight);
+    return f;
+}
+
 void setEnvironmentUniforms(shader::FrameUniforms& frame, const Environment& env, std::uint32_t width,
                             std::uint32_t height) {
     frame.envWidth = width;

@@ -177,13 +177,9 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     Camera lens = camera;
     lens.apertureRadius = s.apertureRadius;
     lens.focusDistance = s.focusDistance;
-    shader::FrameUniforms f = makeFrameUniforms(lens, background_, rs, gpuScene_->lightCount, gpuScene_->triCount,
-                                                gpuScene_->nodeCount);
+    shader::FrameUniforms f = makeSceneFrameUniforms(lens, background_, environment_, rs, *gpuScene_);
     // The torch is the last punctual light, so switching it off is leaving it out of the count.
-    f.punctualCount = gpuScene_->punctualCount - (torchLight_ && !s.torch ? 1u : 0u);
-    f.sphereCount = gpuScene_->sphereCount;
-    f.sphereLightCount = gpuScene_->sphereLightCount;
-    setEnvironmentUniforms(f, environment_, gpuScene_->envWidth, gpuScene_->envHeight);
+    if (torchLight_ && !s.torch) --f.punctualCount;
     // The box overlay draws over the ordinary image, so the other passes see no debug view.
     const bool boxes = s.debug == DebugView::BvhBoxes;
     const DebugView shown = boxes ? DebugView::None : s.debug;

@@ -12,12 +12,8 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
     : ctx_(ctx), settings_(settings), arrays_(buildSceneArrays(scene)), commands_(ctx), timer_(ctx, 1) {
     validateSettings(settings_);
     gpuScene_ = std::make_unique<GpuScene>(ctx, commands_, arrays_);
-    shader::FrameUniforms frame = makeFrameUniforms(scene.camera, scene.background, settings_, gpuScene_->lightCount,
-                                                    gpuScene_->triCount, gpuScene_->nodeCount);
-    frame.punctualCount = gpuScene_->punctualCount;
-    frame.sphereCount = gpuScene_->sphereCount;
-    frame.sphereLightCount = gpuScene_->sphereLightCount;
-    setEnvironmentUniforms(frame, scene.environment, gpuScene_->envWidth, gpuScene_->envHeight);
+    shader::FrameUniforms frame =
+        makeSceneFrameUniforms(scene.camera, scene.background, scene.environment, settings_, *gpuScene_);
     frameUniforms_ = gpu::Buffer(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryKind::HostVisible);
     std::memcpy(frameUniforms_.mapped(), &frame, sizeof(frame));
 

@@ -30,10 +30,8 @@ std::vector<Vec4> runEnvKernel(const gpu::Context& ctx, Scene scene, std::uint32
     GpuScene gpuScene(ctx, commands, arrays);
     RenderSettings settings;
     settings.seed = 7;
-    shader::FrameUniforms frame = makeFrameUniforms(scene.camera, scene.background, settings, gpuScene.lightCount,
-                                                    gpuScene.triCount, gpuScene.nodeCount);
-    frame.punctualCount = gpuScene.punctualCount;
-    setEnvironmentUniforms(frame, scene.environment, gpuScene.envWidth, gpuScene.envHeight);
+    shader::FrameUniforms frame =
+        makeSceneFrameUniforms(scene.camera, scene.background, scene.environment, settings, gpuScene);
     gpu::Buffer frameBuffer(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryKind::HostVisible);
     std::memcpy(frameBuffer.mapped(), &frame, sizeof(frame));
     std::vector<Vec4> in = input.empty() ? std::vector<Vec4>(1) : input;

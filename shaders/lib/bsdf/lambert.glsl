@@ -1,13 +1,11 @@
-// The Lambertian BSDF: f = albedo / pi, sampled with a cosine-weighted hemisphere. The world-space
-// forms take the normal; the local forms work in the shading frame (z = normal).
+// The Lambertian BSDF: f = albedo / pi, sampled with a cosine-weighted hemisphere, in the shading
+// frame (z = normal).
 #ifndef PN_BSDF_LAMBERT_GLSL
 #define PN_BSDF_LAMBERT_GLSL
 
 #include "lib/sampling.glsl"
 
 vec3 lambertEval(vec3 albedo) { return albedo * PN_INV_PI; }
-
-float lambertPdf(vec3 n, vec3 wi) { return max(dot(n, wi), 0.0) * PN_INV_PI; }
 
 float lambertPdfLocal(vec3 wi) { return max(wi.z, 0.0) * PN_INV_PI; }
 
