@@ -36,12 +36,23 @@ struct BenchArgs {
 
 double mrays(std::uint64_t rays, double ms) { return ms > 0 ? double(rays) / (ms * 1e3) : 0.0; }
 
+// A JSON string's contents: quotes, backslashes and control characters escaped.
+std::string jsonEscape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+        out += c;
+    }
+    return out;
+}
+
 void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Context& ctx, const ViewerBenchOptions& o,
                      const ViewerBenchResult& r) {
     std::printf("{\n  \"scene\": \"%s\",\n  \"device\": \"%s\",\n  \"width\": %u,\n  \"height\": %u,\n"
                 "  \"spp\": %u,\n  \"bounces\": %u,\n  \"temporal\": %s,\n  \"denoise_passes\": %u,\n"
                 "  \"camera_motion\": \"%s\",\n  \"frames\": %d,\n  \"viewer_frame_ms\": %.4f,\n  \"passes\": {",
-                scene.name.c_str(), ctx.info().name.c_str(), o.width, o.height, o.view.samplesPerFrame,
+                jsonEscape(scene.name).c_str(), jsonEscape(ctx.info().name).c_str(), o.width, o.height, o.view.samplesPerFrame,
                 o.view.maxBounces, o.view.temporal ? "true" : "false", o.view.denoise ? o.view.denoiseIterations : 0,
                 cameraMotionName(o.motion), r.frames, r.frameMs);
     const char* sep = "";
@@ -51,6 +62,13 @@ void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Conte
     }
     std::printf("\n  },\n  \"rays_per_pixel_per_sample\": %.3f,\n  \"trace_mrays_per_s\": %.1f", r.raysPerPixelPerSample,
                 r.mraysPerSecond);
+    std::printf(",\n  \"kernel_features\": \"%s\",\n  \"trace_pipeline\": {", r.kernelFeatures.c_str());
+    sep = "";
+    for (const gpu::PipelineStatistic& s : r.traceStatistics) {
+        std::printf("%s\n    \"%s\": \"%s\"", sep, jsonEscape(s.executable + ": " + s.name).c_str(), jsonEscape(s.value).c_str());
+        sep = ",";
+    }
+    std::printf("\n  }");
     if (r.relMseRaw)
         std::printf(",\n  \"budget_ms\": %.2f,\n  \"budget_frames\": %d,\n  \"rel_mse_raw\": %.6g", args.budgetMs,
                     r.budgetFrames, *r.relMseRaw);
@@ -68,6 +86,9 @@ void printViewerText(const Scene& scene, const gpu::Context& ctx, const ViewerBe
     std::printf("  whole frame      %10.3f ms\n", r.frameMs);
     for (const auto& [name, ms] : r.passMs) std::printf("  %-16s %10.3f ms\n", name.c_str(), ms);
     std::printf("  rays per pixel per sample %.2f, trace %.1f Mrays/s\n", r.raysPerPixelPerSample, r.mraysPerSecond);
+    std::printf("  kernel specialised for: %s\n", r.kernelFeatures.c_str());
+    for (const gpu::PipelineStatistic& s : r.traceStatistics)
+        std::printf("  trace pipeline, %s: %s = %s\n", s.executable.c_str(), s.name.c_str(), s.value.c_str());
     if (r.relMseRaw)
         std::printf("  equal-time error over %d frames: relMSE raw %.5g", r.budgetFrames, *r.relMseRaw);
     if (r.relMseDenoised) std::printf(", denoised %.5g", *r.relMseDenoised);

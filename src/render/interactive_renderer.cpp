@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "gpu/check.h"
 #include "render/frame_uniforms.h"
+#include "render/kernel_features.h"
 #include "render/passes/gbuffer_pass.h"
 
 namespace penumbra {
@@ -144,8 +145,9 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
 }
 
 void InteractiveRenderer::createPasses() {
-    trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_);
-    gbufferPass_ = std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, gbuffer_);
+    features_ = penumbra::kernelFeatures(arrays_, Accel::Bvh);
+    trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, features_);
+    gbufferPass_ = std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, gbuffer_, features_);
     auto temporal = [&](const gpu::Buffer& in, const gpu::Buffer& out) {
         return std::make_unique<TemporalPass>(
             ctx_, TemporalBuffers{&frameUniforms_, &viewerUniforms_, &accumulation_, &gbuffer_, &gbufferPrev_, &in,

@@ -69,6 +69,9 @@ public:
     const ViewerStats& stats() const { return stats_; }
     bool hasTorch() const { return torchLight_.has_value(); }
     const GpuScene& gpuScene() const { return *gpuScene_; }
+    // The trace pass's pipeline (for its driver statistics); valid after resize.
+    const gpu::ComputePipeline& tracePipeline() const { return trace_->pipeline(); }
+    std::uint32_t kernelFeatures() const { return features_; }
     const SceneArrays& sceneArrays() const { return arrays_; }
     gpu::Commands& commands() { return commands_; }
 
@@ -98,6 +101,7 @@ private:
     std::optional<std::uint32_t> boxesDepth_;  // the depth boxes_ holds; none: refill it
     gpu::GpuTimer timer_;
     std::uint32_t width_ = 0, height_ = 0;
+    std::uint32_t features_ = PN_FEATURE_ALL;  // what the scene kernels are specialised for
     bool historyValid_ = false;
     std::uint32_t frameIndex_ = 0;  // frames since the last reset: the trace pass index
     std::optional<shader::FrameUniforms> previousFrame_;

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "gpu/buffer.h"
+#include "render/kernel_features.h"
 
 namespace penumbra {
 namespace {
@@ -146,6 +147,8 @@ ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bo
         raysPerSample += double(st.rays) / samples;
     }
     ViewerBenchResult result;
+    result.kernelFeatures = kernelFeatureNames(renderer.kernelFeatures());
+    result.traceStatistics = renderer.tracePipeline().statistics();
     result.frames = o.frames;
     result.frameMs = median(frameMs);
     for (auto& [name, values] : passMs) result.passMs[name] = median(values);

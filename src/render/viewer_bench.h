@@ -45,6 +45,9 @@ struct ViewerBenchResult {
     // denoised image, and how many frames (and samples per pixel) fitted in the budget.
     std::optional<double> relMseRaw, relMseDenoised;
     int budgetFrames = 0;
+    // The trace kernel as compiled: what it was specialised for and the driver's statistics.
+    std::string kernelFeatures;
+    std::vector<gpu::PipelineStatistic> traceStatistics;
 };
 
 ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight,
