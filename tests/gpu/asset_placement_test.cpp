@@ -5,10 +5,10 @@
 // as glTF, each a coarse smooth sphere squashed into an ellipsoid (so the inverse transpose differs
 // from the transform itself) in a glossy metal that shows where its normals point, placed in
 // front of the spheres of the area-lit test world.
-#include <fstream>
 #include <sstream>
 
 #include "../unit/image/test_dir.h"
+#include "../unit/io/mesh_files.h"
 #include "core/transform.h"
 #include "gpu_fixture.h"
 #include "render_compare.h"
@@ -44,43 +44,6 @@ Mesh baked(const Mesh& mesh, const Placement& p) {
     if (p.scale.x * p.scale.y * p.scale.z < 0)
         for (std::size_t i = 0; i < out.indices.size(); i += 3) std::swap(out.indices[i + 1], out.indices[i + 2]);
     return out;
-}
-
-void writeObj(const std::filesystem::path& path, const Mesh& m) {
-    std::ofstream f(path);
-    f.precision(9);
-    for (Vec3 v : m.positions) f << "v " << v.x << ' ' << v.y << ' ' << v.z << '\n';
-    for (Vec3 n : m.normals) f << "vn " << n.x << ' ' << n.y << ' ' << n.z << '\n';
-    for (std::size_t i = 0; i < m.indices.size(); i += 3) {
-        f << 'f';
-        for (int k = 0; k < 3; ++k) f << ' ' << m.indices[i + k] + 1 << "//" << m.indices[i + k] + 1;
-        f << '\n';
-    }
-}
-
-// NAME.gltf with its buffer in NAME.bin: positions, normals (float VEC3) and uint32 indices.
-void writeGltf(const std::filesystem::path& dir, const std::string& name, const Mesh& m) {
-    std::ofstream bin(dir / (name + ".bin"), std::ios::binary);
-    const auto bytes = [](const auto& v) { return std::streamsize(v.size() * sizeof(v[0])); };
-    bin.write(reinterpret_cast<const char*>(m.positions.data()), bytes(m.positions));
-    bin.write(reinterpret_cast<const char*>(m.normals.data()), bytes(m.normals));
-    bin.write(reinterpret_cast<const char*>(m.indices.data()), bytes(m.indices));
-    Vec3 lo = m.positions[0], hi = m.positions[0];
-    for (Vec3 v : m.positions) lo = min(lo, v), hi = max(hi, v);
-    const std::size_t vertexBytes = m.positions.size() * 12, indexBytes = m.indices.size() * 4;
-    std::ofstream f(dir / (name + ".gltf"));
-    f.precision(9);
-    f << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
-        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2}]}],
-        "buffers": [{"uri": ")" << name << ".bin\", \"byteLength\": " << 2 * vertexBytes + indexBytes << R"(}],
-        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": )" << vertexBytes << R"(},
-                        {"buffer": 0, "byteOffset": )" << vertexBytes << ", \"byteLength\": " << vertexBytes << R"(},
-                        {"buffer": 0, "byteOffset": )" << 2 * vertexBytes << ", \"byteLength\": " << indexBytes << R"(}],
-        "accessors": [
-          {"bufferView": 0, "componentType": 5126, "count": )" << m.positions.size() << R"(, "type": "VEC3",
-           "min": [)" << lo.x << ", " << lo.y << ", " << lo.z << "], \"max\": [" << hi.x << ", " << hi.y << ", " << hi.z << R"(]},
-          {"bufferView": 1, "componentType": 5126, "count": )" << m.normals.size() << R"(, "type": "VEC3"},
-          {"bufferView": 2, "componentType": 5125, "count": )" << m.indices.size() << R"(, "type": "SCALAR"}]})";
 }
 
 // The area-lit test world with the asset in front, in a glossy metal given by the scene file.
