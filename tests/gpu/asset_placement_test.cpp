@@ -24,7 +24,9 @@ struct Placement {
     std::string keys() const {
         std::ostringstream s;
         s.precision(9);
-        auto v = [&](const char* key, Vec3 a) { s << '"' << key << "\": [" << a.x << ", " << a.y << ", " << a.z << "]"; };
+        auto v = [&](const char* key, Vec3 a) {
+            s << '"' << key << "\": [" << a.x << ", " << a.y << ", " << a.z << "]";
+        };
         v("scale", scale);
         s << ", ";
         v("rotate", rotate);
@@ -42,7 +44,8 @@ Mesh baked(const Mesh& mesh, const Placement& p) {
     for (Vec3& v : out.positions) v = placement.point(v);
     for (Vec3& n : out.normals) n = normalize(rotation.vector(n / p.scale));
     if (p.scale.x * p.scale.y * p.scale.z < 0)
-        for (std::size_t i = 0; i < out.indices.size(); i += 3) std::swap(out.indices[i + 1], out.indices[i + 2]);
+        for (std::size_t i = 0; i < out.indices.size(); i += 3)
+            std::swap(out.indices[i + 1], out.indices[i + 2]);
     return out;
 }
 
@@ -53,7 +56,8 @@ std::string sceneWith(const std::string& file, const std::string& placementKeys)
               "materials": [{"name": "shiny", "metallic": 1, "roughness": 0.45, "albedo": [0.95, 0.75, 0.5]}]})";
 }
 
-void expectPlacedRendersAsBaked(const gpu::Context& ctx, const std::string& format, const Placement& placement) {
+void expectPlacedRendersAsBaked(const gpu::Context& ctx, const std::string& format,
+                                const Placement& placement) {
     TempDir dir;
     const Mesh sphere = smoothSphere(Vec3{0}, 1.0f, 8, 12, 0);
     if (format == "obj") {
@@ -75,11 +79,13 @@ void expectPlacedRendersAsBaked(const gpu::Context& ctx, const std::string& form
 }
 
 TEST_F(GpuTest, ObjAssetPlacedByTheSceneFileRendersAsTheBakedMesh) {
-    expectPlacedRendersAsBaked(*ctx, "obj", {{0.35f, 0.5f, 0.25f}, {25, 140, -35}, {0.1f, 0.55f, 1.2f}});
+    expectPlacedRendersAsBaked(*ctx, "obj",
+                               {{0.35f, 0.5f, 0.25f}, {25, 140, -35}, {0.1f, 0.55f, 1.2f}});
 }
 
 TEST_F(GpuTest, MirroredGltfAssetPlacedByTheSceneFileRendersAsTheBakedMesh) {
-    expectPlacedRendersAsBaked(*ctx, "gltf", {{-0.3f, 0.45f, 0.35f}, {-30, 70, 50}, {0.1f, 0.55f, 1.2f}});
+    expectPlacedRendersAsBaked(*ctx, "gltf",
+                               {{-0.3f, 0.45f, 0.35f}, {-30, 70, 50}, {0.1f, 0.55f, 1.2f}});
 }
 
 }  // namespace

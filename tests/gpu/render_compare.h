@@ -31,7 +31,8 @@ struct SampledImage {
     }
 };
 
-inline SampledImage renderSamples(const gpu::Context& ctx, const Scene& scene, const RenderSettings& settings) {
+inline SampledImage renderSamples(const gpu::Context& ctx, const Scene& scene,
+                                  const RenderSettings& settings) {
     Renderer r(ctx, scene, settings);
     r.render();
     EXPECT_EQ(r.stats().invalidSamples, 0u);
@@ -48,17 +49,17 @@ inline SampledImage mirroredLeftRight(const SampledImage& in) {
 }
 
 struct BlockAgreement {
-    double worstZ = 0;      // the largest |difference| / standard error over the blocks
-    double threshold = 0;   // the Sidak-corrected z the blocks must stay under
+    double worstZ = 0;     // the largest |difference| / standard error over the blocks
+    double threshold = 0;  // the Sidak-corrected z the blocks must stay under
     std::uint32_t worstX = 0, worstY = 0;  // that block's top-left pixel
     double expected = 0, actual = 0;       // that block's mean luminance in each render
-    double meanRelativeError = 0;          // mean over blocks of stderr / |block mean| (the test's power)
+    double meanRelativeError = 0;  // mean over blocks of stderr / |block mean| (the test's power)
 
     bool agrees() const { return worstZ <= threshold; }
 };
 
-inline BlockAgreement compareBlocks(const SampledImage& expected, const SampledImage& actual, std::uint32_t block,
-                                    double alpha) {
+inline BlockAgreement compareBlocks(const SampledImage& expected, const SampledImage& actual,
+                                    std::uint32_t block, double alpha) {
     BlockAgreement out;
     const std::uint32_t bw = expected.width / block, bh = expected.height / block;
     out.threshold = sidakZ(alpha, std::size_t(bw) * bh);
@@ -68,7 +69,8 @@ inline BlockAgreement compareBlocks(const SampledImage& expected, const SampledI
             double meanE = 0, meanA = 0, varE = 0, varA = 0;
             for (std::uint32_t y = by * block; y < (by + 1) * block; ++y)
                 for (std::uint32_t x = bx * block; x < (bx + 1) * block; ++x) {
-                    const PixelStats e = pixelStats(expected.sums[y * expected.width + x], expected.spp);
+                    const PixelStats e =
+                        pixelStats(expected.sums[y * expected.width + x], expected.spp);
                     const PixelStats a = pixelStats(actual.sums[y * actual.width + x], actual.spp);
                     meanE += e.mean, meanA += a.mean;
                     varE += e.stderr * e.stderr, varA += a.stderr * a.stderr;
@@ -89,21 +91,22 @@ inline BlockAgreement compareBlocks(const SampledImage& expected, const SampledI
 }
 
 // Expects the renders to agree, and writes NAME-{expected,actual}.{exr,png} when they do not.
-inline void expectSameImage(const SampledImage& expected, const SampledImage& actual, const std::string& name,
-                            std::uint32_t block = 4, double alpha = 1e-4) {
+inline void expectSameImage(const SampledImage& expected, const SampledImage& actual,
+                            const std::string& name, std::uint32_t block = 4, double alpha = 1e-4) {
     ASSERT_EQ(expected.sums.size(), actual.sums.size());
     const BlockAgreement a = compareBlocks(expected, actual, block, alpha);
-    EXPECT_LT(a.meanRelativeError, 0.05) << name << ": too few samples for the comparison to mean much";
+    EXPECT_LT(a.meanRelativeError, 0.05)
+        << name << ": too few samples for the comparison to mean much";
     if (a.agrees()) return;
     const std::filesystem::path stem = std::filesystem::absolute(name);
     for (const char* ext : {".exr", ".png"}) {
         writeImage(stem.string() + "-expected" + ext, expected.mean(), {});
         writeImage(stem.string() + "-actual" + ext, actual.mean(), {});
     }
-    ADD_FAILURE() << name << ": the " << block << "x" << block << " block at (" << a.worstX << ", " << a.worstY
-                  << ") has mean luminance " << a.actual << " where " << a.expected << " is expected: " << a.worstZ
-                  << " standard errors (at most " << a.threshold << "); images: " << stem.string()
-                  << "-{expected,actual}.{exr,png}";
+    ADD_FAILURE() << name << ": the " << block << "x" << block << " block at (" << a.worstX << ", "
+                  << a.worstY << ") has mean luminance " << a.actual << " where " << a.expected
+                  << " is expected: " << a.worstZ << " standard errors (at most " << a.threshold
+                  << "); images: " << stem.string() << "-{expected,actual}.{exr,png}";
 }
 
 }  // namespace penumbra::test

@@ -49,7 +49,8 @@ inline Scene areaLitWorld() {
     Mesh m;
     m.name = "panel";
     m.material = panel;
-    addQuad(m, {-0.9f, 1.8f, -0.3f}, {-0.3f, 1.8f, -0.3f}, {-0.3f, 1.8f, 0.3f}, {-0.9f, 1.8f, 0.3f});
+    addQuad(m, {-0.9f, 1.8f, -0.3f}, {-0.3f, 1.8f, -0.3f}, {-0.3f, 1.8f, 0.3f},
+            {-0.9f, 1.8f, 0.3f});
     s.meshes.push_back(std::move(m));
     s.spheres.push_back({{0.9f, 1.4f, -1.0f}, 0.12f, lamp});
     Light sun;

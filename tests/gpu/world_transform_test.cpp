@@ -22,8 +22,9 @@ struct WorldTransform {
 
 // Renders `world` as it is, then included by a scene file with each transform, and expects the
 // same image (mirrored left to right for a mirroring transform).
-void expectInvariant(const gpu::Context& ctx, const Scene& world, const std::vector<WorldTransform>& transforms,
-                     std::uint32_t spp, const std::string& name) {
+void expectInvariant(const gpu::Context& ctx, const Scene& world,
+                     const std::vector<WorldTransform>& transforms, std::uint32_t spp,
+                     const std::string& name) {
     TempDir dir;
     writeAll(dir / "world.json", sceneToJson(world));
     RenderSettings settings = testSettings(kSize, kSize, spp, 4);
@@ -33,7 +34,8 @@ void expectInvariant(const gpu::Context& ctx, const Scene& world, const std::vec
         << name << ": the comparison cannot tell the picture from its mirror image";
     for (std::size_t i = 0; i < transforms.size(); ++i) {
         SCOPED_TRACE(transforms[i].keys);
-        writeAll(dir / "moved.json", R"({"assets": [{"file": "world.json", )" + transforms[i].keys + "}]}");
+        writeAll(dir / "moved.json",
+                 R"({"assets": [{"file": "world.json", )" + transforms[i].keys + "}]}");
         settings.seed = 2 + std::uint32_t(i);
         const SampledImage moved = renderSamples(ctx, loadSceneJson(dir / "moved.json"), settings);
         expectSameImage(reference, transforms[i].mirrors ? mirroredLeftRight(moved) : moved,
@@ -42,19 +44,21 @@ void expectInvariant(const gpu::Context& ctx, const Scene& world, const std::vec
 }
 
 TEST_F(GpuTest, AreaLitWorldRendersTheSameRotatedScaledMovedAndMirrored) {
-    expectInvariant(*ctx, areaLitWorld(),
-                    {{R"("scale": 2.5, "rotate": [30, 200, -15], "translate": [1.5, -1, 2.5])", false},
-                     {R"("scale": 0.4, "rotate": [-70, 45, 110], "translate": [-0.3, 0.5, 0.2])", false},
-                     {R"("scale": [-1.7, 1.7, 1.7], "rotate": [0, 60, 20], "translate": [1, 0, -1.5])", true},
-                     {R"("scale": [0.6, 0.6, -0.6], "rotate": [80, 0, 35])", true}},
-                    64, "area-lit-world");
+    expectInvariant(
+        *ctx, areaLitWorld(),
+        {{R"("scale": 2.5, "rotate": [30, 200, -15], "translate": [1.5, -1, 2.5])", false},
+         {R"("scale": 0.4, "rotate": [-70, 45, 110], "translate": [-0.3, 0.5, 0.2])", false},
+         {R"("scale": [-1.7, 1.7, 1.7], "rotate": [0, 60, 20], "translate": [1, 0, -1.5])", true},
+         {R"("scale": [0.6, 0.6, -0.6], "rotate": [80, 0, 35])", true}},
+        64, "area-lit-world");
 }
 
 TEST_F(GpuTest, PunctuallyLitWorldRendersTheSameRotatedMovedAndMirrored) {
-    expectInvariant(*ctx, punctuallyLitWorld(),
-                    {{R"("rotate": [20, 130, -40], "translate": [1, 0.5, -1])", false},
-                     {R"("scale": [1, -1, 1], "rotate": [0, 30, 0], "translate": [0, 1, 0])", true}},
-                    64, "punctually-lit-world");
+    expectInvariant(
+        *ctx, punctuallyLitWorld(),
+        {{R"("rotate": [20, 130, -40], "translate": [1, 0.5, -1])", false},
+         {R"("scale": [1, -1, 1], "rotate": [0, 30, 0], "translate": [0, 1, 0])", true}},
+        64, "punctually-lit-world");
 }
 
 // Known failure, left to the shadow-ray code (shaders/trace.comp, shadeLightSample): a shadow ray

@@ -2,12 +2,13 @@
 // against an inverse computed here independently (Gauss-Jordan in double) for random non-uniform
 // matrices of both determinant signs; and appendScene must keep each triangle's shading normals
 // on its winding's front side, mirrored or not.
+#include "core/transform.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
 #include <random>
 
-#include "core/transform.h"
 #include "scene/merge.h"
 #include "smooth_sphere.h"
 
@@ -73,7 +74,8 @@ std::vector<Affine> randomAffines(std::size_t count, std::uint32_t seed) {
         for (auto& row : a.m)
             for (float& v : row) v = u(rng);
         const Mat3 m = linearPart(a);
-        if (std::abs(a.determinant()) < 0.05f || frobenius(m) * frobenius(inverse(m)) > 30) continue;
+        if (std::abs(a.determinant()) < 0.05f || frobenius(m) * frobenius(inverse(m)) > 30)
+            continue;
         out.push_back(a);
     }
     return out;
@@ -104,11 +106,13 @@ TEST(AffineNormal, IsTheNormalisedInverseTransposeForRandomMatrices) {
 
 TEST(AffineNormal, TurnsWithARotationLikeAnyVector) {
     for (Vec3 degrees : {Vec3{0, 90, 0}, Vec3{0, 200, 0}, Vec3{30, -45, 70}, Vec3{-120, 15, 170}}) {
-        const Affine r = Affine::translation({3, -1, 2}) * Affine::eulerDegrees(degrees) * Affine::scaling(Vec3{2.5f});
+        const Affine r = Affine::translation({3, -1, 2}) * Affine::eulerDegrees(degrees) *
+                         Affine::scaling(Vec3{2.5f});
         std::mt19937 rng(3);
         for (int k = 0; k < 8; ++k) {
             const Vec3 n = randomUnit(rng);
-            expectNear(r.normal(n), normalize(r.vector(n)), 1e-5f, "rotation " + std::to_string(degrees.y));
+            expectNear(r.normal(n), normalize(r.vector(n)), 1e-5f,
+                       "rotation " + std::to_string(degrees.y));
         }
     }
 }
@@ -136,7 +140,8 @@ TEST(AffineNormal, StaysPerpendicularToTransformedTangents) {
 TEST(AppendScene, KeepsShadingNormalsOnTheFrontSideOfTheirTriangles) {
     const std::vector<Affine> transforms = {
         Affine::eulerDegrees({0, 200, 0}),
-        Affine::translation({1, 2, 3}) * Affine::eulerDegrees({35, -60, 20}) * Affine::scaling({0.3f, 1.7f, 0.9f}),
+        Affine::translation({1, 2, 3}) * Affine::eulerDegrees({35, -60, 20}) *
+            Affine::scaling({0.3f, 1.7f, 0.9f}),
         Affine::eulerDegrees({10, 80, -30}) * Affine::scaling({-1.2f, 0.6f, 1.0f}),
         Affine::scaling({1, 1, -1}),
     };
@@ -150,14 +155,16 @@ TEST(AppendScene, KeepsShadingNormalsOnTheFrontSideOfTheirTriangles) {
         appendScene(scene, part, t);
         const Mat3 inv = inverse(linearPart(t));
         for (std::size_t v = 0; v < original.normals.size(); ++v)
-            expectNear(scene.meshes[0].normals[v], inverseTransposeNormal(inv, original.normals[v]), 2e-5f,
-                       "transform " + std::to_string(i));
+            expectNear(scene.meshes[0].normals[v], inverseTransposeNormal(inv, original.normals[v]),
+                       2e-5f, "transform " + std::to_string(i));
         const Vec3 centre = t.point(Vec3{0});
         for (const SceneTriangle& tri : flattenTriangles(scene)) {
             const Vec3 ng = cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]);
             EXPECT_GT(dot(ng, (tri.p[0] + tri.p[1] + tri.p[2]) / 3.0f - centre), 0.0f)
                 << "transform " << i << ": a front face turned inward";
-            for (const Vec3& n : tri.n) EXPECT_GT(dot(n, ng), 0.0f) << "transform " << i << ": shading normal behind its face";
+            for (const Vec3& n : tri.n)
+                EXPECT_GT(dot(n, ng), 0.0f)
+                    << "transform " << i << ": shading normal behind its face";
             if (HasFailure()) return;
         }
     }
@@ -170,7 +177,8 @@ TEST(TransformCamera, MovesTheCameraWithTheWorldAndScalesItsLens) {
     c.up = {0, 1, 0};
     c.apertureRadius = 0.05f;
     c.focusDistance = 3.0f;
-    const Affine t = Affine::translation({5, 0, 0}) * Affine::eulerDegrees({0, 90, 0}) * Affine::scaling(Vec3{-2});
+    const Affine t = Affine::translation({5, 0, 0}) * Affine::eulerDegrees({0, 90, 0}) *
+                     Affine::scaling(Vec3{-2});
     const Camera m = transformCamera(c, t);
     expectNear(m.position, t.point(c.position), 1e-5f, "position");
     expectNear(m.lookAt, t.point(c.lookAt), 1e-5f, "look-at");

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 
 #include "../image/test_dir.h"
 #include "../smooth_sphere.h"
@@ -104,11 +103,10 @@ TEST(GltfLoader, NodeTransformsTurnNormalsByTheInverseTranspose) {
 
     const Mesh sphere = test::smoothSphere(Vec3{0}, 1.0f, 4, 6, 0);
     test::TempDir dir;
-    std::ostringstream node;
-    node.precision(9);
-    node << R"({"mesh": 0, "rotation": [)" << x << ", " << y << ", " << z << ", " << w << R"(], "scale": [)"
-         << scale.x << ", " << scale.y << ", " << scale.z << R"(], "translation": [1, -2, 3]})";
-    test::writeGltf(dir.path(), "sphere", sphere, node.str());
+    const nlohmann::json node = {{"rotation", {x, y, z, w}},
+                                 {"scale", {scale.x, scale.y, scale.z}},
+                                 {"translation", {translation.x, translation.y, translation.z}}};
+    test::writeGltf(dir.path(), "sphere", sphere, node);
     const Scene s = loadGltf(dir / "sphere.gltf");
     ASSERT_EQ(s.meshes.size(), 1u);
     const Mesh& m = s.meshes[0];

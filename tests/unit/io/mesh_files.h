@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "scene/scene.h"
@@ -18,36 +19,58 @@ inline void writeObj(const std::filesystem::path& path, const Mesh& m) {
     for (Vec3 n : m.normals) f << "vn " << n.x << ' ' << n.y << ' ' << n.z << '\n';
     for (std::size_t i = 0; i < m.indices.size(); i += 3) {
         f << 'f';
-        for (int k = 0; k < 3; ++k) f << ' ' << m.indices[i + k] + 1 << "//" << m.indices[i + k] + 1;
+        for (int k = 0; k < 3; ++k)
+            f << ' ' << m.indices[i + k] + 1 << "//" << m.indices[i + k] + 1;
         f << '\n';
     }
 }
 
 // NAME.gltf with its buffer in NAME.bin: positions, normals (float VEC3) and uint32 indices, in
-// one node (`node`: its JSON, which must name mesh 0).
+// one node (`node`: its JSON object; the mesh is added).
 inline void writeGltf(const std::filesystem::path& dir, const std::string& name, const Mesh& m,
-                      const std::string& node = R"({"mesh": 0})") {
+                      nlohmann::json node = nlohmann::json::object()) {
+    using Json = nlohmann::json;
     std::ofstream bin(dir / (name + ".bin"), std::ios::binary);
-    const auto bytes = [](const auto& v) { return std::streamsize(v.size() * sizeof(v[0])); };
-    bin.write(reinterpret_cast<const char*>(m.positions.data()), bytes(m.positions));
-    bin.write(reinterpret_cast<const char*>(m.normals.data()), bytes(m.normals));
-    bin.write(reinterpret_cast<const char*>(m.indices.data()), bytes(m.indices));
+    const auto write = [&](const auto& v) {
+        bin.write(reinterpret_cast<const char*>(v.data()),
+                  std::streamsize(v.size() * sizeof(v[0])));
+    };
+    write(m.positions);
+    write(m.normals);
+    write(m.indices);
     Vec3 lo = m.positions[0], hi = m.positions[0];
     for (Vec3 v : m.positions) lo = min(lo, v), hi = max(hi, v);
     const std::size_t vertexBytes = m.positions.size() * 12, indexBytes = m.indices.size() * 4;
-    std::ofstream f(dir / (name + ".gltf"));
-    f.precision(9);
-    f << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [)" << node << R"(],
-        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2}]}],
-        "buffers": [{"uri": ")" << name << ".bin\", \"byteLength\": " << 2 * vertexBytes + indexBytes << R"(}],
-        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": )" << vertexBytes << R"(},
-                        {"buffer": 0, "byteOffset": )" << vertexBytes << ", \"byteLength\": " << vertexBytes << R"(},
-                        {"buffer": 0, "byteOffset": )" << 2 * vertexBytes << ", \"byteLength\": " << indexBytes << R"(}],
-        "accessors": [
-          {"bufferView": 0, "componentType": 5126, "count": )" << m.positions.size() << R"(, "type": "VEC3",
-           "min": [)" << lo.x << ", " << lo.y << ", " << lo.z << "], \"max\": [" << hi.x << ", " << hi.y << ", " << hi.z << R"(]},
-          {"bufferView": 1, "componentType": 5126, "count": )" << m.normals.size() << R"(, "type": "VEC3"},
-          {"bufferView": 2, "componentType": 5125, "count": )" << m.indices.size() << R"(, "type": "SCALAR"}]})";
+    node["mesh"] = 0;
+    const auto view = [](std::size_t offset, std::size_t length) {
+        return Json{{"buffer", 0}, {"byteOffset", offset}, {"byteLength", length}};
+    };
+    const Json doc = {
+        {"asset", {{"version", "2.0"}}},
+        {"scene", 0},
+        {"scenes", {{{"nodes", {0}}}}},
+        {"nodes", {node}},
+        {"meshes",
+         {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", 2}}}}}}},
+        {"buffers", {{{"uri", name + ".bin"}, {"byteLength", 2 * vertexBytes + indexBytes}}}},
+        {"bufferViews",
+         {view(0, vertexBytes), view(vertexBytes, vertexBytes), view(2 * vertexBytes, indexBytes)}},
+        {"accessors",
+         {{{"bufferView", 0},
+           {"componentType", 5126},
+           {"count", m.positions.size()},
+           {"type", "VEC3"},
+           {"min", {lo.x, lo.y, lo.z}},
+           {"max", {hi.x, hi.y, hi.z}}},
+          {{"bufferView", 1},
+           {"componentType", 5126},
+           {"count", m.normals.size()},
+           {"type", "VEC3"}},
+          {{"bufferView", 2},
+           {"componentType", 5125},
+           {"count", m.indices.size()},
+           {"type", "SCALAR"}}}}};
+    std::ofstream(dir / (name + ".gltf")) << doc.dump(1);
 }
 
 }  // namespace penumbra::test
