@@ -394,8 +394,8 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
     }
     if (scene.meshes.empty() && scene.spheres.empty())
         r.fail("top level", "the scene has no geometry (add \"assets\", \"meshes\", \"quads\" or \"spheres\")");
-    if (doc.contains("materials")) warnUnusedMaterials(name, doc["materials"], scene);
     scene.validate();
+    if (doc.contains("materials")) warnUnusedMaterials(name, doc["materials"], scene);
     try {
         validateCamera(scene.camera);
     } catch (const Error& e) {
