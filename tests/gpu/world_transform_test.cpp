@@ -50,7 +50,7 @@ TEST_F(GpuTest, AreaLitWorldRendersTheSameRotatedScaledMovedAndMirrored) {
          {R"("scale": 0.4, "rotate": [-70, 45, 110], "translate": [-0.3, 0.5, 0.2])", false},
          {R"("scale": [-1.7, 1.7, 1.7], "rotate": [0, 60, 20], "translate": [1, 0, -1.5])", true},
          {R"("scale": [0.6, 0.6, -0.6], "rotate": [80, 0, 35])", true}},
-        64, "area-lit-world");
+        32, "area-lit-world");
 }
 
 TEST_F(GpuTest, PunctuallyLitWorldRendersTheSameRotatedMovedAndMirrored) {
@@ -58,7 +58,7 @@ TEST_F(GpuTest, PunctuallyLitWorldRendersTheSameRotatedMovedAndMirrored) {
         *ctx, punctuallyLitWorld(),
         {{R"("rotate": [20, 130, -40], "translate": [1, 0.5, -1])", false},
          {R"("scale": [1, -1, 1], "rotate": [0, 30, 0], "translate": [0, 1, 0])", true}},
-        64, "punctually-lit-world");
+        32, "punctually-lit-world");
 }
 
 // Known failure, left to the shadow-ray code (shaders/trace.comp, shadeLightSample): a shadow ray
