@@ -29,31 +29,29 @@ float sinSubClamped(float sinA, float cosA, float sinB, float cosB) { return cos
 
 float sinFromCos(float c) { return sqrt(max(0.0, 1.0 - c * c)); }
 
-// Cosine of the half-angle of the cone from p that holds the box (through its bounding sphere);
-// -1 when p is inside that sphere (every direction).
-float boxConeCos(vec3 lo, vec3 hi, vec3 p) {
-    vec3 c = 0.5 * (lo + hi);
-    float r2 = 0.25 * dot(hi - lo, hi - lo);
-    float d2 = dot(p - c, p - c);
-    return d2 <= r2 ? -1.0 : sqrt(max(0.0, 1.0 - r2 / d2));
-}
 
 // How much the lights under `node` could bring to a surface at p with normal n (n = 0: no
 // surface): zero only where they cannot light p at all.
 float lightNodeImportance(LightNode node, vec3 p, vec3 n) {
-    vec3 toP = p - 0.5 * (node.boundsMin + node.boundsMax);
+    vec3 halfDiagonal = 0.5 * (node.boundsMax - node.boundsMin);
+    vec3 toP = p - (node.boundsMin + halfDiagonal);
     float dist2 = dot(toP, toP);
     // Within the bounds the squared distance says little; pbrt-v4 floors it at half the diagonal.
-    float d2 = max(dist2, 0.5 * length(node.boundsMax - node.boundsMin));
+    float d2 = max(dist2, node.minDistance2);
     vec3 wi = dist2 > 0.0 ? toP * inversesqrt(dist2) : node.axis;
     float cosW = dot(node.axis, wi);
     if (node.twoSided != 0u) cosW = abs(cosW);
-    float cosB = boxConeCos(node.boundsMin, node.boundsMax, p);
-    float sinB = sinFromCos(cosB);
+    float sinW = sinFromCos(cosW);
+    // The cone from p that holds the box (through its bounding sphere); every direction from
+    // inside that sphere.
+    float r2 = dot(halfDiagonal, halfDiagonal);
+    float sin2B = dist2 > r2 ? r2 / dist2 : 1.0;
+    float cosB = dist2 > r2 ? sqrt(1.0 - sin2B) : -1.0;
+    float sinB = dist2 > r2 ? sqrt(sin2B) : 0.0;
     // The smallest angle between an emitting normal and a direction toward p, then the emission
     // spread beyond it.
-    float cosX = cosSubClamped(sinFromCos(cosW), cosW, sinFromCos(node.cosThetaO), node.cosThetaO);
-    float sinX = sinSubClamped(sinFromCos(cosW), cosW, sinFromCos(node.cosThetaO), node.cosThetaO);
+    float cosX = cosSubClamped(sinW, cosW, node.sinThetaO, node.cosThetaO);
+    float sinX = sinSubClamped(sinW, cosW, node.sinThetaO, node.cosThetaO);
     float cosP = cosSubClamped(sinX, cosX, sinB, cosB);
     if (cosP <= node.cosThetaE) return 0.0;
     float importance = node.phi * cosP / d2;

@@ -50,6 +50,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_ENV_TEXELS 24     // environment radiance, one vec4 (rgb, unused) per texel
 #define PN_BINDING_OVERLAY_BOXES 25  // BvhNode per box the viewer's box overlay outlines (bounds only)
 #define PN_BINDING_LIGHT_NODES 26    // LightNode per node of the light BVH (depth-first, root first)
+#define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
 
 // ---- kernel features: specialization constant 0 of the tracing kernels, a bit set. A pipeline
 // made for a scene leaves out what the scene does not use (render/kernel_features.h); the
@@ -130,6 +131,22 @@ PN_STRUCT(BvhNode) {
     uint firstOrRight;  //  4
     vec3 boundsMax;     // 12
     uint triCount;      //  4
+};
+
+// A node of the BVH as the GPU walks it, 64 bytes: the bounds of both children of a BvhNode,
+// so one fetch decides where to go (Aila & Laine 2009). A child is a leaf (count > 0: primitives
+// [index, index + count) in leaf order) or an interior node (count == 0: index into this array).
+// Nodes follow the BvhNodes' depth-first order, so a first child that is interior is usually the
+// next node.
+PN_STRUCT(BvhNodePair) {
+    vec3 leftMin;
+    uint leftIndex;
+    vec3 leftMax;
+    uint leftCount;
+    vec3 rightMin;
+    uint rightIndex;
+    vec3 rightMax;
+    uint rightCount;
 };
 
 // Hot triangle data, read on every traversal step: 48 bytes. Edges are precomputed for
@@ -223,8 +240,8 @@ PN_STRUCT(LightNode) {
     float cosThetaE;    // emission spreads at most thetaE beyond the normals (pi/2: Lambertian)
     uint childOrLight;
     uint twoSided;      // nonzero: emits on both sides of its normals
-    uint pad0;
-    uint pad1;
+    float sinThetaO;    // precomputed for the importance bound
+    float minDistance2; // half the bounds' diagonal: pbrt-v4's floor on the squared distance
 };
 
 // A point, spot or directional light, 64 bytes. Delta lights: reached only by light sampling.
@@ -316,6 +333,10 @@ PN_STRUCT(FrameUniforms) {
 #define PN_MAX_OVERLAY_BOXES 4096u  // boxes the overlay draws at most (each pixel tests every one)
 #define PN_OVERLAY_COLOR 0xff00ffffu  // RGBA8 of an outlined pixel: opaque yellow
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
+// The denoiser's per-pixel guide, written by temporal.comp: x = the shading normal, octahedral,
+// packSnorm2x16; y = the linear depth's float bits (0: the primary ray missed). 8 bytes instead of
+// a 48-byte GBufferTexel per tap keeps the 25-tap filter in cache.
+#define PN_DENOISE_GUIDE_BYTES 8u
 
 // What the primary ray saw at a pixel's centre, 48 bytes.
 PN_STRUCT(GBufferTexel) {
@@ -443,6 +464,9 @@ PN_STRUCT(BsdfTestResult) {
 // Layout checks: every offset the shader relies on. A failure here means a field moved.
 static_assert(sizeof(BvhNode) == 32 && offsetof(BvhNode, firstOrRight) == 12 &&
               offsetof(BvhNode, boundsMax) == 16 && offsetof(BvhNode, triCount) == 28);
+static_assert(sizeof(BvhNodePair) == 64 && offsetof(BvhNodePair, leftIndex) == 12 &&
+              offsetof(BvhNodePair, leftCount) == 28 && offsetof(BvhNodePair, rightMin) == 32 &&
+              offsetof(BvhNodePair, rightIndex) == 44 && offsetof(BvhNodePair, rightCount) == 60);
 static_assert(sizeof(TriVerts) == 48 && offsetof(TriVerts, flags) == 12 && offsetof(TriVerts, e1) == 16 &&
               offsetof(TriVerts, e2) == 32);
 static_assert(sizeof(TriAttribs) == 80 && offsetof(TriAttribs, materialId) == 12 &&
@@ -462,7 +486,8 @@ static_assert(sizeof(LightRef) == 16 && offsetof(LightRef, index) == 4 && offset
 static_assert(sizeof(LightNode) == 64 && offsetof(LightNode, phi) == 12 && offsetof(LightNode, boundsMax) == 16 &&
               offsetof(LightNode, cosThetaO) == 28 && offsetof(LightNode, axis) == 32 &&
               offsetof(LightNode, cosThetaE) == 44 && offsetof(LightNode, childOrLight) == 48 &&
-              offsetof(LightNode, twoSided) == 52);
+              offsetof(LightNode, twoSided) == 52 && offsetof(LightNode, sinThetaO) == 56 &&
+              offsetof(LightNode, minDistance2) == 60);
 static_assert(sizeof(EnvAlias) == 16 && offsetof(EnvAlias, alias) == 4 && offsetof(EnvAlias, pdf) == 8);
 static_assert(sizeof(FrameUniforms) == 176 && offsetof(FrameUniforms, topLightCount) == 160 &&
               offsetof(FrameUniforms, envLuminance) == 164 && offsetof(FrameUniforms, lightPickUniform) == 172 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&

@@ -16,7 +16,8 @@ namespace penumbra {
 
 // The host-side arrays, kept separate from the upload so tests and tools can use them on the CPU.
 struct SceneArrays {
-    std::vector<shader::BvhNode> nodes;
+    std::vector<shader::BvhNode> nodes;          // the binary BVH (CPU traversal, statistics, overlays)
+    std::vector<shader::BvhNodePair> nodePairs;  // the same tree as the GPU walks it
     std::vector<shader::TriVerts> triVerts;      // leaf order; triangles and spheres (PN_TRI_SPHERE)
     std::vector<shader::TriAttribs> triAttribs;  // leaf order
     std::vector<shader::Material> materials;
