@@ -24,7 +24,7 @@ struct BenchArgs {
     CameraOverrides camera;
     // --viewer: the viewer's whole frame
     bool viewer = false;
-    std::uint32_t spp = 1, denoise = 5;
+    std::uint32_t spp = 1, denoise = 5, rouletteStart = 3;
     bool noTemporal = false;
     std::string motion = "static";
     int frames = 200;
@@ -101,6 +101,7 @@ void runViewerBenchCommand(const BenchArgs& args) {
     o.height = args.height;
     o.view.samplesPerFrame = args.spp;
     o.view.maxBounces = args.bounces;
+    o.view.rouletteStart = args.rouletteStart;
     o.view.temporal = !args.noTemporal;
     o.view.denoise = args.denoise > 0;
     o.view.denoiseIterations = std::max(args.denoise, 1u);
@@ -194,6 +195,7 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--spp", args->spp, "--viewer: samples per pixel per frame (default 1)");
     cmd->add_option("--denoise", args->denoise, "--viewer: a-trous denoiser passes, 0 turns it off (default 5)");
     cmd->add_flag("--no-temporal", args->noTemporal, "--viewer: no temporal accumulation");
+    cmd->add_option("--roulette-start", args->rouletteStart, "--viewer: bounce from which Russian roulette may end paths (default 3)");
     cmd->add_option("--camera-motion", args->motion, "--viewer: static, orbit or walk (default static)");
     cmd->add_option("--frames", args->frames, "--viewer: timed frames (default 200)");
     cmd->add_option("--warmup-frames", args->warmupFrames, "--viewer: untimed frames first, at least (default 30)");

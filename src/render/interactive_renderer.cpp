@@ -26,7 +26,8 @@ bool sameCamera(const shader::FrameUniforms& a, const shader::FrameUniforms& b) 
 bool changesTheImage(const ViewSettings& a, const ViewSettings& b) {
     auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
     return a.apertureRadius != b.apertureRadius || a.focusDistance != b.focusDistance ||
-           a.samplesPerFrame != b.samplesPerFrame || a.maxBounces != b.maxBounces || a.torch != b.torch ||
+           a.samplesPerFrame != b.samplesPerFrame || a.maxBounces != b.maxBounces ||
+           a.rouletteStart != b.rouletteStart || a.torch != b.torch ||
            !same(a.torchColor, b.torchColor) || a.torchIntensity != b.torchIntensity || a.torchRange != b.torchRange;
 }
 
@@ -177,6 +178,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     rs.height = height_;
     rs.samplesPerPass = s.samplesPerFrame;
     rs.maxBounces = s.maxBounces;
+    rs.rouletteStart = s.rouletteStart;
     rs.seed = seed_;
     Camera lens = camera;
     lens.apertureRadius = s.apertureRadius;
