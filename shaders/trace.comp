@@ -10,6 +10,7 @@
 #extension GL_KHR_shader_subgroup_basic : require
 
 #include "shared/types.h"
+#define PN_BINARY_NODE_AB
 
 layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 

@@ -33,58 +33,102 @@ struct Hit {
     float v;
 };
 
-// Tests the primitives of one leaf, shortening hit.t; true when anyHit found one.
-bool intersectLeaf(uint first, uint count, vec3 o, vec3 d, bool anyHit, inout Hit hit) {
-    for (uint i = first; i < first + count; ++i) {
-        PN_COUNT_TRIANGLE();
-        float t, u, v;
-        if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
-            hit = Hit(t, i, u, v);
-            if (anyHit) return true;
-        }
-    }
-    return false;
-}
-
-// Walks the node pairs (shared/types.h, BvhNodePair): one fetch gives both children's boxes; a
-// leaf child is tested at once (its hits shorten the ray before the other child is entered), an
-// interior one is visited nearest first, the farther pushed. anyHit: stop at the first hit below
-// tMax (shadow rays) instead of finding the closest.
-Hit traverseBvh(vec3 o, vec3 d, float tMax, bool anyHit) {
+// Walks the node pairs (shared/types.h, BvhNodePair): one fetch gives both children's boxes.
+// Each step handles one leaf or one pair, so the warp's threads run the same code: a hit child
+// that is a leaf is entered like an interior one (current = (first, count)) and its primitives are
+// tested on the next step; of two hit children the nearer is entered, the farther pushed.
+// anyHit: stop at the first hit below tMax (shadow rays) instead of finding the closest.
+Hit traverseBvhPairs(vec3 o, vec3 d, float tMax, bool anyHit) {
     Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0);
     if (frame.nodeCount == 0u) return hit;
     vec3 invD = safeInverse(d);
+    uvec2 stack[PN_BVH_STACK_SIZE];
+    uint depth = 0u;
+    uvec2 current = uvec2(0u, 0u);  // (index, count): count 0 is a node pair, else a leaf
+    while (true) {
+        if (current.y > 0u) {
+            for (uint i = current.x; i < current.x + current.y; ++i) {
+                PN_COUNT_TRIANGLE();
+                float t, u, v;
+                if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
+                    hit = Hit(t, i, u, v);
+                    if (anyHit) return hit;
+                }
+            }
+        } else {
+            BvhNodePair node = nodes[current.x];
+            PN_COUNT_NODE();
+            float tLeft = slabEntry(node.leftMin, node.leftMax, o, invD, hit.t);
+            float tRight = slabEntry(node.rightMin, node.rightMax, o, invD, hit.t);
+            uvec2 left = uvec2(node.leftIndex, node.leftCount), right = uvec2(node.rightIndex, node.rightCount);
+            if (tLeft != PN_INFINITY && tRight != PN_INFINITY) {
+                bool leftFirst = tLeft <= tRight;
+                stack[depth++] = leftFirst ? right : left;
+                current = leftFirst ? left : right;
+                continue;
+            }
+            if (tLeft != PN_INFINITY || tRight != PN_INFINITY) {
+                current = tLeft != PN_INFINITY ? left : right;
+                continue;
+            }
+        }
+        if (depth == 0u) break;
+        current = stack[--depth];
+    }
+    return hit;
+}
+
+#ifdef PN_BINARY_NODE_AB
+// The binary BVH as it was walked before node pairs (one node per step, both children's boxes
+// read from the children): kept only for the A/B measurement in docs/PERFORMANCE.md.
+layout(std430, set = 0, binding = PN_BINDING_BINARY_NODES) readonly buffer BinaryNodeBuffer { BvhNode binaryNodes[]; };
+Hit traverseBvhBinary(vec3 o, vec3 d, float tMax, bool anyHit) {
+    Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0);
+    if (frame.nodeCount == 0u) return hit;
+    vec3 invD = safeInverse(d);
+    if (slabEntry(binaryNodes[0].boundsMin, binaryNodes[0].boundsMax, o, invD, tMax) == PN_INFINITY) return hit;
     uint stack[PN_BVH_STACK_SIZE];
     uint depth = 0u;
     uint current = 0u;
     while (true) {
-        BvhNodePair node = nodes[current];
-        PN_COUNT_NODE();
-        float tLeft = slabEntry(node.leftMin, node.leftMax, o, invD, hit.t);
-        float tRight = slabEntry(node.rightMin, node.rightMax, o, invD, hit.t);
-        if (tLeft != PN_INFINITY && node.leftCount > 0u) {
-            if (intersectLeaf(node.leftIndex, node.leftCount, o, d, anyHit, hit)) return hit;
-            tLeft = PN_INFINITY;
-        }
-        if (tRight > hit.t) tRight = PN_INFINITY;  // the left leaf's hit came first
-        if (tRight != PN_INFINITY && node.rightCount > 0u) {
-            if (intersectLeaf(node.rightIndex, node.rightCount, o, d, anyHit, hit)) return hit;
-            tRight = PN_INFINITY;
-        }
-        if (tLeft != PN_INFINITY && tRight != PN_INFINITY) {
-            bool leftFirst = tLeft <= tRight;
-            stack[depth++] = leftFirst ? node.rightIndex : node.leftIndex;
-            current = leftFirst ? node.leftIndex : node.rightIndex;
-        } else if (tLeft != PN_INFINITY) {
-            current = node.leftIndex;
-        } else if (tRight != PN_INFINITY) {
-            current = node.rightIndex;
-        } else {
+        BvhNode node = binaryNodes[current];
+        if (node.triCount > 0u) {
+            for (uint i = node.firstOrRight; i < node.firstOrRight + node.triCount; ++i) {
+                float t, u, v;
+                if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
+                    hit = Hit(t, i, u, v);
+                    if (anyHit) return hit;
+                }
+            }
             if (depth == 0u) break;
             current = stack[--depth];
+            continue;
+        }
+        uint near = current + 1u;
+        uint far = node.firstOrRight;
+        float dNear = slabEntry(binaryNodes[near].boundsMin, binaryNodes[near].boundsMax, o, invD, hit.t);
+        float dFar = slabEntry(binaryNodes[far].boundsMin, binaryNodes[far].boundsMax, o, invD, hit.t);
+        if (dFar < dNear) {
+            uint swapNode = near; near = far; far = swapNode;
+            float swapDist = dNear; dNear = dFar; dFar = swapDist;
+        }
+        if (dNear == PN_INFINITY) {
+            if (depth == 0u) break;
+            current = stack[--depth];
+        } else {
+            current = near;
+            if (dFar != PN_INFINITY) stack[depth++] = far;
         }
     }
     return hit;
+}
+#endif
+
+Hit traverseBvh(vec3 o, vec3 d, float tMax, bool anyHit) {
+#ifdef PN_BINARY_NODE_AB
+    if (PN_HAS(PN_FEATURE_BINARY_NODES_AB)) return traverseBvhBinary(o, d, tMax, anyHit);
+#endif
+    return traverseBvhPairs(o, d, tMax, anyHit);
 }
 
 Hit traverseBrute(vec3 o, vec3 d, float tMax, bool anyHit) {

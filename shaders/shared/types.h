@@ -50,6 +50,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_ENV_TEXELS 24     // environment radiance, one vec4 (rgb, unused) per texel
 #define PN_BINDING_OVERLAY_BOXES 25  // BvhNode per box the viewer's box overlay outlines (bounds only)
 #define PN_BINDING_LIGHT_NODES 26    // LightNode per node of the light BVH (depth-first, root first)
+#define PN_BINDING_BINARY_NODES 28   // A/B only: BvhNode array for the trace kernel's old traversal
 #define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
 
 // ---- kernel features: specialization constant 0 of the tracing kernels, a bit set. A pipeline
@@ -63,7 +64,8 @@ using namespace penumbra::gpu_types;
 #define PN_FEATURE_TRANSMISSION 32u // glass
 #define PN_FEATURE_ENV_MAP 64u      // an environment map (else the constant background)
 #define PN_FEATURE_BRUTE_FORCE 128u // --accel brute
-#define PN_FEATURE_ALL 0xffffffffu
+#define PN_FEATURE_BINARY_NODES_AB 256u  // A/B only, outside ALL: walk the binary nodes (PENUMBRA_TRAVERSAL=binary)
+#define PN_FEATURE_ALL 0xffu     // every feature above
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic

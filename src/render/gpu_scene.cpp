@@ -241,6 +241,7 @@ std::size_t deviceBytes(const SceneArrays& a) {
 
 GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& a)
     : nodes(gpu::uploadStorageBuffer<shader::BvhNodePair>(ctx, commands, a.nodePairs)),
+      binaryNodes(gpu::uploadStorageBuffer<shader::BvhNode>(ctx, commands, a.nodes)),
       triVerts(gpu::uploadStorageBuffer<shader::TriVerts>(ctx, commands, a.triVerts)),
       triAttribs(gpu::uploadStorageBuffer<shader::TriAttribs>(ctx, commands, a.triAttribs)),
       materials(gpu::uploadStorageBuffer<shader::Material>(ctx, commands, a.materials)),

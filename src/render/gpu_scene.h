@@ -55,7 +55,7 @@ class GpuScene {
 public:
     GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& arrays);
 
-    gpu::Buffer nodes, triVerts, triAttribs, materials, lightRefs, lightNodes, textures, texels, punctual, sphereLights,
+    gpu::Buffer nodes, binaryNodes, triVerts, triAttribs, materials, lightRefs, lightNodes, textures, texels, punctual, sphereLights,
         envTable, envTexels;
     std::uint32_t nodeCount = 0, triCount = 0, lightNodeCount = 0, topLightCount = 0, lightRefCount = 0, punctualCount = 0,
                   sphereCount = 0, sphereLightCount = 0, envWidth = 0, envHeight = 0;
