@@ -278,7 +278,10 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         const float step = options.fixedDt ? float(*options.fixedDt) : dt;  // simulated seconds this frame
 
         GLFWwindow* w = window.get();
-        if (script && panel.playing) script->playFrame(input, step);
+        // Automation: after the N-th frame nothing moves or renders; its frame finishes, then exit.
+        const bool automationDone = options.frames && framesRendered >= *options.frames;
+        const bool advancing = panel.playing && !automationDone;
+        if (script && advancing) script->playFrame(input, step);
         if (input.pauseToggled) panel.playing = !panel.playing;
         if (input.resetCamera || panel.resetCamera) controller.reset();
         if (input.screenshot) panel.screenshotRequested = true;
@@ -293,7 +296,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         if (std::optional<Click> click = trackPointer(w, pointer, input, ui.wantsMouse()))
             handleClick(w, *click, pointer, scene, renderer, controller, settings, edit);
         // Paused, the camera stays where the shown frame was taken.
-        if (panel.playing) controller.update(cameraInputFrom(input), step);
+        if (advancing) controller.update(cameraInputFrom(input), step);
         endInputFrame(input);
 
         ui.newFrame();
@@ -327,10 +330,9 @@ void runViewer(Scene scene, const ViewerOptions& options) {
                     std::fprintf(stderr, "penumbra: error: %s\n", e.what());
                 }
                 pendingScreenshot.clear();
-                if (options.frames) window.requestClose();
             }
-            if (options.frames && framesRendered >= *options.frames && options.screenshot.empty()) window.requestClose();
         }
+        if (automationDone && !frameInFlight) window.requestClose();
 
         VkCommandBuffer cmd = presenter.commandBuffer();
         const VkExtent2D fb = window.framebufferSize();
@@ -341,7 +343,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         const Camera camera = controller.camera();
         // Playing renders every frame; paused renders one preview frame, again only when the
         // camera, a setting or the size changed (or for a screenshot), and shows it meanwhile.
-        if (panel.playing || panel.screenshotRequested || !shown.matches(camera, settings, rw, rh)) {
+        if (!automationDone && (panel.playing || panel.screenshotRequested || !shown.matches(camera, settings, rw, rh))) {
             renderer.resize(rw, rh);
             panel.renderWidth = renderer.width();
             panel.renderHeight = renderer.height();
