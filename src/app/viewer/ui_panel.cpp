@@ -4,7 +4,6 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
 
-#include <cfloat>
 #include <cstdio>
 
 #include "app/viewer/presenter.h"
@@ -99,7 +98,7 @@ namespace {
 
 // Labels sit right of the widgets in this much room, so none is cut off (in font heights).
 constexpr float kLabelEms = 15.5f;
-constexpr float kPanelEms = 36.0f;  // the panel's starting width
+constexpr float kPanelEms = 36.0f;  // the panel's width
 
 void header(PanelState& state) {
     ImGui::TextWrapped("%s", state.sceneName.c_str());
@@ -160,14 +159,14 @@ void statistics(const PanelState& state, const ViewerStats& stats) {
 
 void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& stats, EditState& edit,
                         EditRequests& requests) {
-    // Fits the window's height (scrolling inside when open sections need more); collapsible
-    // from its title bar, and Tab hides it.
+    // As tall as its open sections, but never taller than the window (it scrolls inside then);
+    // collapsible from its title bar, and Tab hides it.
     const float em = ImGui::GetFontSize();
     const ImVec2 screen = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(kPanelEms * em, 0), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(20 * em, 0), ImVec2(FLT_MAX, std::max(screen.y - 20, 8 * em)));
-    ImGui::Begin("Penumbra (Tab hides this panel)");
+    ImGui::SetNextWindowSizeConstraints(ImVec2(kPanelEms * em, 0),
+                                        ImVec2(kPanelEms * em, std::max(screen.y - 20, 8 * em)));
+    ImGui::Begin("Penumbra (Tab hides this panel)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::PushItemWidth(-kLabelEms * em);
     header(state);
 
