@@ -34,7 +34,9 @@ protected:
         const Vec3 c = view<shader::HistoryTexel>(history)[i].color;
         return {reinhard(c.x), reinhard(c.y), reinhard(c.z)};
     }
-    Vec3 albedo(std::uint32_t x, std::uint32_t y) { return view<shader::GBufferTexel>(gbuffer)[y * width + x].albedo; }
+    Vec3 albedo(std::uint32_t x, std::uint32_t y) {
+        return view<shader::GBufferTexel>(gbuffer)[y * width + x].albedo;
+    }
 
     void render(float opacity, bool inset) {
         viewerUniforms.debugOpacity = opacity;
@@ -71,14 +73,16 @@ TEST_F(DebugOverlayTest, TheSmallWindowShowsTheWholeViewScaledDownAndTheImageAro
     // 64 x 48 makes a 16 x 12 window whose top left is 8 pixels plus its size from the corner;
     // window pixel q shows view pixel 4q + 2 (the centre of the 4 x 4 block it stands for).
     const std::uint32_t iw = width / PN_DEBUG_INSET_DIVISOR, ih = height / PN_DEBUG_INSET_DIVISOR;
-    const int x0 = int(width - PN_DEBUG_INSET_MARGIN - iw), y0 = int(height - PN_DEBUG_INSET_MARGIN - ih);
+    const int x0 = int(width - PN_DEBUG_INSET_MARGIN - iw),
+              y0 = int(height - PN_DEBUG_INSET_MARGIN - ih);
     int inWindow = 0, onFrame = 0;
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
             const std::uint32_t i = y * width + x;
             const int qx = int(x) - x0, qy = int(y) - y0;
             if (qx >= 0 && qy >= 0 && qx < int(iw) && qy < int(ih)) {
-                expectShows(i, albedo(std::uint32_t(4 * qx + 2), std::uint32_t(4 * qy + 2)), "window");
+                expectShows(i, albedo(std::uint32_t(4 * qx + 2), std::uint32_t(4 * qy + 2)),
+                            "window");
                 ++inWindow;
             } else if (qx >= -1 && qy >= -1 && qx <= int(iw) && qy <= int(ih)) {
                 expectShows(i, Vec3(1.0f), "frame");

@@ -76,7 +76,8 @@ TEST(ViewerScript, AMissingFileIsAUsageError) {
 }
 
 TEST(ViewerScript, ThePlayerAppliesEventsWhenTheirTimeComesThroughTheControls) {
-    ScriptPlayer player(parseInputScript("0 key W down\n0 mouse 10 0\n0.5 key W up\n0.5 key P down\n", "s"));
+    ScriptPlayer player(
+        parseInputScript("0 key W down\n0 mouse 10 0\n0.5 key W up\n0.5 key P down\n", "s"));
     InputState input;
     player.playFrame(input, 0.25);  // clock 0: W and the mouse
     EXPECT_EQ(cameraInputFrom(input).forward, 1.0f);

@@ -14,6 +14,7 @@ namespace {
 
 constexpr std::streamoff kMaxScriptBytes = 16 << 20;
 
+// clang-format off
 #define PN_KEY(name) {#name, GLFW_KEY_##name}
 constexpr std::pair<std::string_view, int> kKeyNames[] = {
     PN_KEY(SPACE), PN_KEY(APOSTROPHE), PN_KEY(COMMA), PN_KEY(MINUS), PN_KEY(PERIOD), PN_KEY(SLASH),
@@ -32,6 +33,7 @@ constexpr std::pair<std::string_view, int> kKeyNames[] = {
     PN_KEY(RIGHT_ALT),
 };
 #undef PN_KEY
+// clang-format on
 
 bool sameIgnoringCase(std::string_view a, std::string_view b) {
     if (a.size() != b.size()) return false;
@@ -74,6 +76,40 @@ bool parseNumber(std::string_view word, double& value) {
     return ec == std::errc() && ptr == end && std::isfinite(value);
 }
 
+// What is wrong with a line; parseInputScript adds where.
+struct BadLine {
+    std::string what;
+};
+
+// One event from a line's words (at least one); times must not go below the previous event's.
+ScriptEvent parseEvent(const std::vector<std::string_view>& w, double previousTime) {
+    ScriptEvent e;
+    if (!parseNumber(w[0], e.time) || e.time < 0 || e.time > kMaxScriptSeconds)
+        throw BadLine{"the time " + quoted(w[0]) + " is not a number of seconds from 0 to 1e6"};
+    if (e.time < previousTime)
+        throw BadLine{"the time " + quoted(w[0]) + " is earlier than the line before"};
+    if (w.size() < 2) throw BadLine{"a time with no event"};
+    const bool key = sameIgnoringCase(w[1], "key"), mouse = sameIgnoringCase(w[1], "mouse");
+    if (!key && !mouse) throw BadLine{"unknown event " + quoted(w[1])};
+    if (w.size() != 4) throw BadLine{std::string(key ? "a key" : "a mouse") + " line has exactly 4 words"};
+    if (key) {
+        e.key = keyCodeFromName(w[2]);
+        if (e.key < 0)
+            throw BadLine{"unknown key " + quoted(w[2]) + " (GLFW names: W, SPACE, LEFT_SHIFT, F1, ...)"};
+        if (sameIgnoringCase(w[3], "down")) e.kind = ScriptEvent::Kind::KeyDown;
+        else if (sameIgnoringCase(w[3], "up")) e.kind = ScriptEvent::Kind::KeyUp;
+        else throw BadLine{"a key goes 'down' or 'up', not " + quoted(w[3])};
+        return e;
+    }
+    double dx = 0, dy = 0;
+    if (!parseNumber(w[2], dx) || !parseNumber(w[3], dy) || std::abs(dx) > 1e6 || std::abs(dy) > 1e6)
+        throw BadLine{"the mouse motion " + quoted(w[2]) + " " + quoted(w[3]) + " is not two numbers of pixels"};
+    e.kind = ScriptEvent::Kind::Mouse;
+    e.dx = float(dx);
+    e.dy = float(dy);
+    return e;
+}
+
 }  // namespace
 
 int keyCodeFromName(std::string_view name) {
@@ -85,44 +121,22 @@ int keyCodeFromName(std::string_view name) {
 std::vector<ScriptEvent> parseInputScript(std::string_view text, const std::string& name) {
     std::vector<ScriptEvent> events;
     std::size_t lineNumber = 0;
-    double lastTime = 0;
     while (!text.empty()) {
         ++lineNumber;
         const std::size_t eol = text.find('\n');
         std::string_view line = text.substr(0, eol);
         text = eol == std::string_view::npos ? std::string_view() : text.substr(eol + 1);
-        if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+        if (const std::size_t hash = line.find('#'); hash != std::string_view::npos)
+            line = line.substr(0, hash);
         const std::vector<std::string_view> w = words(line);
         if (w.empty()) continue;
-        auto fail = [&](const std::string& what) {
-            throw UsageError(name + ":" + std::to_string(lineNumber) + ": " + what +
+        try {
+            if (events.size() >= kMaxScriptEvents) throw BadLine{"more than a million events"};
+            events.push_back(parseEvent(w, events.empty() ? 0.0 : events.back().time));
+        } catch (const BadLine& bad) {
+            throw UsageError(name + ":" + std::to_string(lineNumber) + ": " + bad.what +
                              " (expected 'SECONDS key NAME down|up' or 'SECONDS mouse DX DY')");
-        };
-        ScriptEvent e;
-        if (!parseNumber(w[0], e.time) || e.time < 0 || e.time > kMaxScriptSeconds)
-            fail("the time " + quoted(w[0]) + " is not a number of seconds from 0 to 1e6");
-        if (e.time < lastTime) fail("the time " + quoted(w[0]) + " is earlier than the line before");
-        lastTime = e.time;
-        if (w.size() > 1 && sameIgnoringCase(w[1], "key")) {
-            if (w.size() != 4) fail("a key line has exactly 4 words");
-            e.key = keyCodeFromName(w[2]);
-            if (e.key < 0) fail("unknown key " + quoted(w[2]) + " (GLFW names: W, SPACE, LEFT_SHIFT, F1, ...)");
-            if (sameIgnoringCase(w[3], "down")) e.kind = ScriptEvent::Kind::KeyDown;
-            else if (sameIgnoringCase(w[3], "up")) e.kind = ScriptEvent::Kind::KeyUp;
-            else fail("a key goes 'down' or 'up', not " + quoted(w[3]));
-        } else if (w.size() > 1 && sameIgnoringCase(w[1], "mouse")) {
-            if (w.size() != 4) fail("a mouse line has exactly 4 words");
-            double dx = 0, dy = 0;
-            if (!parseNumber(w[2], dx) || !parseNumber(w[3], dy) || std::abs(dx) > 1e6 || std::abs(dy) > 1e6)
-                fail("the mouse motion " + quoted(w[2]) + " " + quoted(w[3]) + " is not two numbers of pixels");
-            e.kind = ScriptEvent::Kind::Mouse;
-            e.dx = float(dx);
-            e.dy = float(dy);
-        } else {
-            fail(w.size() > 1 ? "unknown event " + quoted(w[1]) : "a time with no event");
         }
-        if (events.size() >= kMaxScriptEvents) fail("more than a million events");
-        events.push_back(e);
     }
     return events;
 }
@@ -131,7 +145,8 @@ std::vector<ScriptEvent> loadInputScript(const std::string& path) {
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     if (!in) throw UsageError("--script: cannot read " + path);
     const std::streamoff size = in.tellg();
-    if (size < 0 || size > kMaxScriptBytes) throw UsageError("--script: " + path + " is larger than 16 MiB");
+    if (size < 0 || size > kMaxScriptBytes)
+        throw UsageError("--script: " + path + " is larger than 16 MiB");
     std::string text(std::size_t(size), '\0');
     in.seekg(0);
     if (!in.read(text.data(), size)) throw UsageError("--script: cannot read " + path);
@@ -141,8 +156,10 @@ std::vector<ScriptEvent> loadInputScript(const std::string& path) {
 void ScriptPlayer::playFrame(InputState& input, double frameSeconds) {
     for (; next_ < events_.size() && events_[next_].time <= clock_; ++next_) {
         const ScriptEvent& e = events_[next_];
-        if (e.kind == ScriptEvent::Kind::Mouse) applyLook(input, e.dx, e.dy);
-        else applyKey(input, e.key, e.kind == ScriptEvent::Kind::KeyDown);
+        if (e.kind == ScriptEvent::Kind::Mouse)
+            applyLook(input, e.dx, e.dy);
+        else
+            applyKey(input, e.key, e.kind == ScriptEvent::Kind::KeyDown);
     }
     if (frameSeconds > 0) clock_ += frameSeconds;
 }

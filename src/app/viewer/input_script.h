@@ -19,7 +19,7 @@ struct ScriptEvent {
     enum class Kind { KeyDown, KeyUp, Mouse };
     double time = 0;  // seconds
     Kind kind = Kind::KeyDown;
-    int key = -1;     // GLFW key code (KeyDown, KeyUp)
+    int key = -1;          // GLFW key code (KeyDown, KeyUp)
     float dx = 0, dy = 0;  // Mouse
 };
 

@@ -5,7 +5,8 @@ namespace penumbra::walk {
 WalkMap buildWalkMap(const wad::MapData& map) {
     std::vector<WalkSector> sectors;
     sectors.reserve(map.sectors.size());
-    for (const wad::Sector& s : map.sectors) sectors.push_back({double(s.floorHeight), double(s.ceilingHeight)});
+    for (const wad::Sector& s : map.sectors)
+        sectors.push_back({double(s.floorHeight), double(s.ceilingHeight)});
     // parseMap checked every index, so sides and sectors exist.
     auto sectorOf = [&](std::uint16_t side) {
         return side == wad::kNoSide ? -1 : std::int32_t(map.sidedefs[side].sector);

@@ -68,9 +68,12 @@ WalkMap makeWalkMap(std::vector<WalkSector> sectors, std::vector<WalkLine> lines
     double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
     for (std::size_t i = 0; i < g.lines.size(); ++i) {
         const WalkLine& l = g.lines[i];
-        auto validSector = [&](std::int32_t s) { return s >= -1 && s < std::int32_t(g.sectors.size()); };
+        auto validSector = [&](std::int32_t s) {
+            return s >= -1 && s < std::int32_t(g.sectors.size());
+        };
         if (!finiteLine(l) || !validSector(l.front) || !validSector(l.back))
-            throw Error("walk map: line " + std::to_string(i) + " has a non-finite end or names no sector");
+            throw Error("walk map: line " + std::to_string(i) +
+                        " has a non-finite end or names no sector");
         minX = std::min({minX, l.x1, l.x2}), maxX = std::max({maxX, l.x1, l.x2});
         minY = std::min({minY, l.y1, l.y2}), maxY = std::max({maxY, l.y1, l.y2});
     }
@@ -88,7 +91,9 @@ WalkMap makeWalkMap(std::vector<WalkSector> sectors, std::vector<WalkLine> lines
     const std::size_t cells = std::size_t(g.columns) * std::size_t(g.rows);
     g.cellStart.assign(cells + 1, 0);
     for (const WalkLine& l : g.lines)
-        rasterize(g, l, [&](std::int32_t c, std::int32_t r) { ++g.cellStart[std::size_t(r) * g.columns + c + 1]; });
+        rasterize(g, l, [&](std::int32_t c, std::int32_t r) {
+            ++g.cellStart[std::size_t(r) * g.columns + c + 1];
+        });
     for (std::size_t c = 0; c < cells; ++c) g.cellStart[c + 1] += g.cellStart[c];
     g.cellLines.resize(g.cellStart[cells]);
     std::vector<std::uint32_t> next(g.cellStart.begin(), g.cellStart.end() - 1);

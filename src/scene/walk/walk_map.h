@@ -54,14 +54,16 @@ std::int32_t gridColumn(const WalkMap& map, double x);  // clamped to the grid
 std::int32_t gridRow(const WalkMap& map, double y);
 
 template <typename Visit>
-void forEachLineNear(const WalkMap& map, double x0, double y0, double x1, double y1, Visit&& visit) {
+void forEachLineNear(const WalkMap& map, double x0, double y0, double x1, double y1,
+                     Visit&& visit) {
     if (map.columns == 0 || !(x0 <= x1) || !(y0 <= y1)) return;
     const std::int32_t c0 = gridColumn(map, x0), c1 = gridColumn(map, x1);
     const std::int32_t r0 = gridRow(map, y0), r1 = gridRow(map, y1);
     for (std::int32_t r = r0; r <= r1; ++r)
         for (std::int32_t c = c0; c <= c1; ++c) {
             const std::size_t cell = std::size_t(r) * std::size_t(map.columns) + std::size_t(c);
-            for (std::uint32_t k = map.cellStart[cell]; k < map.cellStart[cell + 1]; ++k) visit(map.cellLines[k]);
+            for (std::uint32_t k = map.cellStart[cell]; k < map.cellStart[cell + 1]; ++k)
+                visit(map.cellLines[k]);
         }
 }
 

@@ -6,7 +6,7 @@
 namespace penumbra::walk {
 namespace {
 
-constexpr int kMaxSubsteps = 4096;     // bounds the work of one call, whatever dt and speed
+constexpr int kMaxSubsteps = 4096;      // bounds the work of one call, whatever dt and speed
 constexpr double kMinSubstepRate = 70;  // falls are integrated at 70 Hz or finer
 constexpr int kBisections = 10;         // a blocked move stops within 8 / 1024 units of the wall
 
@@ -20,7 +20,8 @@ bool tryMove(const WalkMap& map, WalkState& s, double x, double y) {
 
 // Moves as far along (mx, my) as the player may go, by bisection (the start is valid). Returns
 // the fraction moved; the position at fraction `blockedAt` is one the player may not take.
-double moveUntilBlocked(const WalkMap& map, WalkState& s, double mx, double my, double* blockedAt = nullptr) {
+double moveUntilBlocked(const WalkMap& map, WalkState& s, double mx, double my,
+                        double* blockedAt = nullptr) {
     if (tryMove(map, s, s.x + mx, s.y + my)) return 1.0;
     double lo = 0, hi = 1;
     for (int i = 0; i < kBisections; ++i) {
@@ -44,7 +45,8 @@ bool lineStops(const WalkMap& map, const WalkLine& l, double z) {
 double distanceToLine(const WalkLine& l, double px, double py) {
     const double dx = l.x2 - l.x1, dy = l.y2 - l.y1;
     const double len2 = dx * dx + dy * dy;
-    const double t = len2 > 0 ? std::clamp(((px - l.x1) * dx + (py - l.y1) * dy) / len2, 0.0, 1.0) : 0.0;
+    const double t =
+        len2 > 0 ? std::clamp(((px - l.x1) * dx + (py - l.y1) * dy) / len2, 0.0, 1.0) : 0.0;
     return std::hypot(l.x1 + t * dx - px, l.y1 + t * dy - py);
 }
 
@@ -146,7 +148,8 @@ WalkState stepWalk(const WalkMap& map, WalkState s, double vx, double vy, double
     if (!(dt > 0) || !std::isfinite(dt) || !std::isfinite(vx) || !std::isfinite(vy)) return s;
     double mx = vx * dt, my = vy * dt;
     const double distance = std::hypot(mx, my);
-    const double wanted = std::max(std::ceil(distance / kMaxSubstep), std::ceil(dt * kMinSubstepRate));
+    const double wanted =
+        std::max(std::ceil(distance / kMaxSubstep), std::ceil(dt * kMinSubstepRate));
     const int steps = int(std::clamp(wanted, 1.0, double(kMaxSubsteps)));
     if (distance > steps * kMaxSubstep) {  // longer than the work bound allows: shortened
         mx *= steps * kMaxSubstep / distance;

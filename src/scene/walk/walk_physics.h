@@ -14,11 +14,11 @@ namespace penumbra::walk {
 // Doom's player (the Doom source's MT_PLAYER and p_local.h), map units.
 constexpr double kPlayerRadius = 16;  // half the side of the square the player occupies
 constexpr double kPlayerHeight = 56;
-constexpr double kEyeHeight = 41;     // above the feet (VIEWHEIGHT)
+constexpr double kEyeHeight = 41;  // above the feet (VIEWHEIGHT)
 constexpr double kMaxStepUp = 24;
-constexpr double kGravity = 1225;     // units/s^2: one unit per tic per tic at 35 tics per second
-constexpr double kWalkSpeed = 292;    // units/s: Doom's top walking speed (8.3 units per tic)
-constexpr double kRunSpeed = 583;     // units/s: running (Shift)
+constexpr double kGravity = 1225;   // units/s^2: one unit per tic per tic at 35 tics per second
+constexpr double kWalkSpeed = 292;  // units/s: Doom's top walking speed (8.3 units per tic)
+constexpr double kRunSpeed = 583;   // units/s: running (Shift)
 // Moves are cut into pieces no longer than this, so a fast move cannot jump over a thin wall.
 constexpr double kMaxSubstep = kPlayerRadius / 2;
 

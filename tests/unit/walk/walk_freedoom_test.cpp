@@ -90,13 +90,15 @@ void checkPlayerStarts(const std::string& bytes, const std::string& file) {
         for (const wad::Thing& t : data.things) {
             if (t.type != 1) continue;
             std::optional<WalkState> s = placePlayer(map, t.x, t.y, -1e9);
-            ASSERT_TRUE(s.has_value()) << file << " " << data.name << ": the player start does not fit";
+            ASSERT_TRUE(s.has_value())
+                << file << " " << data.name << ": the player start does not fit";
             // On the floor of the start's sector, and able to take a step somewhere.
             EXPECT_EQ(s->z, map.sectors[std::size_t(sectorAt(map, t.x, t.y))].floor) << data.name;
             int moved = 0;
             for (int d = 0; d < 8; ++d) {
                 const double a = d * 0.785398;
-                WalkState n = stepWalk(map, *s, kWalkSpeed * std::cos(a), kWalkSpeed * std::sin(a), 0.05);
+                WalkState n =
+                    stepWalk(map, *s, kWalkSpeed * std::cos(a), kWalkSpeed * std::sin(a), 0.05);
                 moved += std::hypot(n.x - s->x, n.y - s->y) > 1;
             }
             EXPECT_GT(moved, 0) << file << " " << data.name << ": stuck at the start";

@@ -32,13 +32,17 @@ WalkMap twoRooms(int floorB, int ceilingB, int middleFlags = kTwoSided, int heig
     MapBuilder m;
     const int a = m.sector(0, 128, "FLOOR1", "CEIL1", 160);
     const int b = m.sector(floorB, ceilingB, "FLOOR1", "CEIL1", 160);
-    const int v00 = m.vertex(0, 0), v0h = m.vertex(0, height), vmh = m.vertex(256, height), vm0 = m.vertex(256, 0);
+    const int v00 = m.vertex(0, 0), v0h = m.vertex(0, height), vmh = m.vertex(256, height),
+              vm0 = m.vertex(256, 0);
     const int vxh = m.vertex(512, height), vx0 = m.vertex(512, 0);
-    auto wall = [&](int v1, int v2, int sector) { m.line(v1, v2, m.side(sector, "-", "-", "WALL1")); };
+    auto wall = [&](int v1, int v2, int sector) {
+        m.line(v1, v2, m.side(sector, "-", "-", "WALL1"));
+    };
     wall(vm0, v00, a);
     wall(v00, v0h, a);
     wall(v0h, vmh, a);
-    m.line(vmh, vm0, m.side(a, "WALL1", "WALL1", "-"), m.side(b, "WALL1", "WALL1", "-"), middleFlags);
+    m.line(vmh, vm0, m.side(a, "WALL1", "WALL1", "-"), m.side(b, "WALL1", "WALL1", "-"),
+           middleFlags);
     wall(vmh, vxh, b);
     wall(vxh, vx0, b);
     wall(vx0, vm0, b);
@@ -47,7 +51,8 @@ WalkMap twoRooms(int floorB, int ceilingB, int middleFlags = kTwoSided, int heig
 }
 
 // Walks with a constant velocity for `seconds` in steps of dt.
-WalkState walk(const WalkMap& map, WalkState s, double vx, double vy, double seconds, double dt = 1.0 / 60) {
+WalkState walk(const WalkMap& map, WalkState s, double vx, double vy, double seconds,
+               double dt = 1.0 / 60) {
     for (double t = 0; t < seconds - 1e-9; t += dt) s = stepWalk(map, s, vx, vy, dt);
     return s;
 }
@@ -79,17 +84,22 @@ TEST(Walk, ClimbsA24UnitStepButNotA25UnitOne) {
 
 TEST(Walk, TooLowAnOpeningBlocks) {
     const WalkMap fits = twoRooms(0, 56), tooLow = twoRooms(0, 55), raisedFloor = twoRooms(16, 71);
-    EXPECT_NEAR(walk(fits, standAt(fits, 128, 128), kWalkSpeed, 0, 2.0).x, 512 - kPlayerRadius, 0.05);
-    EXPECT_NEAR(walk(tooLow, standAt(tooLow, 128, 128), kWalkSpeed, 0, 2.0).x, 256 - kPlayerRadius, 0.05);
+    EXPECT_NEAR(walk(fits, standAt(fits, 128, 128), kWalkSpeed, 0, 2.0).x, 512 - kPlayerRadius,
+                0.05);
+    EXPECT_NEAR(walk(tooLow, standAt(tooLow, 128, 128), kWalkSpeed, 0, 2.0).x, 256 - kPlayerRadius,
+                0.05);
     // A step the player could climb, under a ceiling 55 units above the raised floor.
-    EXPECT_NEAR(walk(raisedFloor, standAt(raisedFloor, 128, 128), kWalkSpeed, 0, 2.0).x, 256 - kPlayerRadius, 0.05);
+    EXPECT_NEAR(walk(raisedFloor, standAt(raisedFloor, 128, 128), kWalkSpeed, 0, 2.0).x,
+                256 - kPlayerRadius, 0.05);
 }
 
 TEST(Walk, BlockingLinesBlockAndMonsterBlockingLinesDoNot) {
     const WalkMap blocking = twoRooms(0, 128, kTwoSided | kBlocking);
     const WalkMap monsters = twoRooms(0, 128, kTwoSided | kBlockMonsters);
-    EXPECT_NEAR(walk(blocking, standAt(blocking, 128, 128), kWalkSpeed, 0, 2.0).x, 256 - kPlayerRadius, 0.05);
-    EXPECT_NEAR(walk(monsters, standAt(monsters, 128, 128), kWalkSpeed, 0, 2.0).x, 512 - kPlayerRadius, 0.05);
+    EXPECT_NEAR(walk(blocking, standAt(blocking, 128, 128), kWalkSpeed, 0, 2.0).x,
+                256 - kPlayerRadius, 0.05);
+    EXPECT_NEAR(walk(monsters, standAt(monsters, 128, 128), kWalkSpeed, 0, 2.0).x,
+                512 - kPlayerRadius, 0.05);
 }
 
 TEST(Walk, SlidesAlongAWallHitAtAnAngle) {
@@ -108,9 +118,12 @@ TEST(Walk, FallsOffALedgeAndLandsOnTheLowerFloor) {
     const WalkMap map = [&] {
         const int a = m.sector(64, 192, "FLOOR1", "CEIL1", 160);
         const int b = m.sector(0, 192, "FLOOR1", "CEIL1", 160);
-        const int v00 = m.vertex(0, 0), v0h = m.vertex(0, 256), vmh = m.vertex(256, 256), vm0 = m.vertex(256, 0);
+        const int v00 = m.vertex(0, 0), v0h = m.vertex(0, 256), vmh = m.vertex(256, 256),
+                  vm0 = m.vertex(256, 0);
         const int vxh = m.vertex(512, 256), vx0 = m.vertex(512, 0);
-        auto wall = [&](int v1, int v2, int sector) { m.line(v1, v2, m.side(sector, "-", "-", "WALL1")); };
+        auto wall = [&](int v1, int v2, int sector) {
+            m.line(v1, v2, m.side(sector, "-", "-", "WALL1"));
+        };
         wall(vm0, v00, a), wall(v00, v0h, a), wall(v0h, vmh, a);
         m.line(vmh, vm0, m.side(a, "-", "-", "-"), m.side(b, "-", "WALL1", "-"), kTwoSided);
         wall(vmh, vxh, b), wall(vxh, vx0, b), wall(vx0, vm0, b);
@@ -151,15 +164,16 @@ TEST(Walk, AFastMoveDoesNotPassAThinWall) {
     EXPECT_NEAR(s.x, 256 - kPlayerRadius, 0.05);
     // And a zero-thickness blocking line.
     const WalkMap line = twoRooms(0, 128, kTwoSided | kBlocking);
-    EXPECT_NEAR(stepWalk(line, standAt(line, 128, 128), 10000, 0, 0.1).x, 256 - kPlayerRadius, 0.05);
+    EXPECT_NEAR(stepWalk(line, standAt(line, 128, 128), 10000, 0, 0.1).x, 256 - kPlayerRadius,
+                0.05);
 }
 
 TEST(Walk, PlacementClampsToTheFloorAndRefusesWalls) {
     const WalkMap map = twoRooms(24, 100);
-    EXPECT_EQ(placePlayer(map, 128, 128, -50)->z, 0);      // below the floor: onto it
+    EXPECT_EQ(placePlayer(map, 128, 128, -50)->z, 0);                    // below the floor: onto it
     EXPECT_EQ(placePlayer(map, 128, 128, 500)->z, 128 - kPlayerHeight);  // above: under the ceiling
     EXPECT_EQ(placePlayer(map, 300, 128, 60)->z, 100 - kPlayerHeight);
-    EXPECT_EQ(placePlayer(map, 300, 128, 30)->z, 30);  // in between: where it was
+    EXPECT_EQ(placePlayer(map, 300, 128, 30)->z, 30);          // in between: where it was
     EXPECT_FALSE(placePlayer(map, 8, 128, 0).has_value());     // the box overlaps the west wall
     EXPECT_FALSE(placePlayer(map, -100, 128, 0).has_value());  // outside the map
 }

@@ -17,8 +17,6 @@ inline Vec3 mapToScene(double x, double y, double z) {
 inline Vec3 mapToScene(Vec3 map) { return mapToScene(map.x, map.y, map.z); }
 
 // The inverse: a scene point as (x, y, z = height) in map units.
-inline Vec3 sceneToMap(Vec3 scene) {
-    return Vec3(scene.x, -scene.z, scene.y) * kUnitsPerMetre;
-}
+inline Vec3 sceneToMap(Vec3 scene) { return Vec3(scene.x, -scene.z, scene.y) * kUnitsPerMetre; }
 
 }  // namespace penumbra::wad
