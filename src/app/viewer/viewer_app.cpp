@@ -185,6 +185,22 @@ void toggleWalking(CameraController& controller, PanelState& panel) {
     }
 }
 
+// The keys pressed (and the wheel turned) since the last frame, and the panel's buttons.
+void handlePresses(const InputState& input, GLFWwindow* w, PointerState& pointer, CameraController& controller,
+                   PanelState& panel) {
+    if (input.pauseToggled) panel.playing = !panel.playing;
+    if (input.resetCamera || panel.resetCamera) controller.reset();
+    panel.resetCamera = false;
+    if (input.screenshot) panel.screenshotRequested = true;
+    if (input.walkToggled) toggleWalking(controller, panel);
+    if (input.panelToggled) panel.visible = !panel.visible;
+    if (input.escape) {  // releases the captured mouse first; quits only when it is free
+        if (pointer.captured) setCaptured(w, pointer, false);
+        else glfwSetWindowShouldClose(w, GLFW_TRUE);
+    }
+    if (input.scroll != 0) controller.scaleSpeed(std::pow(1.25f, input.scroll));
+}
+
 bool sameCamera(const Camera& a, const Camera& b) {
     return a.position == b.position && a.lookAt == b.lookAt && a.up == b.up && a.fovYDegrees == b.fovYDegrees;
 }
@@ -282,17 +298,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         const bool automationDone = options.frames && framesRendered >= *options.frames;
         const bool advancing = panel.playing && !automationDone;
         if (script && advancing) script->playFrame(input, step);
-        if (input.pauseToggled) panel.playing = !panel.playing;
-        if (input.resetCamera || panel.resetCamera) controller.reset();
-        if (input.screenshot) panel.screenshotRequested = true;
-        if (input.walkToggled) toggleWalking(controller, panel);
-        if (input.panelToggled) panel.visible = !panel.visible;
-        if (input.escape) {
-            if (pointer.captured) setCaptured(w, pointer, false);
-            else window.requestClose();
-        }
-        panel.resetCamera = false;
-        if (input.scroll != 0) controller.scaleSpeed(std::pow(1.25f, input.scroll));
+        handlePresses(input, w, pointer, controller, panel);
         if (std::optional<Click> click = trackPointer(w, pointer, input, ui.wantsMouse()))
             handleClick(w, *click, pointer, scene, renderer, controller, settings, edit);
         // Paused, the camera stays where the shown frame was taken.
