@@ -17,13 +17,13 @@
 // The flag is the only branch spheres add to the hot loop.
 bool hitPrimitive(uint i, vec3 o, vec3 d, float tMax, out float t, out float u, out float v) {
     TriVerts tri = triVerts[i];
-    if ((tri.flags & PN_TRI_SPHERE) != 0u) {
+    if (PN_HAS(PN_FEATURE_SPHERES) && (tri.flags & PN_TRI_SPHERE) != 0u) {
         u = 0.0;
         v = 0.0;
         return intersectSphere(tri, o, d, tMax, t);
     }
     if (!intersectTriangle(tri, o, d, tMax, t, u, v)) return false;
-    return (tri.flags & PN_TRI_ALPHA_TESTED) == 0u || !isAlphaHole(i, u, v);
+    return !PN_HAS(PN_FEATURE_ALPHA_TEST) || (tri.flags & PN_TRI_ALPHA_TESTED) == 0u || !isAlphaHole(i, u, v);
 }
 
 struct Hit {
@@ -91,11 +91,13 @@ Hit traverseBrute(vec3 o, vec3 d, float tMax, bool anyHit) {
 }
 
 Hit traceClosest(vec3 o, vec3 d, float tMax) {
-    return frame.accel == PN_ACCEL_BRUTE ? traverseBrute(o, d, tMax, false) : traverseBvh(o, d, tMax, false);
+    return PN_HAS(PN_FEATURE_BRUTE_FORCE) && frame.accel == PN_ACCEL_BRUTE ? traverseBrute(o, d, tMax, false)
+                                                                           : traverseBvh(o, d, tMax, false);
 }
 
 bool traceOccluded(vec3 o, vec3 d, float tMax) {
-    Hit h = frame.accel == PN_ACCEL_BRUTE ? traverseBrute(o, d, tMax, true) : traverseBvh(o, d, tMax, true);
+    Hit h = PN_HAS(PN_FEATURE_BRUTE_FORCE) && frame.accel == PN_ACCEL_BRUTE ? traverseBrute(o, d, tMax, true)
+                                                                            : traverseBvh(o, d, tMax, true);
     return h.triangle != PN_NO_HIT;
 }
 

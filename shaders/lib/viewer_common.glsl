@@ -14,7 +14,7 @@ layout(std430, set = 0, binding = PN_BINDING_VIEWER) readonly buffer ViewerBuffe
 bool insideImage(ivec2 p) { return p.x >= 0 && p.y >= 0 && p.x < int(frame.width) && p.y < int(frame.height); }
 uint pixelIndex(ivec2 p) { return uint(p.y) * frame.width + uint(p.x); }
 
-float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+#include "shared/color.h"
 
 vec3 rgbToYCoCg(vec3 c) {
     return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b, -0.25 * c.r + 0.5 * c.g - 0.25 * c.b);

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "gpu/check.h"
 #include "render/frame_uniforms.h"
+#include "render/kernel_features.h"
 #include "render/passes/gbuffer_pass.h"
 
 namespace penumbra {
@@ -49,6 +50,7 @@ const char* viewerPassName(ViewerPass pass) {
         case ViewerPass::Tonemap: return "tonemap";
         case ViewerPass::Heatmap: return "heat map";
         case ViewerPass::Boxes: return "BVH boxes";
+        case ViewerPass::Frame: return "frame";
         case ViewerPass::Count: break;
     }
     return "?";
@@ -144,8 +146,9 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
 }
 
 void InteractiveRenderer::createPasses() {
-    trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_);
-    gbufferPass_ = std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, gbuffer_);
+    features_ = penumbra::kernelFeatures(arrays_, Accel::Bvh);
+    trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, features_);
+    gbufferPass_ = std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, gbuffer_, features_);
     auto temporal = [&](const gpu::Buffer& in, const gpu::Buffer& out) {
         return std::make_unique<TemporalPass>(
             ctx_, TemporalBuffers{&frameUniforms_, &viewerUniforms_, &accumulation_, &gbuffer_, &gbufferPrev_, &in,
@@ -225,6 +228,8 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     heatFrame_ = heat;
 
     timer_.reset();
+    recorded_ = 0;
+    timer_.begin(cmd, std::uint32_t(ViewerPass::Frame));
     if (torchLight_ && s.torch) {
         // attachTorch's placement: 15 cm below the eye.
         shader::PunctualLight light = arrays_.punctual[*torchLight_];
@@ -244,7 +249,6 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
         timer_.end(cmd, std::uint32_t(pass));
         recorded_ |= 1u << std::uint32_t(pass);
     };
-    recorded_ = 0;
     timed(ViewerPass::Trace, [&] { trace_->record(cmd, width_, height_, frameIndex_, true); });
     timed(ViewerPass::GBuffer, [&] { gbufferPass_->record(cmd, width_, height_); });
     if (heat) timed(ViewerPass::Heatmap, [&] { heatmap_->record(cmd, width_, height_); });
@@ -255,8 +259,10 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     TonemapPass& tonemap = fromA ? *tonemapB_ : *tonemapA_;
     if (denoise) {
         timed(ViewerPass::Denoise, [&] { denoise_->record(cmd, width_, height_, s.denoiseIterations); });
-        tonemap.setFiltered(denoise_->output(s.denoiseIterations));
+        denoised_ = &denoise_->output(s.denoiseIterations);
+        tonemap.setFiltered(*denoised_);
     } else {
+        denoised_ = nullptr;
         tonemap.setFiltered(filterB_);  // the heat map's counts, when it ran
     }
     timed(ViewerPass::Tonemap, [&] { tonemap.record(cmd, width_, height_); });
@@ -273,6 +279,8 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     VkBufferCopy copy{0, 0, gbuffer_.size()};
     vkCmdCopyBuffer(cmd, gbuffer_.get(), gbufferPrev_.get(), 1, &copy);
     gpu::computeBarrier(cmd);
+    timer_.end(cmd, std::uint32_t(ViewerPass::Frame));
+    recorded_ |= 1u << std::uint32_t(ViewerPass::Frame);
 
     previousFrame_ = f;
     historyValid_ = true;
@@ -285,7 +293,8 @@ void InteractiveRenderer::finishFrame() {
         stats_.passMilliseconds[p] = (recorded_ >> p) & 1u ? timer_.milliseconds(p) : 0.0;
     const auto* counts = static_cast<const shader::RayCounters*>(counters_.mapped());
     const double traceSeconds = stats_.passMilliseconds[std::size_t(ViewerPass::Trace)] * 1e-3;
-    stats_.raysPerSecond = traceSeconds > 0 ? double(counts->closestRays + counts->shadowRays) / traceSeconds : 0.0;
+    stats_.rays = std::uint64_t(counts->closestRays) + counts->shadowRays;
+    stats_.raysPerSecond = traceSeconds > 0 ? double(stats_.rays) / traceSeconds : 0.0;
     if (heatFrame_) {
         const auto* heat = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());
         stats_.heatMaxNodes = heat->maxNodes;
