@@ -333,6 +333,10 @@ PN_STRUCT(FrameUniforms) {
 #define PN_DEBUG_HEAT_TRIS 7u    // triangles tested by the primary ray
 #define PN_DEBUG_BVH_BOXES 8u    // the image with the BVH's boxes at one depth outlined (boxes.comp)
 #define PN_MAX_OVERLAY_BOXES 4096u  // boxes the overlay draws at most (each pixel tests every one)
+// The debug view's small window (picture-in-picture): 1/PN_DEBUG_INSET_DIVISOR of the image's
+// width and height, PN_DEBUG_INSET_MARGIN pixels from its bottom right corner, in a one-pixel frame.
+#define PN_DEBUG_INSET_DIVISOR 4u
+#define PN_DEBUG_INSET_MARGIN 8u
 #define PN_OVERLAY_COLOR 0xff00ffffu  // RGBA8 of an outlined pixel: opaque yellow
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
 // The denoiser's per-pixel guide, written by temporal.comp: x = the shading normal, octahedral,
@@ -393,9 +397,9 @@ PN_STRUCT(ViewerUniforms) {
     float sigmaDepth;      // relative depth difference per pixel of step
     float heatMax;         // heat-map count shown as the hottest colour
     uint denoise;          // nonzero: the tonemap input is the denoiser's output
+    float debugOpacity;    // the debug view blended over the image: 1 shows only the view, 0 only the image
+    uint debugInset;       // nonzero: the debug view in a small window over the image (PN_DEBUG_INSET_*)
     uint pad0;
-    uint pad1;
-    uint pad2;
 };
 
 // Largest traversal counts of a heat-map frame (for the legend), 16 bytes.
@@ -533,7 +537,8 @@ static_assert(sizeof(ViewerUniforms) == 128 && offsetof(ViewerUniforms, prevTanH
               offsetof(ViewerUniforms, exposure) == 64 && offsetof(ViewerUniforms, samplesPerFrame) == 76 &&
               offsetof(ViewerUniforms, clampSigma) == 80 && offsetof(ViewerUniforms, maxHistory) == 92 &&
               offsetof(ViewerUniforms, sigmaLuminance) == 96 && offsetof(ViewerUniforms, heatMax) == 108 &&
-              offsetof(ViewerUniforms, denoise) == 112);
+              offsetof(ViewerUniforms, denoise) == 112 && offsetof(ViewerUniforms, debugOpacity) == 116 &&
+              offsetof(ViewerUniforms, debugInset) == 120);
 static_assert(sizeof(HeatCounters) == 16);
 }  // namespace penumbra::shader
 #endif

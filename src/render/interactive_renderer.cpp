@@ -1,5 +1,6 @@
 #include "render/interactive_renderer.h"
 
+#include <algorithm>
 #include <cstring>
 #include <utility>
 
@@ -217,7 +218,12 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     const auto* heatMax = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());
     v.heatMax = heat ? float(s.debug == DebugView::HeatNodes ? heatMax->maxNodes : heatMax->maxTris)
                      : float(frameIndex_ + 1) * float(s.samplesPerFrame);
-    const bool denoise = s.denoise && s.denoiseIterations > 0 && shown == DebugView::None;
+    v.debugOpacity = std::clamp(s.debugOpacity, 0.0f, 1.0f);
+    v.debugInset = s.debugInset ? 1u : 0u;
+    // The image shows under a see-through or small debug view; the heat counts use the buffer
+    // the denoiser writes, so under a heat map the image is not denoised.
+    const bool imageShown = shown == DebugView::None || v.debugOpacity < 1.0f || s.debugInset;
+    const bool denoise = s.denoise && s.denoiseIterations > 0 && imageShown && !heat;
     v.denoise = denoise ? 1u : 0u;
     std::memcpy(frameUniforms_.mapped(), &f, sizeof(f));
     std::memcpy(viewerUniforms_.mapped(), &v, sizeof(v));

@@ -38,6 +38,8 @@ struct ViewSettings {
     float exposure = 0.0f;     // stops
     ToneMapper toneMapper = ToneMapper::Reinhard;
     DebugView debug = DebugView::None;
+    float debugOpacity = 1.0f;  // of the debug view over the image: 1 shows only the view, 0 only the image
+    bool debugInset = false;    // the debug view in a small window over the image (picture-in-picture)
     std::uint32_t boxDepth = 0;   // BvhBoxes: the BVH depth whose boxes are outlined (root: 0)
     float boxLineWidth = 1.5f;    // BvhBoxes: pixels
     // Depth of field, overriding the camera's own (a thin lens; radius 0 is a pinhole).
@@ -48,6 +50,8 @@ struct ViewSettings {
     Vec3 torchColor{1.0f, 0.85f, 0.6f};
     float torchIntensity = 80.0f;  // candela
     float torchRange = 0.0f;       // 0: unlimited
+
+    bool operator==(const ViewSettings&) const = default;
 };
 
 }  // namespace penumbra

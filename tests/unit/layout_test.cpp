@@ -132,7 +132,8 @@ TEST(Layout, ViewerStructsMatchInTheViewerShaders) {
                        offsetof(ViewerUniforms, depthTolerance), offsetof(ViewerUniforms, normalTolerance),
                        offsetof(ViewerUniforms, maxHistory), offsetof(ViewerUniforms, sigmaLuminance),
                        offsetof(ViewerUniforms, sigmaNormal), offsetof(ViewerUniforms, sigmaDepth),
-                       offsetof(ViewerUniforms, heatMax), offsetof(ViewerUniforms, denoise)});
+                       offsetof(ViewerUniforms, heatMax), offsetof(ViewerUniforms, denoise),
+                       offsetof(ViewerUniforms, debugOpacity), offsetof(ViewerUniforms, debugInset)});
         expectMembers(spv, "HeatCounters", {0, offsetof(HeatCounters, maxTris)});
         expectMembers(spv, "FrameUniforms", {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight)});
         expectMembers(spv, "PassPush", {0, offsetof(PassPush, mode), offsetof(PassPush, itemCount), offsetof(PassPush, countRays)});

@@ -15,20 +15,20 @@
 #include "scene/io/wad/map.h"
 #include "scene/io/wad/textures.h"
 #include "scene/io/wad/triangulate.h"
+#include "scene/io/wad/units.h"
+#include "scene/walk/wad_walk_map.h"
+#include "scene/walk/walk_physics.h"
 
 namespace penumbra {
 namespace {
 using namespace wad;
 
-constexpr float kUnitsPerMetre = 32.0f;
-constexpr float kEyeHeight = 41.0f;
+constexpr double kEyeHeight = walk::kEyeHeight;
 constexpr Vec3 kSkyRadiance{1.0f, 1.0f, 1.1f};
 constexpr std::int64_t kFillBudget = 50'000'000;  // slab sweep work units per map
 constexpr std::size_t kMaxLights = 4096;
 
-Vec3 toWorld(double x, double height, double y) {
-    return Vec3(float(x), float(height), float(-y)) / kUnitsPerMetre;
-}
+Vec3 toWorld(double x, double height, double y) { return mapToScene(x, y, height); }
 
 bool isSky(const std::string& flat) { return flat == "F_SKY1"; }
 bool hasTexture(const std::string& name) { return !name.empty() && name != "-"; }
@@ -89,6 +89,7 @@ public:
         buildFlats();
         placeCamera();
         placeLights();
+        scene_.walkMap = walk::buildWalkMap(map_);
         scene_.textures = std::move(textures_.textures());
         scene_.validate();
         return std::move(scene_);
