@@ -42,10 +42,10 @@ public:
     // refs[0] holds the references; refs[1] is as large, for out-of-place partitions: a node
     // at depth d finds its primitives in refs[(d - 1) % 2]. primOrder must have one entry per
     // reference; leaves fill it.
-    Builder(BigBuffer<PrimRef>* refs, std::uint32_t* primOrder, const BuildOptions& options)
+    Builder(BigBuffer<PrimRef>* refs, std::uint32_t* primOrder, shader::BvhNode* slots, const BuildOptions& options)
         : refs_(refs),
           primOrder_(primOrder),
-          slots_(2 * refs[0].size() - 1),
+          slots_(slots),
           total_(std::uint32_t(refs[0].size())),
           threads_(hardwareThreads()),
           sah_(options) {}
@@ -85,31 +85,30 @@ public:
 
     void addWritten(std::uint32_t nodes) { written_ += nodes; }
 
-    // The nodes in depth-first order without gaps: a walk from the root, patching each right
-    // link to where its target lands.
-    std::vector<shader::BvhNode> compact() const {
+    // Closes the gaps in place: a walk from the root visits the slots in increasing order and
+    // writes each node at or before its slot, patching each right link to where its target
+    // lands. Returns the node count.
+    std::uint32_t compact() {
         struct Pending {
-            std::uint32_t slot, parent;  // parent: output index whose right link points here, or none
+            std::uint32_t slot, parent;  // parent: index whose right link points here, or none
         };
         constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-        std::vector<shader::BvhNode> out;
-        out.reserve(written_.load());
-        adviseHugePages(out.data(), out.capacity() * sizeof(shader::BvhNode));
         std::vector<Pending> stack{{0, kNone}};
+        std::uint32_t count = 0;
         while (!stack.empty()) {
-            Pending p = stack.back();
+            const Pending p = stack.back();
             stack.pop_back();
-            const std::uint32_t index = std::uint32_t(out.size());
-            if (p.parent != kNone) out[p.parent].firstOrRight = index;
-            const shader::BvhNode& node = slots_[p.slot];
-            out.push_back(node);
+            if (p.parent != kNone) slots_[p.parent].firstOrRight = count;
+            const shader::BvhNode node = slots_[p.slot];
+            slots_[count] = node;
             if (node.triCount == 0) {
-                stack.push_back({node.firstOrRight, index});
+                stack.push_back({node.firstOrRight, count});
                 stack.push_back({p.slot + 1, kNone});
             }
+            ++count;
         }
-        PN_CHECK(out.size() == written_.load());
-        return out;
+        PN_CHECK(count == written_.load());
+        return count;
     }
 
 private:
@@ -183,7 +182,7 @@ private:
 
     BigBuffer<PrimRef>* refs_;
     std::uint32_t* primOrder_;
-    BigBuffer<shader::BvhNode> slots_;  // 2n - 1, never initialised: most are never written
+    shader::BvhNode* slots_;  // 2n - 1
     std::uint32_t total_;
     unsigned threads_;
     sah::SahBinning sah_;
@@ -245,7 +244,12 @@ Bvh buildFrom(std::size_t count, RefOf&& refOf, const BuildOptions& options) {
     bvh.primOrder.reserve(count);
     adviseHugePages(bvh.primOrder.data(), count * sizeof(std::uint32_t));
     bvh.primOrder.resize(count);
-    Builder builder(refs, bvh.primOrder.data(), options);
+    // The tree is built in the output itself: 2n - 1 slots, the most a binary tree over n
+    // leaves can need, closed up by compact() afterwards.
+    bvh.nodes.reserve(2 * count - 1);
+    adviseHugePages(bvh.nodes.data(), bvh.nodes.capacity() * sizeof(shader::BvhNode));
+    bvh.nodes.resize(2 * count - 1);
+    Builder builder(refs, bvh.primOrder.data(), bvh.nodes.data(), options);
     auto buildRoot = [&](TaskGroup* tasks) {
         std::uint32_t nodes = 0;
         builder.subtree(root, 1, 0, 0, tasks, nodes);
@@ -257,7 +261,8 @@ Bvh buildFrom(std::size_t count, RefOf&& refOf, const BuildOptions& options) {
     } else {
         buildRoot(nullptr);
     }
-    bvh.nodes = builder.compact();
+    bvh.nodes.resize(builder.compact());
+    if (bvh.nodes.size() < bvh.nodes.capacity() / 2) bvh.nodes.shrink_to_fit();
     return bvh;
 }
 

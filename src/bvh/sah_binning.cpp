@@ -48,10 +48,10 @@ simd::I4 Binner::indices(F4 centroid) const {
     return __builtin_convertvector(simd::vmin(simd::vmax((centroid - origin) * scale, zero), lastBin), simd::I4);
 }
 
-// What one bin of one axis holds: the bounds of its primitives and of their centroids. No
-// initialisers, so a node pays only for the bins it uses (BinGrid::reset).
+// What one bin of one axis holds: the bounds of its primitives. No initialisers, so a node pays
+// only for the bins it uses (BinGrid::reset).
 struct Bin {
-    F4 lo, hi, centroidLo, centroidHi;  // 64 bytes: one cache line
+    F4 lo, hi;
 };
 
 struct BinGrid {
@@ -60,7 +60,7 @@ struct BinGrid {
 
     void reset(int bins) {
         for (int i = 0; i < bins; ++i) {
-            for (int a = 0; a < 3; ++a) bin[a][i] = {simd::kPosInf, simd::kNegInf, simd::kPosInf, simd::kNegInf};
+            for (int a = 0; a < 3; ++a) bin[a][i] = {simd::kPosInf, simd::kNegInf};
             for (std::uint32_t& n : count[i]) n = 0;
         }
     }
@@ -68,8 +68,6 @@ struct BinGrid {
         Bin& x = bin[a][i];
         x.lo = simd::vmin(x.lo, b.lo);
         x.hi = simd::vmax(x.hi, b.hi);
-        x.centroidLo = simd::vmin(x.centroidLo, b.centroidLo);
-        x.centroidHi = simd::vmax(x.centroidHi, b.centroidHi);
         count[i][a] += n;
     }
     Box4 box(int a, int i) const { return {bin[a][i].lo, bin[a][i].hi}; }
@@ -87,7 +85,7 @@ void binRange(const Binner& b, const PrimRef* refs, std::uint32_t begin, std::ui
         const F4 lo = refs[i].bottom(), hi = refs[i].hi;
         const F4 c = lo * 0.5f + hi * 0.5f;
         const simd::I4 bin = b.indices(c);
-        for (int a = 0; a < 3; ++a) grid.add(a, bin[a], {lo, hi, c, c}, 1);
+        for (int a = 0; a < 3; ++a) grid.add(a, bin[a], {lo, hi}, 1);
     }
 }
 
@@ -110,9 +108,19 @@ void fillChildren(const BinGrid& grid, const Range& range, Split& split) {
         const Bin& b = grid.bin[split.axis][i];
         Range& side = i <= split.bin ? split.left : split.right;
         side.bounds.grow(b.lo, b.hi);
-        side.centroids.grow(b.centroidLo, b.centroidHi);
         if (i <= split.bin) leftCount += grid.count[i][split.axis];
     }
+    // The children's centroid bounds, which only steer their binning, are not tracked per bin
+    // (that would cost a third of the binning loop): each child's box clipped to the parent's
+    // centroid bounds, and on the split axis to the plane between the bins, is a close fit.
+    const int a = split.axis;
+    const float plane = split.binner.origin[a] + float(split.bin + 1) / split.binner.scale[a];
+    for (Range* side : {&split.left, &split.right}) {
+        side->centroids.lo = simd::vmax(side->bounds.lo, range.centroids.lo);
+        side->centroids.hi = simd::vmin(side->bounds.hi, range.centroids.hi);
+    }
+    if (plane < split.left.centroids.hi[a] && plane >= split.left.centroids.lo[a]) split.left.centroids.hi[a] = plane;
+    if (plane > split.right.centroids.lo[a] && plane <= split.right.centroids.hi[a]) split.right.centroids.lo[a] = plane;
     split.left.begin = range.begin;
     split.left.end = split.right.begin = range.begin + leftCount;
     split.right.end = range.end;

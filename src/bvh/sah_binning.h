@@ -1,9 +1,10 @@
 // The binned-SAH steps of the builder (internal to src/bvh): primitive references, binning
 // centroids, sweeping the bins for the cheapest split, and partitioning a range by it.
 // The scheme is Wald's "On fast construction of SAH-based BVHs" (2007): bins over the centroid
-// bounds, all three bin indices from one vector subtract-multiply-clamp, and the children's
-// boxes, centroid bounds and counts read off the bins (each bin also keeps the bounds of its
-// centroids), so that a partition only moves primitives: out of place and without branches.
+// bounds, all three bin indices from one vector subtract-multiply-clamp, all three axes swept
+// at once, and the children's boxes and counts read off the bins, so that a partition only
+// moves primitives (out of place and without branches). The smallest nodes skip binning for an
+// exact sweep over their few centroids (sah_small.cpp).
 #pragma once
 
 #include <bit>
@@ -33,7 +34,8 @@ struct alignas(32) PrimRef {
 
 struct Range {
     std::uint32_t begin = 0, end = 0;
-    simd::Box4 bounds, centroids;
+    simd::Box4 bounds;     // exact
+    simd::Box4 centroids;  // contains every centroid, not always tightly: it only places the bins
 
     std::uint32_t size() const { return end - begin; }
 };
