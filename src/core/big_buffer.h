@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <type_traits>
+#include <vector>
 
 namespace penumbra {
 
@@ -12,6 +13,24 @@ namespace penumbra {
 // MADV_HUGEPAGE on the whole 2 MiB pages inside the range); a no-op elsewhere or on failure.
 // Call it before the memory is first touched.
 void adviseHugePages(void* data, std::size_t bytes);
+
+// A vector of n copies of `value` whose storage is advised for huge pages before it is first
+// touched (loaders and builders filling millions of elements).
+template <typename T>
+std::vector<T> hugeVector(std::size_t n, const T& value = T()) {
+    std::vector<T> v;
+    v.reserve(n);
+    adviseHugePages(v.data(), n * sizeof(T));
+    v.resize(n, value);
+    return v;
+}
+
+// Reserves room for n elements in an empty vector, advised for huge pages.
+template <typename T>
+void reserveHuge(std::vector<T>& v, std::size_t n) {
+    v.reserve(n);
+    adviseHugePages(v.data(), n * sizeof(T));
+}
 
 // `count` uninitialised elements of a trivially copyable T; move-only.
 template <typename T>
