@@ -32,8 +32,9 @@ void printScene(const std::string& name, const std::string& map, const Environme
                                  arrays.env.alias.size() * (sizeof(shader::EnvAlias) + sizeof(Vec4));
     std::printf("scene %s: %zu triangles, %zu materials, %zu emissive triangles, loaded in %.0f ms\n",
                 scene.name.c_str(), tris, scene.materials.size(), arrays.lights.size(), loadMs);
-    std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, built in %.2f ms\n", s.nodes,
-                s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.buildMilliseconds);
+    std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, %s in %.2f ms\n", s.nodes,
+                s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.bvhFromCache ? "read from the cache" : "built",
+                arrays.buildMilliseconds);
     std::printf("  %zu textures, %zu punctual lights, %u spheres (in the triangle count), %zu sphere lights\n",
                 scene.textures.size(), arrays.punctual.size(), arrays.sphereCount, arrays.sphereLights.size());
     if (scene.environment.map)
@@ -75,6 +76,7 @@ void registerInfo(CLI::App& app, Action& action) {
     cmd->add_option("scene", args->scene, "built-in scene or scene file");
     cmd->add_option("--map", args->map, "level of a .wad file");
     addDeviceOption(*cmd, args->device);
+    addBvhCacheOption(*cmd);
     addEnvironmentOptions(*cmd, args->env);
     cmd->callback([args, &action] { action = [args] { runInfo(*args); }; });
 }
