@@ -141,9 +141,18 @@ pack() {
   write_scenes "$data"
   xz -T0 -6 -k "$data/dragon.obj"
   git rev-parse HEAD > "$data/commit.txt"
-  ../shared/tools/gpu-pack.sh build/penumbra /usr/bin/pathtracer "$(command -v xz)" \
+  # gpu-pack.sh packs into .gpu/ of the git checkout it runs in and expects a plain .git folder;
+  # run it in a scratch repository (this may be a worktree) and move the result here.
+  local packdir=$scratch/pack
+  mkdir -p "$packdir" && git -C "$packdir" init -q
+  [ -d .gpu/debs ] && mkdir -p "$packdir/.gpu" && cp -r .gpu/debs "$packdir/.gpu/"  # skips the download
+  (cd "$packdir" && "$top/../shared/tools/gpu-pack.sh" "$top/build/penumbra" /usr/bin/pathtracer "$(command -v xz)" \
     "$data/dragon_vrip.ply.gz" "$data/dragon.obj.xz" "$data"/dragon.json "$data"/dragon12.json \
-    "$data"/dragon12.xml "$data"/dragon.cam "$data"/dragon12.cam "$data/commit.txt" >&2
+    "$data"/dragon12.xml "$data"/dragon.cam "$data"/dragon12.cam "$data/commit.txt") >&2
+  rm -rf .gpu
+  mv "$packdir/.gpu" .gpu
+  git check-ignore -q .gpu 2>/dev/null ||
+    echo "gpu-bench-large: note: .gpu/ is not ignored by git here; never commit it" >&2
   # Everything big that xz itself does not need is sent compressed and unpacked on the host.
   for f in .gpu/lib/*; do
     case "$(basename "$f")" in liblzma.so*) continue ;; esac

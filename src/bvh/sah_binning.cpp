@@ -36,13 +36,8 @@ Binner::Binner(const Range& range, int binCount) : bins(binCount) {
     }
 }
 
-// Clamped to [0, bins - 1], NaN going to 0, so the conversion is always defined. index() and
-// indices() must agree exactly: vmax(f, 0) is f > 0 ? f : 0, as std::max(0.0f, f) is.
-int Binner::index(F4 centroid, int axis) const {
-    float f = (centroid[axis] - origin[axis]) * scale[axis];
-    return int(std::min(lastBin[0], std::max(0.0f, f)));
-}
-
+// Clamped to [0, bins - 1], NaN going to 0 (vmax keeps 0 unless f > 0), so the conversion is
+// always defined. partition() decides sides from the same f.
 simd::I4 Binner::indices(F4 centroid) const {
     const F4 zero{0, 0, 0, 0};
     return __builtin_convertvector(simd::vmin(simd::vmax((centroid - origin) * scale, zero), lastBin), simd::I4);
@@ -221,19 +216,23 @@ Split SahBinning::find(const PrimRef* refs, const Range& range, unsigned threads
     return best;
 }
 
-// Branch-free: each primitive is stored at both ends of the gap still to fill and only the
-// right end advances, so the stray copy always lands inside the gap and is overwritten later.
+// Branch-free: left primitives fill dst from the front, right ones from the back, and the side
+// only selects the store address (by a mask, so no compiler turns it into a jump). "Index <=
+// last" is decided on the unclamped bin coordinate f: the clamped, truncated index is <= last
+// exactly when f < last + 1, NaN included (it clamps to bin 0), as binning computed it.
 std::uint32_t SahBinning::partition(const PrimRef* src, PrimRef* dst, const Range& range, const Split& split) const {
     const Binner& b = split.binner;
-    const int axis = split.axis, last = split.bin;
+    const int axis = split.axis;
+    const float origin = b.origin[axis], scale = b.scale[axis], bound = float(split.bin + 1);
     std::uint32_t l = range.begin, r = range.end;
     for (std::uint32_t i = range.begin; i < range.end; ++i) {
         const PrimRef p = src[i];
-        const bool left = b.index(p.centroid(), axis) <= last;
-        dst[l] = p;
-        dst[r - 1] = p;
+        const float f = (p.centroid()[axis] - origin) * scale;
+        const std::uint32_t left = !(f >= bound);
+        const std::uint32_t mask = 0u - left;
+        dst[(l & mask) | ((r - 1) & ~mask)] = p;
         l += left;
-        r -= !left;
+        r -= 1 - left;
     }
     return l - range.begin;
 }

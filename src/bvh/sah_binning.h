@@ -51,7 +51,6 @@ struct Binner {
 
     Binner() = default;
     Binner(const Range& range, int binCount);
-    int index(simd::F4 centroid, int axis) const;
     simd::I4 indices(simd::F4 centroid) const;
 };
 
