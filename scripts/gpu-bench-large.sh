@@ -125,7 +125,7 @@ ply_to_obj() {  # FILE.ply.gz
 }
 
 pack() {
-  [ -x build/penumbra ] || die "build/penumbra is missing: cmake --build build first"
+  [ -x build/penumbra ] && [ -x build/bench/bvh/bench_bvh_build ] || die "build/penumbra or bench_bvh_build is missing: cmake --build build first"
   grep -q '^CMAKE_BUILD_TYPE:STRING=Release' build/CMakeCache.txt || die "build/ is not a Release build"
   [ -x /usr/bin/pathtracer ] || die "/usr/bin/pathtracer is missing: apt-get install embree-tools"
   command -v xz >/dev/null || die "xz is missing: apt-get install xz-utils"
@@ -146,7 +146,8 @@ pack() {
   local packdir=$scratch/pack
   mkdir -p "$packdir" && git -C "$packdir" init -q
   [ -d .gpu/debs ] && mkdir -p "$packdir/.gpu" && cp -r .gpu/debs "$packdir/.gpu/"  # skips the download
-  (cd "$packdir" && "$top/../shared/tools/gpu-pack.sh" "$top/build/penumbra" /usr/bin/pathtracer "$(command -v xz)" \
+  (cd "$packdir" && "$top/../shared/tools/gpu-pack.sh" "$top/build/penumbra" "$top/build/bench/bvh/bench_bvh_build" \
+    /usr/bin/pathtracer "$(command -v xz)" \
     "$data/dragon_vrip.ply.gz" "$data/dragon.obj.xz" "$data"/dragon.json "$data"/dragon12.json \
     "$data"/dragon12.xml "$data"/dragon.cam "$data"/dragon12.cam "$data/commit.txt") >&2
   rm -rf .gpu
@@ -241,6 +242,13 @@ run() {
   local table=$OUT/table.txt
   : > "$table"
   penumbra info 2>&1 | grep -E '^(device|chosen)' > "$OUT/device.txt" || true
+  # The CPU BVH build on two of the host's cores (the 2-core target) and on all of them.
+  if command -v bench_bvh_build >/dev/null && [ "$where" = host ]; then
+    for cores in 0,1 "0-$(($(nproc) - 1))"; do
+      PENUMBRA_BENCH_MESH=$WORK/dragon_vrip.ply.gz taskset -c "$cores" bench_bvh_build --benchmark_filter=Build \
+        --benchmark_repetitions=5 --benchmark_report_aggregates_only=true > "$OUT/bvh-build-cores-$cores.txt" 2>&1 || true
+    done
+  fi
   for name in $SCENES; do
     penumbra_scene "$table" "$name" "$WORK/$name.json"
     if [ "$name" = dragon ]; then
