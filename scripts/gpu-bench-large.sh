@@ -157,7 +157,7 @@ pack() {
   # Everything big that xz itself does not need is sent compressed and unpacked on the host.
   for f in .gpu/lib/*; do
     case "$(basename "$f")" in liblzma.so*) continue ;; esac
-    [ "$(stat -c %s "$f")" -gt 1000000 ] && xz -T0 -6 "$f"
+    if [ "$(stat -c %s "$f")" -gt 1000000 ]; then xz -T0 -6 "$f"; fi
   done
   rm -rf "$scratch"
   local tracked packed
@@ -223,7 +223,9 @@ run() {
     [ -f .gpu/env.sh ] || die ".gpu/ is missing: run 'scripts/gpu-bench-large.sh pack' on the dev machine"
     # shellcheck disable=SC1091
     source .gpu/env.sh
-    for f in .gpu/lib/*.xz; do [ -e "$f" ] && xz -d -f "$f"; done
+    for f in .gpu/lib/*.xz; do
+      if [ -e "$f" ]; then xz -d -f "$f"; fi
+    done
     bin=.gpu/bin
   else
     [ -x build/penumbra ] || die "build/penumbra is missing"
@@ -236,7 +238,7 @@ run() {
     export PATH="$top/build:$PATH"
   fi
   cp "$bin"/dragon_vrip.ply.gz "$bin"/dragon*.json "$bin"/dragon12.xml "$bin"/dragon*.cam "$WORK/"
-  [ -f "$bin/dragon.obj" ] && cp "$bin/dragon.obj" "$WORK/" || xz -d -c "$bin/dragon.obj.xz" > "$WORK/dragon.obj"
+  if [ -f "$bin/dragon.obj" ]; then cp "$bin/dragon.obj" "$WORK/"; else xz -d -c "$bin/dragon.obj.xz" > "$WORK/dragon.obj"; fi
   cat "$bin/commit.txt" > "$OUT/commit.txt" 2>/dev/null || git rev-parse HEAD > "$OUT/commit.txt"
   nproc > "$OUT/cpus.txt"
   local table=$OUT/table.txt

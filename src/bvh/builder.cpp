@@ -42,7 +42,8 @@ public:
     // refs[0] holds the references; refs[1] is as large, for out-of-place partitions: a node
     // at depth d finds its primitives in refs[(d - 1) % 2]. primOrder must have one entry per
     // reference; leaves fill it.
-    Builder(BigBuffer<PrimRef>* refs, std::uint32_t* primOrder, shader::BvhNode* slots, const BuildOptions& options)
+    Builder(BigBuffer<PrimRef>* refs, std::uint32_t* primOrder, shader::BvhNode* slots,
+            const BuildOptions& options)
         : refs_(refs),
           primOrder_(primOrder),
           slots_(slots),
@@ -55,14 +56,15 @@ public:
     // over m primitives has at most 2m - 1 nodes, so when the right child is handed to another
     // thread its slot is known before the left subtree is built: slot + 2 * left size. Such
     // reservations leave gaps that compact() closes; without tasks the subtree is dense.
-    std::uint32_t subtree(const Range& range, int depth, int side, std::uint32_t slot, TaskGroup* tasks,
-                          std::uint32_t& written) {
+    std::uint32_t subtree(const Range& range, int depth, int side, std::uint32_t slot,
+                          TaskGroup* tasks, std::uint32_t& written) {
         shader::BvhNode& node = slots_[slot];
         node = leaf(range);
         ++written;
         Range left, right;
         if (!split(range, depth, side, left, right)) {
-            for (std::uint32_t i = range.begin; i < range.end; ++i) primOrder_[i] = refs_[side][i].id();
+            for (std::uint32_t i = range.begin; i < range.end; ++i)
+                primOrder_[i] = refs_[side][i].id();
             return slot + 1;
         }
 
@@ -78,7 +80,8 @@ public:
             subtree(left, depth + 1, 1 - side, slot + 1, tasks, written);
             return slot + 2 * range.size() - 1;
         }
-        const std::uint32_t rightSlot = subtree(left, depth + 1, 1 - side, slot + 1, tasks, written);
+        const std::uint32_t rightSlot =
+            subtree(left, depth + 1, 1 - side, slot + 1, tasks, written);
         node.firstOrRight = rightSlot;
         return subtree(right, depth + 1, 1 - side, rightSlot, tasks, written);
     }
@@ -128,7 +131,8 @@ private:
         if (n <= 1 || (n <= leafSize && depth >= PN_BVH_MAX_DEPTH)) return false;
         if (n <= sah::SahBinning::kSmallNode) {
             const float stop = n <= leafSize ? sah_.leafCost(range) : simd::kInf;
-            if (sah_.splitSmall(refs_[side].data(), refs_[1 - side].data(), range, stop, left, right)) {
+            if (sah_.splitSmall(refs_[side].data(), refs_[1 - side].data(), range, stop, left,
+                                right)) {
                 if (n <= leafSize || fitsDepth(depth, left, right)) return true;
             } else {
                 if (n <= leafSize) return false;
@@ -271,11 +275,16 @@ Bvh buildFrom(std::size_t count, RefOf&& refOf, const BuildOptions& options) {
 Bvh build(std::span<const Aabb> primBounds, const BuildOptions& options) {
     return buildFrom(
         primBounds.size(),
-        [&](std::size_t i) { return PrimRef::make(sanitizedBounds(primBounds[i]), std::uint32_t(i)); }, options);
+        [&](std::size_t i) {
+            return PrimRef::make(sanitizedBounds(primBounds[i]), std::uint32_t(i));
+        },
+        options);
 }
 
 Bvh buildTriangles(std::span<const Triangle> tris, const BuildOptions& options) {
-    return buildFrom(tris.size(), [&](std::size_t i) { return triangleRef(tris[i], std::uint32_t(i)); }, options);
+    return buildFrom(
+        tris.size(), [&](std::size_t i) { return triangleRef(tris[i], std::uint32_t(i)); },
+        options);
 }
 
 std::vector<shader::TriVerts> leafOrderTriVerts(const Bvh& bvh, std::span<const Triangle> tris) {

@@ -44,7 +44,8 @@ CacheSettings& settingsStore() {
     return settings;
 }
 
-XXH128_hash_t keyOf(std::span<const Triangle> tris, std::span<const Aabb> extra, const BuildOptions& o) {
+XXH128_hash_t keyOf(std::span<const Triangle> tris, std::span<const Aabb> extra,
+                    const BuildOptions& o) {
     XXH3_state_t* state = XXH3_createState();
     if (!state) throw std::bad_alloc();
     XXH3_128bits_reset(state);
@@ -67,7 +68,8 @@ XXH128_hash_t keyOf(std::span<const Triangle> tris, std::span<const Aabb> extra,
 
 fs::path entryPath(const fs::path& dir, XXH128_hash_t key) {
     char name[48];
-    std::snprintf(name, sizeof name, "bvh-%016llx%016llx.bin", static_cast<unsigned long long>(key.high64),
+    std::snprintf(name, sizeof name, "bvh-%016llx%016llx.bin",
+                  static_cast<unsigned long long>(key.high64),
                   static_cast<unsigned long long>(key.low64));
     return dir / name;
 }
@@ -91,7 +93,8 @@ std::vector<Aabb> allBounds(std::span<const Triangle> tris, std::span<const Aabb
     return boxes;
 }
 
-Bvh buildDirect(std::span<const Triangle> tris, std::span<const Aabb> extra, const BuildOptions& options) {
+Bvh buildDirect(std::span<const Triangle> tris, std::span<const Aabb> extra,
+                const BuildOptions& options) {
     if (extra.empty()) return buildTriangles(tris, options);
     return build(allBounds(tris, extra), options);
 }
@@ -99,8 +102,9 @@ Bvh buildDirect(std::span<const Triangle> tris, std::span<const Aabb> extra, con
 // The entry at `path`, or why it cannot be used. Nothing in the file is trusted: sizes are
 // checked against the file's length and the expected counts before anything is allocated,
 // the payload against its hash, and the tree against the geometry (validate()).
-bool readEntry(const fs::path& path, XXH128_hash_t key, std::size_t primCount, std::span<const Triangle> tris,
-               std::span<const Aabb> extra, Bvh& out, std::string& why) {
+bool readEntry(const fs::path& path, XXH128_hash_t key, std::size_t primCount,
+               std::span<const Triangle> tris, std::span<const Aabb> extra, Bvh& out,
+               std::string& why) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         why = "cannot be opened";
@@ -114,20 +118,25 @@ bool readEntry(const fs::path& path, XXH128_hash_t key, std::size_t primCount, s
         return false;
     }
     if (std::memcmp(h.magic, kMagic, sizeof kMagic) != 0 || h.builderVersion != kBuilderVersion ||
-        h.nodeBytes != sizeof(shader::BvhNode) || h.keyLow != key.low64 || h.keyHigh != key.high64) {
+        h.nodeBytes != sizeof(shader::BvhNode) || h.keyLow != key.low64 ||
+        h.keyHigh != key.high64) {
         why = "is not an entry for this geometry and builder";
         return false;
     }
-    if (h.primCount != primCount || h.nodeCount == 0 || h.nodeCount > 2 * std::uint64_t(primCount) ||
-        size != sizeof h + h.nodeCount * sizeof(shader::BvhNode) + h.primCount * sizeof(std::uint32_t)) {
+    if (h.primCount != primCount || h.nodeCount == 0 ||
+        h.nodeCount > 2 * std::uint64_t(primCount) ||
+        size != sizeof h + h.nodeCount * sizeof(shader::BvhNode) +
+                    h.primCount * sizeof(std::uint32_t)) {
         why = "has sizes that do not match";
         return false;
     }
     reserveHuge(out.nodes, std::size_t(h.nodeCount));
     out.nodes.resize(std::size_t(h.nodeCount));
     out.primOrder.resize(std::size_t(h.primCount));
-    if (!in.read(reinterpret_cast<char*>(out.nodes.data()), std::streamsize(h.nodeCount * sizeof(shader::BvhNode))) ||
-        !in.read(reinterpret_cast<char*>(out.primOrder.data()), std::streamsize(h.primCount * sizeof(std::uint32_t)))) {
+    if (!in.read(reinterpret_cast<char*>(out.nodes.data()),
+                 std::streamsize(h.nodeCount * sizeof(shader::BvhNode))) ||
+        !in.read(reinterpret_cast<char*>(out.primOrder.data()),
+                 std::streamsize(h.primCount * sizeof(std::uint32_t)))) {
         why = "is truncated";
         return false;
     }
@@ -188,7 +197,8 @@ void prune(const fs::path& dir, std::uint64_t maxBytes, const fs::path& keep) {
         total += size;
     }
     if (total <= maxBytes) return;
-    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.time < b.time; });
+    std::sort(entries.begin(), entries.end(),
+              [](const Entry& a, const Entry& b) { return a.time < b.time; });
     for (const Entry& e : entries) {
         if (total <= maxBytes) break;
         if (e.path == keep) continue;
@@ -200,19 +210,22 @@ void prune(const fs::path& dir, std::uint64_t maxBytes, const fs::path& keep) {
 
 fs::path defaultCacheDirectory() {
     if (const char* dir = std::getenv("PENUMBRA_CACHE_DIR"); dir && *dir) return fs::path(dir);
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "penumbra";
-    if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "penumbra";
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+        return fs::path(xdg) / "penumbra";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return fs::path(home) / ".cache" / "penumbra";
     return {};
 }
 
 void setCacheSettings(const CacheSettings& settings) { settingsStore() = settings; }
 const CacheSettings& cacheSettings() { return settingsStore(); }
 
-CachedBuild buildCached(std::span<const Triangle> tris, std::span<const Aabb> extra, const BuildOptions& options,
-                        const CacheSettings& settings) {
+CachedBuild buildCached(std::span<const Triangle> tris, std::span<const Aabb> extra,
+                        const BuildOptions& options, const CacheSettings& settings) {
     CachedBuild result;
     const std::size_t primCount = tris.size() + extra.size();
-    if (!settings.enabled || settings.directory.empty() || primCount < std::max<std::size_t>(settings.minPrimitives, 1)) {
+    if (!settings.enabled || settings.directory.empty() ||
+        primCount < std::max<std::size_t>(settings.minPrimitives, 1)) {
         result.bvh = buildDirect(tris, extra, options);
         return result;
     }

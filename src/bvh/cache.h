@@ -43,7 +43,8 @@ struct CachedBuild {
 // The BVH over `tris` followed by `extra` boxes (primitive i >= tris.size() is extra[i - size]),
 // as build()/buildTriangles() make it, read from the cache when it holds it and stored there
 // when it did not. Cache problems are warnings; the build itself never fails because of them.
-CachedBuild buildCached(std::span<const Triangle> tris, std::span<const Aabb> extra, const BuildOptions& options,
+CachedBuild buildCached(std::span<const Triangle> tris, std::span<const Aabb> extra,
+                        const BuildOptions& options,
                         const CacheSettings& settings = cacheSettings());
 
 }  // namespace penumbra::bvh

@@ -40,7 +40,8 @@ Binner::Binner(const Range& range, int binCount) : bins(binCount) {
 // always defined. partition() decides sides from the same f.
 simd::I4 Binner::indices(F4 centroid) const {
     const F4 zero{0, 0, 0, 0};
-    return __builtin_convertvector(simd::vmin(simd::vmax((centroid - origin) * scale, zero), lastBin), simd::I4);
+    return __builtin_convertvector(
+        simd::vmin(simd::vmax((centroid - origin) * scale, zero), lastBin), simd::I4);
 }
 
 // What one bin of one axis holds: the bounds of its primitives. No initialisers, so a node pays
@@ -75,7 +76,8 @@ struct BinGrid {
 namespace {
 
 // The hot loop: one vector subtract-multiply-clamp gives all three bin indices.
-void binRange(const Binner& b, const PrimRef* refs, std::uint32_t begin, std::uint32_t end, BinGrid& grid) {
+void binRange(const Binner& b, const PrimRef* refs, std::uint32_t begin, std::uint32_t end,
+              BinGrid& grid) {
     for (std::uint32_t i = begin; i < end; ++i) {
         const F4 lo = refs[i].bottom(), hi = refs[i].hi;
         const F4 c = lo * 0.5f + hi * 0.5f;
@@ -84,7 +86,8 @@ void binRange(const Binner& b, const PrimRef* refs, std::uint32_t begin, std::ui
     }
 }
 
-void binParallel(const Binner& b, const PrimRef* refs, const Range& range, unsigned threads, BinGrid& grid) {
+void binParallel(const Binner& b, const PrimRef* refs, const Range& range, unsigned threads,
+                 BinGrid& grid) {
     std::mutex merge;
     const std::size_t chunk = (range.size() + threads - 1) / threads;
     parallelFor(range.size(), chunk, [&](std::size_t lo, std::size_t hi) {
@@ -114,8 +117,10 @@ void fillChildren(const BinGrid& grid, const Range& range, Split& split) {
         side->centroids.lo = simd::vmax(side->bounds.lo, range.centroids.lo);
         side->centroids.hi = simd::vmin(side->bounds.hi, range.centroids.hi);
     }
-    if (plane < split.left.centroids.hi[a] && plane >= split.left.centroids.lo[a]) split.left.centroids.hi[a] = plane;
-    if (plane > split.right.centroids.lo[a] && plane <= split.right.centroids.hi[a]) split.right.centroids.lo[a] = plane;
+    if (plane < split.left.centroids.hi[a] && plane >= split.left.centroids.lo[a])
+        split.left.centroids.hi[a] = plane;
+    if (plane > split.right.centroids.lo[a] && plane <= split.right.centroids.hi[a])
+        split.right.centroids.lo[a] = plane;
     split.left.begin = range.begin;
     split.left.end = split.right.begin = range.begin + leftCount;
     split.right.end = range.end;
@@ -147,7 +152,8 @@ int SahBinning::binCount(const Range& range) const {
 // of one vector. Costs are scaled by the node's area (no division), so flat or point-like nodes
 // compare as 0 against 0 instead of producing NaN; candidates with an empty side, and axes
 // without extent, cost infinity.
-void SahBinning::sweep(const BinGrid& grid, const Binner& b, const Range& range, Split& best) const {
+void SahBinning::sweep(const BinGrid& grid, const Binner& b, const Range& range,
+                       Split& best) const {
     using simd::I4;
     const float nodeCost = ct_ * range.bounds.halfArea();
     const I4 zero{0, 0, 0, 0}, all{int(range.size()), int(range.size()), int(range.size()), -1};
@@ -160,7 +166,8 @@ void SahBinning::sweep(const BinGrid& grid, const Binner& b, const Range& range,
         y.grow(grid.box(1, i));
         z.grow(grid.box(2, i));
         count += counts(grid, i);
-        rightCost[i] = select(count > zero, __builtin_convertvector(count, F4) * halfAreas(x, y, z), F4{});
+        rightCost[i] =
+            select(count > zero, __builtin_convertvector(count, F4) * halfAreas(x, y, z), F4{});
     }
     x = y = z = Box4{};
     count = zero;
@@ -171,7 +178,8 @@ void SahBinning::sweep(const BinGrid& grid, const Binner& b, const Range& range,
         y.grow(grid.box(1, i));
         z.grow(grid.box(2, i));
         count += counts(grid, i);
-        const F4 cost = nodeCost + ci_ * (__builtin_convertvector(count, F4) * halfAreas(x, y, z) + rightCost[i + 1]);
+        const F4 cost = nodeCost + ci_ * (__builtin_convertvector(count, F4) * halfAreas(x, y, z) +
+                                          rightCost[i + 1]);
         const I4 better = (count > zero) & (count < all) & axisUsable & (cost < bestCost);
         bestCost = select(better, cost, bestCost);
         bestBin = better ? I4{i, i, i, i} : bestBin;
@@ -201,7 +209,8 @@ Split SahBinning::find(const PrimRef* refs, const Range& range, unsigned threads
     Split best;
     if (range.centroids.empty()) return best;
     const Binner b(range, binCount(range));
-    if (b.scale[0] == 0 && b.scale[1] == 0 && b.scale[2] == 0) return best;  // all centroids coincide
+    if (b.scale[0] == 0 && b.scale[1] == 0 && b.scale[2] == 0)
+        return best;  // all centroids coincide
 
     BinGrid grid;  // ~26 KiB of stack; this frame is gone before the recursion goes deeper
     grid.reset(b.bins);
@@ -220,7 +229,8 @@ Split SahBinning::find(const PrimRef* refs, const Range& range, unsigned threads
 // only selects the store address (by a mask, so no compiler turns it into a jump). "Index <=
 // last" is decided on the unclamped bin coordinate f: the clamped, truncated index is <= last
 // exactly when f < last + 1, NaN included (it clamps to bin 0), as binning computed it.
-std::uint32_t SahBinning::partition(const PrimRef* src, PrimRef* dst, const Range& range, const Split& split) const {
+std::uint32_t SahBinning::partition(const PrimRef* src, PrimRef* dst, const Range& range,
+                                    const Split& split) const {
     const Binner& b = split.binner;
     const int axis = split.axis;
     const float origin = b.origin[axis], scale = b.scale[axis], bound = float(split.bin + 1);
@@ -240,10 +250,13 @@ std::uint32_t SahBinning::partition(const PrimRef* src, PrimRef* dst, const Rang
 void SahBinning::medianSplit(PrimRef* refs, const Range& range, Range& left, Range& right) const {
     const std::uint32_t mid = range.begin + range.size() / 2;
     const F4 extent = range.centroids.hi - range.centroids.lo;
-    const int axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : (extent[1] >= extent[2] ? 1 : 2);
+    const int axis =
+        extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : (extent[1] >= extent[2] ? 1 : 2);
     if (extent[axis] > 0) {
         std::nth_element(refs + range.begin, refs + mid, refs + range.end,
-                         [axis](const PrimRef& p, const PrimRef& q) { return p.centroid()[axis] < q.centroid()[axis]; });
+                         [axis](const PrimRef& p, const PrimRef& q) {
+                             return p.centroid()[axis] < q.centroid()[axis];
+                         });
     }
     left = gather(refs, range.begin, mid);
     right = gather(refs, mid, range.end);

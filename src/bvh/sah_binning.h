@@ -68,7 +68,8 @@ struct BinGrid;  // the bins of one node (sah_binning.cpp)
 // Aabb::halfArea's arithmetic in the same order; lanes of empty boxes are meaningless.
 inline simd::F4 halfAreas(const simd::Box4& x, const simd::Box4& y, const simd::Box4& z) {
     const simd::F4 ex = x.hi - x.lo, ey = y.hi - y.lo, ez = z.hi - z.lo;
-    const simd::F4 dx{ex[0], ey[0], ez[0], 0}, dy{ex[1], ey[1], ez[1], 0}, dz{ex[2], ey[2], ez[2], 0};
+    const simd::F4 dx{ex[0], ey[0], ez[0], 0}, dy{ex[1], ey[1], ez[1], 0},
+        dz{ex[2], ey[2], ez[2], 0};
     return dx * dy + dy * dz + dz * dx;
 }
 
@@ -77,7 +78,9 @@ public:
     explicit SahBinning(const BuildOptions& options);
 
     std::uint32_t leafSize() const { return leafSize_; }
-    float leafCost(const Range& range) const { return ci_ * float(range.size()) * range.bounds.halfArea(); }
+    float leafCost(const Range& range) const {
+        return ci_ * float(range.size()) * range.bounds.halfArea();
+    }
 
     // The cheapest split of `range` by the SAH; threads > 1 bins in parallel. axis stays -1
     // when all centroids coincide.
@@ -87,7 +90,8 @@ public:
     // left, which is split.left.size() unless the bins and this pass disagreed on a bin (only
     // conceivable where a compiler fuses the centroid's arithmetic differently in the two);
     // then the caller must gather the children's bounds itself.
-    std::uint32_t partition(const PrimRef* src, PrimRef* dst, const Range& range, const Split& split) const;
+    std::uint32_t partition(const PrimRef* src, PrimRef* dst, const Range& range,
+                            const Split& split) const;
 
     // Nodes of at most kSmallNode primitives skip binning: splitSmall() tries every object
     // partition along each axis in centroid order (the binned candidates and more) and writes
@@ -95,8 +99,8 @@ public:
     // separates the centroids or no candidate costs less than `stopCost` (infinity when the node
     // must be split: the caller then splits at the median).
     static constexpr std::uint32_t kSmallNode = 8;
-    bool splitSmall(const PrimRef* src, PrimRef* dst, const Range& range, float stopCost, Range& left,
-                    Range& right) const;
+    bool splitSmall(const PrimRef* src, PrimRef* dst, const Range& range, float stopCost,
+                    Range& left, Range& right) const;
 
     // Halves the range by count (in place in refs): along the widest centroid axis, or by index
     // when all centroids coincide. Each half needs one level fewer, which is what makes the
@@ -105,8 +109,8 @@ public:
 
 private:
     int binCount(const Range& range) const;
-    bool splitPair(const PrimRef* src, PrimRef* dst, const Range& range, float stopCost, Range& left,
-                   Range& right) const;
+    bool splitPair(const PrimRef* src, PrimRef* dst, const Range& range, float stopCost,
+                   Range& left, Range& right) const;
     void sweep(const BinGrid& grid, const Binner& b, const Range& range, Split& best) const;
 
     int bins_;

@@ -10,8 +10,8 @@ using simd::Box4;
 using simd::F4;
 
 // Two primitives, the most common node of all: the only split puts one on each side.
-bool SahBinning::splitPair(const PrimRef* src, PrimRef* dst, const Range& range, float stopCost, Range& left,
-                           Range& right) const {
+bool SahBinning::splitPair(const PrimRef* src, PrimRef* dst, const Range& range, float stopCost,
+                           Range& left, Range& right) const {
     const PrimRef& p = src[range.begin];
     const PrimRef& q = src[range.begin + 1];
     const F4 cp = p.centroid(), cq = q.centroid();
@@ -19,7 +19,8 @@ bool SahBinning::splitPair(const PrimRef* src, PrimRef* dst, const Range& range,
     while (axis < 3 && cp[axis] == cq[axis]) ++axis;
     if (axis == 3) return false;  // no plane separates them
     const Box4 bp{p.bottom(), p.hi}, bq{q.bottom(), q.hi};
-    const float cost = ct_ * range.bounds.halfArea() + ci_ * (1.0f * bp.halfArea() + 1.0f * bq.halfArea());
+    const float cost =
+        ct_ * range.bounds.halfArea() + ci_ * (1.0f * bp.halfArea() + 1.0f * bq.halfArea());
     if (!(cost < stopCost)) return false;
     const bool pFirst = cp[axis] < cq[axis];
     dst[range.begin] = pFirst ? p : q;
@@ -29,8 +30,8 @@ bool SahBinning::splitPair(const PrimRef* src, PrimRef* dst, const Range& range,
     return true;
 }
 
-bool SahBinning::splitSmall(const PrimRef* src, PrimRef* dst, const Range& range, float stopCost, Range& left,
-                            Range& right) const {
+bool SahBinning::splitSmall(const PrimRef* src, PrimRef* dst, const Range& range, float stopCost,
+                            Range& left, Range& right) const {
     if (range.size() == 2) return splitPair(src, dst, range, stopCost, left, right);
     using simd::I4;
     constexpr int kMax = int(kSmallNode);
@@ -74,7 +75,8 @@ bool SahBinning::splitSmall(const PrimRef* src, PrimRef* dst, const Range& range
         const F4 cost = nodeCost + ci_ * (float(k) * halfAreas(x, y, z) + rightCost[k]);
         // Only where a plane separates the centroids, as with bins: a node of identical
         // centroids is left to the median split, which keeps such piles balanced.
-        const F4 before{c[lx][0], c[ly][1], c[lz][2], 0}, after{c[order[0][k]][0], c[order[1][k]][1], c[order[2][k]][2], 0};
+        const F4 before{c[lx][0], c[ly][1], c[lz][2], 0},
+            after{c[order[0][k]][0], c[order[1][k]][1], c[order[2][k]][2], 0};
         const I4 better = (before < after) & (cost < bestCost);
         bestCost = better ? cost : bestCost;
         bestLeft = better ? I4{k, k, k, k} : bestLeft;

@@ -41,7 +41,9 @@ public:
     BigBuffer() = default;
     explicit BigBuffer(std::size_t count);
     ~BigBuffer() { release(); }
-    BigBuffer(BigBuffer&& other) noexcept : data_(other.data_), count_(other.count_) { other.data_ = nullptr; }
+    BigBuffer(BigBuffer&& other) noexcept : data_(other.data_), count_(other.count_) {
+        other.data_ = nullptr;
+    }
     BigBuffer& operator=(BigBuffer&& other) noexcept {
         if (this != &other) {
             release();

@@ -16,13 +16,14 @@ namespace penumbra {
 MappedFile::MappedFile(const std::filesystem::path& path, std::size_t maxBytes, const char* what) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
-        throw Error("cannot open " + std::string(what) + " '" + path.string() + "': " +
-                    (std::filesystem::exists(path, ec) ? "it is not a regular file" : "no such file"));
+        throw Error(
+            "cannot open " + std::string(what) + " '" + path.string() + "': " +
+            (std::filesystem::exists(path, ec) ? "it is not a regular file" : "no such file"));
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (ec) throw Error("cannot read '" + path.string() + "': " + ec.message());
     if (size > maxBytes)
-        throw Error("'" + path.string() + "' is too large (" + std::to_string(size >> 20) + " MiB; the limit is " +
-                    std::to_string(maxBytes >> 20) + " MiB)");
+        throw Error("'" + path.string() + "' is too large (" + std::to_string(size >> 20) +
+                    " MiB; the limit is " + std::to_string(maxBytes >> 20) + " MiB)");
     size_ = std::size_t(size);
     if (size_ == 0) return;
 #if defined(__unix__)
@@ -40,7 +41,8 @@ MappedFile::MappedFile(const std::filesystem::path& path, std::size_t maxBytes, 
 #endif
     std::ifstream in(path, std::ios::binary);
     copy_.resize(size_);
-    if (!in || !in.read(copy_.data(), std::streamsize(size_))) throw Error("cannot read '" + path.string() + "'");
+    if (!in || !in.read(copy_.data(), std::streamsize(size_)))
+        throw Error("cannot read '" + path.string() + "'");
     data_ = copy_.data();
 }
 

@@ -9,8 +9,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {
-        penumbra::Scene scene =
-            penumbra::loadPlyFromMemory(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.ply");
+        penumbra::Scene scene = penumbra::loadPlyFromMemory(
+            std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.ply");
         (void)scene.triangleCount();
     } catch (const penumbra::Error&) {
     }

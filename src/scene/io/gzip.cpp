@@ -74,15 +74,17 @@ std::string gunzip(std::string_view bytes, std::size_t maxBytes, const std::stri
         if (rc == Z_STREAM_END) {
             // Another member may follow (concatenated .gz files); trailing zeros are padding.
             const auto* rest = reinterpret_cast<const char*>(inf.z.next_in);
-            if (inputLeft == 0 || std::all_of(rest, rest + inputLeft, [](char c) { return c == 0; })) break;
+            if (inputLeft == 0 ||
+                std::all_of(rest, rest + inputLeft, [](char c) { return c == 0; }))
+                break;
             if (inflateReset(&inf.z) != Z_OK) throw Error(name + ": corrupt gzip data");
             continue;
         }
         if (rc == Z_BUF_ERROR && inputLeft == 0 && inf.z.avail_out > 0)
             throw Error(name + ": the gzip data is truncated");
         if (rc != Z_OK && rc != Z_BUF_ERROR)
-            throw Error(name + ": corrupt gzip data (" + (inf.z.msg ? inf.z.msg : "zlib error " + std::to_string(rc)) +
-                        ")");
+            throw Error(name + ": corrupt gzip data (" +
+                        (inf.z.msg ? inf.z.msg : "zlib error " + std::to_string(rc)) + ")");
     }
     out.resize(produced);
     return out;

@@ -71,11 +71,20 @@ Counts count(std::string_view text) {
         ++c.lines;
         std::string_view rest;
         switch (kindOf(line, rest)) {
-            case Kind::V: ++c.v; break;
-            case Kind::Vt: ++c.vt; break;
-            case Kind::Vn: ++c.vn; break;
-            case Kind::F: ++c.f; break;
-            default: break;
+            case Kind::V:
+                ++c.v;
+                break;
+            case Kind::Vt:
+                ++c.vt;
+                break;
+            case Kind::Vn:
+                ++c.vn;
+                break;
+            case Kind::F:
+                ++c.f;
+                break;
+            default:
+                break;
         }
     });
     return c;
@@ -116,9 +125,11 @@ public:
         float v = 0;
         const char* b = w.data() + (w.size() > 1 && w[0] == '+' ? 1 : 0);
         auto [end, ec] = std::from_chars(b, w.data() + w.size(), v);
-        if (end != w.data() + w.size() || (ec != std::errc{} && ec != std::errc::result_out_of_range))
+        if (end != w.data() + w.size() ||
+            (ec != std::errc{} && ec != std::errc::result_out_of_range))
             throw LineError{"expected a number, found '" + printable(w) + "'"};
-        if (ec == std::errc::result_out_of_range) v = std::numeric_limits<float>::infinity();  // told apart below
+        if (ec == std::errc::result_out_of_range)
+            v = std::numeric_limits<float>::infinity();  // told apart below
         return v;
     }
 
@@ -131,19 +142,22 @@ std::string indexText(std::int64_t oneBased) { return std::to_string(oneBased); 
 
 // One index of a corner ("3", "-1"): 0-based, relative indices resolved against `defined`
 // (the elements of that kind before this line); `total` elements exist in the whole file.
-std::int32_t resolve(std::string_view text, std::uint64_t defined, std::uint64_t total, const char* what) {
+std::int32_t resolve(std::string_view text, std::uint64_t defined, std::uint64_t total,
+                     const char* what) {
     std::int64_t k = 0;
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), k);
     if (ec != std::errc{} || end != text.data() + text.size())
         throw LineError{"expected an index, found '" + printable(text) + "'"};
-    if (k == 0) throw LineError{std::string("face refers to ") + what + " 0, but OBJ numbers them from 1"};
+    if (k == 0)
+        throw LineError{std::string("face refers to ") + what + " 0, but OBJ numbers them from 1"};
     const std::int64_t index = k > 0 ? k - 1 : std::int64_t(defined) + k;
     if (index < 0)
-        throw LineError{std::string("face refers to a ") + what + " before the first (relative index " +
-                        std::to_string(k) + ")"};
+        throw LineError{std::string("face refers to a ") + what +
+                        " before the first (relative index " + std::to_string(k) + ")"};
     if (std::uint64_t(index) >= total)
-        throw LineError{std::string("face refers to ") + what + " " + indexText(index + 1) + ", but " +
-                        std::to_string(total) + " " + what + (total == 1 ? " is" : "s are") + " defined"};
+        throw LineError{std::string("face refers to ") + what + " " + indexText(index + 1) +
+                        ", but " + std::to_string(total) + " " + what +
+                        (total == 1 ? " is" : "s are") + " defined"};
     return std::int32_t(index);
 }
 
@@ -168,7 +182,9 @@ private:
     void statement(std::string_view text, std::uint64_t line) {
         std::string_view rest;
         switch (kindOf(text, rest)) {
-            case Kind::V: vertex(rest, line); break;
+            case Kind::V:
+                vertex(rest, line);
+                break;
             case Kind::Vt: {
                 Words w(rest);
                 const float zero = 0;
@@ -184,15 +200,20 @@ private:
                 for (int k = 0; k < 3; ++k) n[k] = w.number();
                 break;
             }
-            case Kind::F: face(rest, line); break;
-            case Kind::Usemtl: c_.materials.push_back({std::uint32_t(c_.faceLine.size()), trimmed(rest)}); break;
+            case Kind::F:
+                face(rest, line);
+                break;
+            case Kind::Usemtl:
+                c_.materials.push_back({std::uint32_t(c_.faceLine.size()), trimmed(rest)});
+                break;
             case Kind::Mtllib: {
                 Words w(rest);
                 std::string_view file;
                 while (w.next(file)) c_.libraries.emplace_back(file);
                 break;
             }
-            case Kind::Other: break;
+            case Kind::Other:
+                break;
         }
     }
 
@@ -208,7 +229,8 @@ private:
         float* p = &out_.positions[3 * i];
         for (int k = 0; k < 3; ++k) p[k] = w.number();
         if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-            throw LineError{"vertex " + std::to_string(i + 1) + " has a coordinate that is not a finite number"};
+            throw LineError{"vertex " + std::to_string(i + 1) +
+                            " has a coordinate that is not a finite number"};
         out_.positionLine[i] = std::uint32_t(std::min<std::uint64_t>(line, UINT32_MAX));
     }
 
@@ -302,14 +324,16 @@ Parsed parse(std::string_view text, const std::string& name) {
     // Faces: concatenated in file order.
     std::size_t cornerCount = 0;
     for (const Chunk& c : chunks) cornerCount += c.corners.size();
-    if (cornerCount >= std::numeric_limits<std::uint32_t>::max()) throw Error(name + ": too many face corners");
+    if (cornerCount >= std::numeric_limits<std::uint32_t>::max())
+        throw Error(name + ": too many face corners");
     reserveHuge(out.corners, cornerCount);
     reserveHuge(out.faceStart, total.f + 1);
     reserveHuge(out.faceLine, total.f);
     out.faceStart.push_back(0);
     for (Chunk& c : chunks) {
         const auto firstFace = std::uint32_t(out.faceLine.size());
-        for (MaterialUse& m : c.materials) out.materials.push_back({firstFace + m.firstFace, std::move(m.name)});
+        for (MaterialUse& m : c.materials)
+            out.materials.push_back({firstFace + m.firstFace, std::move(m.name)});
         for (std::string& l : c.libraries) out.libraries.push_back(std::move(l));
         out.corners.insert(out.corners.end(), c.corners.begin(), c.corners.end());
         out.faceLine.insert(out.faceLine.end(), c.faceLine.begin(), c.faceLine.end());

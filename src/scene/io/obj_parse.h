@@ -23,9 +23,9 @@ struct MaterialUse {
 };
 
 struct Parsed {
-    std::vector<float> positions;  // x y z per `v` (extra colour values are ignored)
-    std::vector<float> texcoords;  // u v per `vt`
-    std::vector<float> normals;    // x y z per `vn`
+    std::vector<float> positions;             // x y z per `v` (extra colour values are ignored)
+    std::vector<float> texcoords;             // u v per `vt`
+    std::vector<float> normals;               // x y z per `vn`
     std::vector<std::uint32_t> positionLine;  // source line of each `v`, for messages
     std::vector<Corner> corners;
     std::vector<std::uint32_t> faceStart;  // face f: corners[faceStart[f], faceStart[f + 1])

@@ -45,21 +45,26 @@ VertexLayout vertexLayout(const Element& e, const std::string& name) {
             const int i = e.find(n);
             if (i < 0) continue;
             if (e.properties[std::size_t(i)].isList)
-                throw Error(name + ":" + std::to_string(e.line) + ": vertex property '" + std::string(n) +
-                            "' is a list; a single value was expected");
+                throw Error(name + ":" + std::to_string(e.line) + ": vertex property '" +
+                            std::string(n) + "' is a list; a single value was expected");
             l.slot[std::size_t(i)] = s;
             return true;
         }
         return false;
     };
     if (!claim({"x"}, kX) || !claim({"y"}, kY) || !claim({"z"}, kZ))
-        throw Error(name + ":" + std::to_string(e.line) + ": the vertex element needs properties x, y and z");
+        throw Error(name + ":" + std::to_string(e.line) +
+                    ": the vertex element needs properties x, y and z");
     l.normals = claim({"nx"}, kNX) & claim({"ny"}, kNY) & claim({"nz"}, kNZ);
-    l.uvs = (claim({"u", "s", "texture_u", "texture_s"}, kU) & claim({"v", "t", "texture_v", "texture_t"}, kV));
-    l.colours = claim({"red", "diffuse_red", "r"}, kRed) & claim({"green", "diffuse_green", "g"}, kGreen) &
+    l.uvs = (claim({"u", "s", "texture_u", "texture_s"}, kU) &
+             claim({"v", "t", "texture_v", "texture_t"}, kV));
+    l.colours = claim({"red", "diffuse_red", "r"}, kRed) &
+                claim({"green", "diffuse_green", "g"}, kGreen) &
                 claim({"blue", "diffuse_blue", "b"}, kBlue);
     if (l.colours) {
-        const int r = e.find("red") >= 0 ? e.find("red") : (e.find("diffuse_red") >= 0 ? e.find("diffuse_red") : e.find("r"));
+        const int r = e.find("red") >= 0
+                          ? e.find("red")
+                          : (e.find("diffuse_red") >= 0 ? e.find("diffuse_red") : e.find("r"));
         l.colourScale = isInteger(e.properties[std::size_t(r)].type) ? 1.0f / 255.0f : 1.0f;
     }
     return l;
@@ -98,8 +103,9 @@ public:
         if (header_.format == Format::Ascii)
             readAscii();
         else
-            readBinary(header_.format == Format::BinaryBigEndian ? std::endian::native == std::endian::little
-                                                                  : std::endian::native == std::endian::big);
+            readBinary(header_.format == Format::BinaryBigEndian
+                           ? std::endian::native == std::endian::little
+                           : std::endian::native == std::endian::big);
         return finish();
     }
 
@@ -191,9 +197,11 @@ private:
         int list = e.find("vertex_indices");
         if (list < 0) list = e.find("vertex_index");
         if (list < 0 || !e.properties[std::size_t(list)].isList)
-            throw Error(name_ + ":" + std::to_string(e.line) + ": the face element needs a list property vertex_indices");
+            throw Error(name_ + ":" + std::to_string(e.line) +
+                        ": the face element needs a list property vertex_indices");
         if (!isInteger(e.properties[std::size_t(list)].type))
-            throw Error(name_ + ":" + std::to_string(e.line) + ": vertex_indices must be a list of integers");
+            throw Error(name_ + ":" + std::to_string(e.line) +
+                        ": vertex_indices must be a list of integers");
         facesSeen_ = true;
         mesh_.indices.reserve(std::size_t(e.count) * 3);
         adviseHugePages(mesh_.indices.data(), std::size_t(e.count) * 3 * sizeof(std::uint32_t));
@@ -207,7 +215,9 @@ private:
                     continue;
                 }
                 const std::int64_t n = r.integer(p.countType);
-                if (n < 0) r.fail("a face claims a negative number of corners (" + std::to_string(n) + ")");
+                if (n < 0)
+                    r.fail("a face claims a negative number of corners (" + std::to_string(n) +
+                           ")");
                 if (n < 3) {
                     r.skipMany(p.type, std::uint64_t(n));
                     ++degenerate_;
@@ -222,7 +232,8 @@ private:
                     corners.push_back(std::uint32_t(v));
                 }
                 for (std::size_t c = 1; c + 1 < corners.size(); ++c)
-                    mesh_.indices.insert(mesh_.indices.end(), {corners[0], corners[c], corners[c + 1]});
+                    mesh_.indices.insert(mesh_.indices.end(),
+                                         {corners[0], corners[c], corners[c + 1]});
             }
         }
     }
@@ -276,7 +287,8 @@ private:
         std::size_t kept = 0;
         for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
             const std::uint32_t a = idx[t], b = idx[t + 1], c = idx[t + 2];
-            const Vec3 n = cross(mesh_.positions[b] - mesh_.positions[a], mesh_.positions[c] - mesh_.positions[a]);
+            const Vec3 n = cross(mesh_.positions[b] - mesh_.positions[a],
+                                 mesh_.positions[c] - mesh_.positions[a]);
             if (a == b || b == c || a == c || !(dot(n, n) > 0)) {
                 ++degenerate_;
                 continue;
@@ -289,7 +301,9 @@ private:
     }
 
     Scene finish() {
-        if (!facesSeen_) throw Error(name_ + ": the file has no 'face' element (point clouds are not supported)");
+        if (!facesSeen_)
+            throw Error(name_ +
+                        ": the file has no 'face' element (point clouds are not supported)");
         dropDegenerateTriangles();
         if (degenerate_ > 0)
             logWarning(name_ + ": skipped " + std::to_string(degenerate_) + " degenerate face" +

@@ -55,21 +55,30 @@ private:
         std::array<char, sizeof(T)> raw;
         std::memcpy(raw.data(), advance(sizeof(T)), sizeof(T));
         if (swap_)
-            for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(raw[i], raw[sizeof(T) - 1 - i]);
+            for (std::size_t i = 0; i < sizeof(T) / 2; ++i)
+                std::swap(raw[i], raw[sizeof(T) - 1 - i]);
         T v;
         std::memcpy(&v, raw.data(), sizeof(T));
         return v;
     }
     double value(Type t) {
         switch (t) {
-            case Type::Int8: return load<std::int8_t>();
-            case Type::UInt8: return load<std::uint8_t>();
-            case Type::Int16: return load<std::int16_t>();
-            case Type::UInt16: return load<std::uint16_t>();
-            case Type::Int32: return load<std::int32_t>();
-            case Type::UInt32: return load<std::uint32_t>();
-            case Type::Float32: return load<float>();
-            case Type::Float64: return load<double>();
+            case Type::Int8:
+                return load<std::int8_t>();
+            case Type::UInt8:
+                return load<std::uint8_t>();
+            case Type::Int16:
+                return load<std::int16_t>();
+            case Type::UInt16:
+                return load<std::uint16_t>();
+            case Type::Int32:
+                return load<std::int32_t>();
+            case Type::UInt32:
+                return load<std::uint32_t>();
+            case Type::Float32:
+                return load<float>();
+            case Type::Float64:
+                return load<double>();
         }
         return 0;
     }
@@ -93,7 +102,8 @@ public:
         if (isInteger(t)) return double(parseInteger(w));
         double v = 0;
         auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
-        if (end != w.data() + w.size() || (ec != std::errc{} && ec != std::errc::result_out_of_range))
+        if (end != w.data() + w.size() ||
+            (ec != std::errc{} && ec != std::errc::result_out_of_range))
             fail("expected a number, found '" + printable(w) + "'");
         return v;
     }
@@ -118,7 +128,8 @@ private:
         return v;
     }
     std::string_view token() {
-        while (p_ < end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r' || *p_ == '\n')) line_ += *p_++ == '\n';
+        while (p_ < end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r' || *p_ == '\n'))
+            line_ += *p_++ == '\n';
         if (p_ == end_) fail("the file ends inside it");
         const char* b = p_;
         while (p_ < end_ && *p_ != ' ' && *p_ != '\t' && *p_ != '\r' && *p_ != '\n') ++p_;

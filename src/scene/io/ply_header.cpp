@@ -18,10 +18,12 @@ struct TypeName {
     Type type;
 };
 constexpr TypeName kTypeNames[] = {
-    {"char", Type::Int8},     {"int8", Type::Int8},       {"uchar", Type::UInt8},   {"uint8", Type::UInt8},
-    {"short", Type::Int16},   {"int16", Type::Int16},     {"ushort", Type::UInt16}, {"uint16", Type::UInt16},
-    {"int", Type::Int32},     {"int32", Type::Int32},     {"uint", Type::UInt32},   {"uint32", Type::UInt32},
-    {"float", Type::Float32}, {"float32", Type::Float32}, {"double", Type::Float64}, {"float64", Type::Float64},
+    {"char", Type::Int8},       {"int8", Type::Int8},       {"uchar", Type::UInt8},
+    {"uint8", Type::UInt8},     {"short", Type::Int16},     {"int16", Type::Int16},
+    {"ushort", Type::UInt16},   {"uint16", Type::UInt16},   {"int", Type::Int32},
+    {"int32", Type::Int32},     {"uint", Type::UInt32},     {"uint32", Type::UInt32},
+    {"float", Type::Float32},   {"float32", Type::Float32}, {"double", Type::Float64},
+    {"float64", Type::Float64},
 };
 
 std::string printable(std::string_view s) {
@@ -102,7 +104,8 @@ private:
     }
 
     void format(const std::vector<std::string_view>& w) {
-        if (w.size() != 3) fail("expected 'format <ascii|binary_little_endian|binary_big_endian> 1.0'");
+        if (w.size() != 3)
+            fail("expected 'format <ascii|binary_little_endian|binary_big_endian> 1.0'");
         if (w[1] == "ascii")
             header_.format = Format::Ascii;
         else if (w[1] == "binary_little_endian")
@@ -111,7 +114,8 @@ private:
             header_.format = Format::BinaryBigEndian;
         else
             fail("unknown format '" + printable(w[1]) + "'");
-        if (w[2] != "1.0") fail("unsupported PLY version '" + printable(w[2]) + "' (only 1.0 exists)");
+        if (w[2] != "1.0")
+            fail("unsupported PLY version '" + printable(w[2]) + "' (only 1.0 exists)");
     }
 
     void element(const std::vector<std::string_view>& w) {
@@ -121,11 +125,12 @@ private:
         e.line = line_;
         auto [end, ec] = std::from_chars(w[2].data(), w[2].data() + w[2].size(), e.count);
         if (ec != std::errc{} || end != w[2].data() + w[2].size())
-            fail("element '" + printable(w[1]) + "' has a count that is not a non-negative whole number: '" +
-                 printable(w[2]) + "'");
+            fail("element '" + printable(w[1]) +
+                 "' has a count that is not a non-negative whole number: '" + printable(w[2]) +
+                 "'");
         if (e.count > kMaxCount)
-            fail("element '" + printable(w[1]) + "' claims " + std::string(w[2]) + " entries; at most " +
-                 std::to_string(kMaxCount) + " are supported");
+            fail("element '" + printable(w[1]) + "' claims " + std::string(w[2]) +
+                 " entries; at most " + std::to_string(kMaxCount) + " are supported");
         header_.elements.push_back(std::move(e));
     }
 
@@ -146,7 +151,8 @@ private:
             p.name = std::string(w[2]);
         }
         Element& e = header_.elements.back();
-        if (e.find(p.name) >= 0) fail("element '" + e.name + "' has two properties named '" + printable(p.name) + "'");
+        if (e.find(p.name) >= 0)
+            fail("element '" + e.name + "' has two properties named '" + printable(p.name) + "'");
         e.properties.push_back(std::move(p));
     }
 
@@ -157,12 +163,14 @@ private:
         const std::uint64_t body = bytes_.size() - std::min(bytes_.size(), pos_);
         std::uint64_t needed = 0;
         for (const Element& e : header_.elements) {
-            const std::uint64_t each = header_.format == Format::Ascii ? 2 * e.properties.size() : e.minRecordBytes();
+            const std::uint64_t each =
+                header_.format == Format::Ascii ? 2 * e.properties.size() : e.minRecordBytes();
             needed += e.count * each;  // < 2^32 * 2^16: no overflow
             if (needed > body + 1) {
                 line_ = e.line;
                 fail("element '" + printable(e.name) + "' claims " + std::to_string(e.count) +
-                     " entries, more than the file's " + std::to_string(body) + " bytes after the header can hold");
+                     " entries, more than the file's " + std::to_string(body) +
+                     " bytes after the header can hold");
             }
         }
     }
@@ -178,13 +186,17 @@ private:
 std::size_t sizeOf(Type t) {
     switch (t) {
         case Type::Int8:
-        case Type::UInt8: return 1;
+        case Type::UInt8:
+            return 1;
         case Type::Int16:
-        case Type::UInt16: return 2;
+        case Type::UInt16:
+            return 2;
         case Type::Int32:
         case Type::UInt32:
-        case Type::Float32: return 4;
-        case Type::Float64: return 8;
+        case Type::Float32:
+            return 4;
+        case Type::Float64:
+            return 8;
     }
     return 0;
 }
@@ -215,6 +227,8 @@ int Element::find(std::string_view property) const {
     return -1;
 }
 
-Header parseHeader(std::string_view bytes, const std::string& name) { return HeaderParser(bytes, name).run(); }
+Header parseHeader(std::string_view bytes, const std::string& name) {
+    return HeaderParser(bytes, name).run();
+}
 
 }  // namespace penumbra::ply

@@ -1,4 +1,5 @@
-// The on-disk BVH cache: reuse only for identical input, and damaged entries rebuilt, never trusted.
+// The on-disk BVH cache: reuse only for identical input, and damaged entries rebuilt, never
+// trusted.
 #include "bvh/cache.h"
 
 #include <gtest/gtest.h>
@@ -24,7 +25,8 @@ class BvhCache : public ::testing::Test {
 protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
-               ("penumbra_bvh_cache_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+               ("penumbra_bvh_cache_test_" +
+                std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(dir_);
         settings_.enabled = true;
@@ -42,7 +44,8 @@ protected:
     static void expectSame(const Bvh& a, const Bvh& b) {
         EXPECT_EQ(a.primOrder, b.primOrder);
         ASSERT_EQ(a.nodes.size(), b.nodes.size());
-        EXPECT_EQ(0, std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(a.nodes[0])));
+        EXPECT_EQ(0,
+                  std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(a.nodes[0])));
     }
     static std::string bytesOf(const fs::path& p) {
         std::ifstream in(p, std::ios::binary);
@@ -84,7 +87,8 @@ TEST_F(BvhCache, ChangedGeometryOrOptionsNeverReuseAnEntry) {
     fewerBins.bins = 8;
     EXPECT_FALSE(buildCached(tris, {}, fewerBins, settings_).fromCache);
     // One primitive more (a sphere box) is different input too.
-    EXPECT_FALSE(buildCached(tris, std::vector<Aabb>{{Vec3(0.0f), Vec3(1.0f)}}, {}, settings_).fromCache);
+    EXPECT_FALSE(
+        buildCached(tris, std::vector<Aabb>{{Vec3(0.0f), Vec3(1.0f)}}, {}, settings_).fromCache);
     EXPECT_EQ(entries().size(), 4u);
     EXPECT_TRUE(buildCached(tris, {}, {}, settings_).fromCache);
 }
@@ -98,11 +102,11 @@ TEST_F(BvhCache, DamagedEntriesAreRebuiltWithAWarning) {
     const std::string good = bytesOf(entry);
 
     std::vector<std::string> damaged = {
-        "",                                   // empty
-        good.substr(0, 40),                   // shorter than the header
-        good.substr(0, good.size() / 2),      // truncated payload
-        good + "extra",                       // trailing bytes
-        std::string(good.size(), '\x7f'),     // garbage
+        "",                                // empty
+        good.substr(0, 40),                // shorter than the header
+        good.substr(0, good.size() / 2),   // truncated payload
+        good + "extra",                    // trailing bytes
+        std::string(good.size(), '\x7f'),  // garbage
     };
     std::string flipped = good;
     flipped[flipped.size() / 2] ^= 0x40;  // one bit in the payload
@@ -119,7 +123,8 @@ TEST_F(BvhCache, DamagedEntriesAreRebuiltWithAWarning) {
         const std::string err = testing::internal::GetCapturedStderr();
         EXPECT_FALSE(b.fromCache) << "case " << i;
         expectSame(b.bvh, direct);
-        EXPECT_NE(err.find("penumbra: warning: BVH cache entry"), std::string::npos) << "case " << i << ": " << err;
+        EXPECT_NE(err.find("penumbra: warning: BVH cache entry"), std::string::npos)
+            << "case " << i << ": " << err;
         EXPECT_EQ(err.find('\n'), err.size() - 1) << "one line, case " << i << ": " << err;
         EXPECT_EQ(bytesOf(entry), good) << "rewritten, case " << i;
     }
@@ -156,8 +161,10 @@ TEST_F(BvhCache, OldestEntriesGoWhenTheCacheIsFull) {
     for (const fs::path& p : entries()) total += fs::file_size(p);
     EXPECT_LE(total, settings_.maxBytes);
     EXPECT_GE(entries().size(), 1u);
-    EXPECT_TRUE(buildCached(randomSoup(3000, 13), {}, {}, settings_).fromCache);  // the newest stays
-    EXPECT_FALSE(buildCached(randomSoup(3000, 10), {}, {}, settings_).fromCache);  // the oldest went
+    EXPECT_TRUE(
+        buildCached(randomSoup(3000, 13), {}, {}, settings_).fromCache);  // the newest stays
+    EXPECT_FALSE(
+        buildCached(randomSoup(3000, 10), {}, {}, settings_).fromCache);  // the oldest went
 }
 
 TEST_F(BvhCache, OffOrSmallMeansNoFiles) {

@@ -22,14 +22,16 @@ float bruteForceCost(const std::vector<PrimRef>& prims, const BuildOptions& o, c
     float best = std::numeric_limits<float>::infinity();
     for (int a = 0; a < 3; ++a) {
         std::vector<PrimRef> sorted = prims;
-        std::stable_sort(sorted.begin(), sorted.end(),
-                         [a](const PrimRef& p, const PrimRef& q) { return p.centroid()[a] < q.centroid()[a]; });
+        std::stable_sort(sorted.begin(), sorted.end(), [a](const PrimRef& p, const PrimRef& q) {
+            return p.centroid()[a] < q.centroid()[a];
+        });
         for (std::size_t k = 1; k < sorted.size(); ++k) {
             if (!(sorted[k - 1].centroid()[a] < sorted[k].centroid()[a])) continue;
             Aabb l, r;
             for (std::size_t i = 0; i < sorted.size(); ++i) (i < k ? l : r).grow(boxOf(sorted[i]));
-            float cost = o.traversalCost * halfArea(node) +
-                         o.intersectCost * (float(k) * halfArea(l) + float(sorted.size() - k) * halfArea(r));
+            float cost =
+                o.traversalCost * halfArea(node) +
+                o.intersectCost * (float(k) * halfArea(l) + float(sorted.size() - k) * halfArea(r));
             best = std::min(best, cost);
         }
     }
@@ -50,7 +52,8 @@ TEST(SahSmall, FindsTheCheapestSplitAndMovesEveryPrimitiveOnce) {
             Vec3 c(u(rng), u(rng), u(rng));
             // Every fourth trial snaps centroids to a coarse grid, so ties and coincident
             // centroids come up.
-            if (trial % 4 == 0) c = Vec3(std::round(c.x * 2), std::round(c.y * 2), std::round(c.z * 2));
+            if (trial % 4 == 0)
+                c = Vec3(std::round(c.x * 2), std::round(c.y * 2), std::round(c.z * 2));
             Vec3 h(0.05f + 0.2f * u(rng), 0.05f + 0.2f * u(rng), 0.05f + 0.2f * u(rng));
             prims.push_back(PrimRef::make({c - h, c + h}, 100 + i));
             range.bounds.grow(prims.back().bottom(), prims.back().hi);
@@ -59,8 +62,8 @@ TEST(SahSmall, FindsTheCheapestSplitAndMovesEveryPrimitiveOnce) {
         std::vector<PrimRef> dst(n);
         Range left, right;
         const float expected = bruteForceCost(prims, options, range.bounds.aabb());
-        const bool split = sah.splitSmall(prims.data(), dst.data(), range, std::numeric_limits<float>::infinity(),
-                                          left, right);
+        const bool split = sah.splitSmall(prims.data(), dst.data(), range,
+                                          std::numeric_limits<float>::infinity(), left, right);
         ASSERT_EQ(split, expected < std::numeric_limits<float>::infinity()) << "trial " << trial;
         if (!split) continue;
         ASSERT_EQ(left.begin, 0u);
@@ -83,11 +86,13 @@ TEST(SahSmall, FindsTheCheapestSplitAndMovesEveryPrimitiveOnce) {
         EXPECT_EQ(right.bounds.aabb().lo, r.lo);
         EXPECT_EQ(right.bounds.aabb().hi, r.hi);
         const float cost = options.traversalCost * halfArea(range.bounds.aabb()) +
-                           options.intersectCost * (float(left.size()) * halfArea(l) + float(right.size()) * halfArea(r));
+                           options.intersectCost * (float(left.size()) * halfArea(l) +
+                                                    float(right.size()) * halfArea(r));
         EXPECT_NEAR(cost, expected, 1e-5f * expected) << "trial " << trial << ", n " << n;
         // A stop cost at or below the best keeps the node whole and moves nothing.
         std::vector<PrimRef> untouched(n, PrimRef::make({Vec3(9.0f), Vec3(9.0f)}, 0));
-        EXPECT_FALSE(sah.splitSmall(prims.data(), untouched.data(), range, expected * 0.999f, left, right));
+        EXPECT_FALSE(
+            sah.splitSmall(prims.data(), untouched.data(), range, expected * 0.999f, left, right));
         EXPECT_EQ(untouched[0].id(), 0u);
     }
 }

@@ -1,5 +1,7 @@
 // PLY importer: the same cube in every encoding (ASCII, binary little and big endian, gzip),
 // attributes, polygons and degenerate faces, and malformed files (one-line errors that say where).
+#include "scene/io/ply.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 #include "core/error.h"
 #include "io_test_util.h"
 #include "scene/io/load.h"
-#include "scene/io/ply.h"
 
 namespace penumbra {
 namespace {
@@ -50,7 +51,8 @@ TEST_P(PlyCube, HasTheCubesCountsAndBounds) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Encodings, PlyCube,
-                         ::testing::Values("cube_ascii.ply", "cube_le.ply", "cube_be.ply", "cube_ascii.ply.gz"));
+                         ::testing::Values("cube_ascii.ply", "cube_le.ply", "cube_be.ply",
+                                           "cube_ascii.ply.gz"));
 
 TEST(PlyLoader, ReadsNormalsUvsColoursAndPolygons) {
     Scene s = loadPly(dataDir() / "ply/pentagon_attributes.ply");
@@ -88,7 +90,8 @@ struct Malformed {
 };
 
 std::string asciiCube(const std::string& body) {
-    return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+    return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
+           "float z\n"
            "element face 1\nproperty list uchar int vertex_indices\nend_header\n" +
            body;
 }
@@ -105,14 +108,19 @@ TEST(PlyLoader, MalformedFilesGiveOneLineErrors) {
         {"not ply", "plx\nformat ascii 1.0\n", "t.ply:1: not a PLY file"},
         {"no end_header", "ply\nformat ascii 1.0\nelement vertex 0\n", "no 'end_header'"},
         {"no format", "ply\nelement vertex 0\nend_header\n", "no 'format' line"},
-        {"unknown format", "ply\nformat binary_middle_endian 1.0\nend_header\n", "t.ply:2: unknown format"},
+        {"unknown format", "ply\nformat binary_middle_endian 1.0\nend_header\n",
+         "t.ply:2: unknown format"},
         {"bad type", "ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\nend_header\n",
          "t.ply:4: unknown property type 'real'"},
-        {"float list count", "ply\nformat ascii 1.0\nelement face 1\nproperty list float int v\nend_header\n",
+        {"float list count",
+         "ply\nformat ascii 1.0\nelement face 1\nproperty list float int v\nend_header\n",
          "t.ply:4: a list's count type must be an integer type"},
-        {"property first", "ply\nformat ascii 1.0\nproperty float x\nend_header\n", "before any 'element'"},
-        {"absurd count", binaryTriangle(1000000000, std::string(100, '\0')), "claims 1000000000 entries"},
-        {"huge count", "ply\nformat ascii 1.0\nelement vertex 99999999999999\nproperty float x\nend_header\n",
+        {"property first", "ply\nformat ascii 1.0\nproperty float x\nend_header\n",
+         "before any 'element'"},
+        {"absurd count", binaryTriangle(1000000000, std::string(100, '\0')),
+         "claims 1000000000 entries"},
+        {"huge count",
+         "ply\nformat ascii 1.0\nelement vertex 99999999999999\nproperty float x\nend_header\n",
          "t.ply:3: element 'vertex' claims 99999999999999 entries"},
         {"no xyz", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n",
          "needs properties x, y and z"},
@@ -121,14 +129,17 @@ TEST(PlyLoader, MalformedFilesGiveOneLineErrors) {
         {"index out of range", asciiCube("0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"),
          "t.ply:13: face 0: refers to vertex 3, but the file has 3 vertices"},
         {"negative index", asciiCube("0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n"), "refers to vertex -1"},
-        {"truncated ascii", asciiCube("0 0 0\n1 0 0\n0 1 0\n3 0 1\n"), "face 0: the file ends inside it"},
-        {"nan vertex", asciiCube("0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"), "vertex 1: a coordinate is not a finite"},
+        {"truncated ascii", asciiCube("0 0 0\n1 0 0\n0 1 0\n3 0 1\n"),
+         "face 0: the file ends inside it"},
+        {"nan vertex", asciiCube("0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"),
+         "vertex 1: a coordinate is not a finite"},
         {"truncated binary", binaryTriangle(3, std::string(36, '\0') + "\x03\x01"),
          "t.ply: face 0: the file ends inside it"},
         {"binary list too long", binaryTriangle(3, std::string(36, '\0') + "\xff\x01\x02"),
          "face 0: the file ends inside it"},
-        {"no faces", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                     "property float z\nend_header\n0 0 0\n",
+        {"no faces",
+         "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+         "property float z\nend_header\n0 0 0\n",
          "no 'face' element"},
         {"only degenerate", asciiCube("0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n"), "no faces with an area"},
         {"corrupt gzip", std::string("\x1f\x8b\x08\x00garbage", 11), "t.ply: "},
