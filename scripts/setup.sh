@@ -8,7 +8,7 @@ packages=(
   libvulkan-dev glslc spirv-tools
   mesa-vulkan-drivers vulkan-validationlayers   # lavapipe (CPU Vulkan) + validation for tests
   libstb-dev libtinyexr-dev libcli11-dev
-  libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev
+  libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev zlib1g-dev   # zlib: .ply.gz
   libgtest-dev libbenchmark-dev
   libglfw3-dev libimgui-dev xvfb xauth         # the viewer (penumbra view) and its test under Xvfb
   clang libclang-rt-14-dev                      # libFuzzer targets (tests/fuzz)

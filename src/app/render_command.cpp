@@ -104,6 +104,7 @@ void registerRender(CLI::App& app, Action& action) {
     cmd->add_option("--exposure", args->exposure, "exposure in stops for PNG output");
     cmd->add_flag("-q,--quiet", args->quiet, "no progress bar or summary");
     addDeviceOption(*cmd, args->device);
+    addBvhCacheOption(*cmd);
     addCameraOptions(*cmd, args->camera);
     addEnvironmentOptions(*cmd, args->env);
     cmd->callback([args, cmd, &action] { action = [args, cmd] { runRender(*args, *cmd); }; });

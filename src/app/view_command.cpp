@@ -68,6 +68,7 @@ void registerView(CLI::App& app, Action& action) {
     cmd->add_flag("--denoise", args->options.denoise, "start with the a-trous denoiser on");
     cmd->add_option("--debug", args->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles, boxes");
     addDeviceOption(*cmd, args->options.device);
+    addBvhCacheOption(*cmd);
     addCameraOptions(*cmd, args->camera);
     addEnvironmentOptions(*cmd, args->env);
     cmd->callback([args, &action] { action = [args] { runView(*args); }; });

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <numeric>
 
+#include "bvh/cache.h"
 #include "bvh/node_pairs.h"
 #include "bvh/sphere.h"
 #include "bvh/triangle.h"
@@ -138,17 +139,13 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
 
     SceneArrays out;
     auto start = std::chrono::steady_clock::now();
-    bvh::Bvh tree;
-    if (spheres.spheres.empty()) {
-        tree = bvh::buildTriangles(geometry, options);
-    } else {
-        // Spheres follow the triangles in the primitive numbering the builder sees.
-        std::vector<Aabb> bounds;
-        bounds.reserve(primCount);
-        for (const bvh::Triangle& t : geometry) bounds.push_back(bvh::bounds(t));
-        for (const Sphere& s : spheres.spheres) bounds.push_back(bvh::sphereBounds(s.center, s.radius));
-        tree = bvh::build(bounds, options);
-    }
+    // Spheres follow the triangles in the primitive numbering the builder sees. The build goes
+    // through the BVH cache, which the command line turns on (bvh/cache.h).
+    std::vector<Aabb> sphereBounds;
+    for (const Sphere& s : spheres.spheres) sphereBounds.push_back(bvh::sphereBounds(s.center, s.radius));
+    bvh::CachedBuild built = bvh::buildCached(geometry, sphereBounds, options);
+    bvh::Bvh tree = std::move(built.bvh);
+    out.bvhFromCache = built.fromCache;
     out.buildMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     out.stats = bvh::computeStats(tree, options);
     out.nodes = std::move(tree.nodes);

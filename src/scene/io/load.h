@@ -12,7 +12,7 @@ struct LoadOptions {
     std::string map;  // WAD: E1M1, MAP01, ...; empty picks the first map in the file
 };
 
-// Loads .obj, .gltf, .glb, .wad or .json. Throws Error naming the file and the problem.
+// Loads .obj, .ply (.ply.gz), .gltf, .glb, .wad or .json. Throws Error naming the file and the problem.
 Scene loadSceneFile(const std::filesystem::path& path, const LoadOptions& options = {});
 
 // A built-in preset name, or a path to a file.
