@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "binary_path.h"
 #include "gpu_fixture.h"
 #include "image/write.h"
 
@@ -38,7 +39,7 @@ protected:
     RunResult run(const std::string& args, const std::string& env = "") {
         const char* device = std::getenv("PENUMBRA_TEST_DEVICE");
         std::string cmd = "cd '" + dir.string() + "' && env PENUMBRA_DEVICE=" + (device ? device : "llvmpipe") +
-                          " PENUMBRA_VALIDATION=1 " + env + " '" + PENUMBRA_BINARY_PATH + "' " + args +
+                          " PENUMBRA_VALIDATION=1 " + env + " '" + penumbraBinary() + "' " + args +
                           " >/dev/null 2>stderr.txt";
         int status = std::system(cmd.c_str());
         std::ifstream in(dir / "stderr.txt");

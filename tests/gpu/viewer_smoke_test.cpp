@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "binary_path.h"
+
 namespace penumbra::test {
 namespace {
 
@@ -26,7 +28,7 @@ RunResult runPenumbra(const fs::path& dir, const std::string& args, bool underXv
     const char* device = std::getenv("PENUMBRA_TEST_DEVICE");
     std::string cmd = "cd '" + dir.string() + "' && env PENUMBRA_VALIDATION=1 PENUMBRA_DEVICE=" +
                       (device ? device : "llvmpipe") + " " +
-                      (underXvfb ? "xvfb-run -a -s '-screen 0 640x480x24' " : "") + PENUMBRA_BINARY_PATH + " " + args +
+                      (underXvfb ? "xvfb-run -a -s '-screen 0 640x480x24' " : "") + penumbraBinary() + " " + args +
                       " 2> stderr.txt";
     int status = std::system(cmd.c_str());
     std::ifstream in(dir / "stderr.txt");
