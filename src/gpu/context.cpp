@@ -201,7 +201,7 @@ ContextResult Context::create(const ContextOptions& options) {
     InstanceResult instance = acquireInstance(config);
     if (!instance.instance) return {nullptr, unavailable(instance.error)};
     ctx->instance_ = std::move(instance.instance);
-    if (config.validation) ctx->messenger_ = std::make_unique<Messenger>(ctx->instance_, ctx->log_);
+    if (config.validation) ctx->messenger_ = std::make_unique<Messenger>(ctx->instance_, ctx->log_, options.printValidation);
 
     if (options.createSurface) {
         std::lock_guard lock(ctx->instance_->childMutex());

@@ -37,6 +37,9 @@ struct ContextOptions {
     // Enables VK_LAYER_KHRONOS_validation and records every warning and error it reports.
     // PENUMBRA_VALIDATION=1 turns it on too.
     bool validation = false;
+    // Whether validation messages are also printed to stderr (tests that provoke them on purpose
+    // turn this off).
+    bool printValidation = true;
     // Presentation (the viewer): extra instance extensions, and a function that makes the
     // window's surface once the instance exists. The device then needs one queue family with
     // graphics, compute and present support, and VK_KHR_swapchain.

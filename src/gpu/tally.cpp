@@ -8,6 +8,7 @@ namespace {
 std::atomic<std::uint64_t> instancesCreated{0}, instancesDestroyed{0};
 std::atomic<std::uint64_t> devicesCreated{0}, devicesDestroyed{0};
 std::atomic<std::uint64_t> buffersLive{0}, bufferBytesLive{0};
+std::atomic<std::uint64_t> deviceObjectsLive{0};
 
 }  // namespace
 
@@ -19,6 +20,7 @@ VulkanTally vulkanTally() {
     t.devicesDestroyed = devicesDestroyed.load();
     t.buffersLive = buffersLive.load();
     t.bufferBytesLive = bufferBytesLive.load();
+    t.deviceObjectsLive = deviceObjectsLive.load();
     return t;
 }
 
@@ -27,6 +29,8 @@ void instanceCreated() { ++instancesCreated; }
 void instanceDestroyed() { ++instancesDestroyed; }
 void deviceCreated() { ++devicesCreated; }
 void deviceDestroyed() { ++devicesDestroyed; }
+void deviceObjectCreated() { ++deviceObjectsLive; }
+void deviceObjectDestroyed() { --deviceObjectsLive; }
 }  // namespace tally
 
 BufferTally::BufferTally(std::uint64_t bytes) : bytes_(bytes), live_(true) {

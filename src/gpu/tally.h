@@ -11,6 +11,9 @@ struct VulkanTally {
     std::uint64_t instancesCreated = 0, instancesDestroyed = 0;
     std::uint64_t devicesCreated = 0, devicesDestroyed = 0;
     std::uint64_t buffersLive = 0, bufferBytesLive = 0;  // gpu::Buffer objects and their sizes
+    // Objects owned through gpu::DeviceHandle: buffers, memory, pipelines and their layouts,
+    // descriptor pools, shader modules, fences, command pools, query pools.
+    std::uint64_t deviceObjectsLive = 0;
 
     std::uint64_t instancesLive() const { return instancesCreated - instancesDestroyed; }
     std::uint64_t devicesLive() const { return devicesCreated - devicesDestroyed; }
@@ -23,6 +26,8 @@ void instanceCreated();
 void instanceDestroyed();
 void deviceCreated();
 void deviceDestroyed();
+void deviceObjectCreated();
+void deviceObjectDestroyed();
 }  // namespace tally
 
 // Counts one live buffer of `bytes` while it lives; a move carries the count along.

@@ -32,7 +32,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
     const auto& sink = *static_cast<const Messenger::Sink*>(user);
     if (data && !concerns(sink, *data)) return VK_FALSE;
     std::string message = data && data->pMessage ? data->pMessage : "(no message)";
-    std::fprintf(stderr, "penumbra: vulkan validation: %s\n", message.c_str());
+    if (sink.print) std::fprintf(stderr, "penumbra: vulkan validation: %s\n", message.c_str());
     sink.log->record(std::move(message));
     return VK_FALSE;
 }
@@ -54,9 +54,10 @@ std::size_t ValidationLog::size() const {
     return messages_.size();
 }
 
-Messenger::Messenger(std::shared_ptr<SharedInstance> instance, std::shared_ptr<ValidationLog> log)
+Messenger::Messenger(std::shared_ptr<SharedInstance> instance, std::shared_ptr<ValidationLog> log, bool print)
     : instance_(std::move(instance)), sink_(std::make_unique<Sink>()) {
     sink_->log = std::move(log);
+    sink_->print = print;
     VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
     info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;

@@ -27,12 +27,13 @@ private:
     std::vector<std::string> messages_;
 };
 
-// A VK_EXT_debug_utils messenger that records warnings and errors into a log (and prints them).
+// A VK_EXT_debug_utils messenger that records warnings and errors into a log (and prints them to
+// stderr unless `print` is false).
 // A message that names a device or queue other than this Context's belongs to another Context on
 // the same instance and is left to that one's messenger; a message naming none is kept.
 class Messenger {
 public:
-    Messenger(std::shared_ptr<SharedInstance> instance, std::shared_ptr<ValidationLog> log);
+    Messenger(std::shared_ptr<SharedInstance> instance, std::shared_ptr<ValidationLog> log, bool print = true);
     ~Messenger();
     Messenger(const Messenger&) = delete;
     Messenger& operator=(const Messenger&) = delete;
@@ -42,6 +43,7 @@ public:
 
     struct Sink {
         std::shared_ptr<ValidationLog> log;
+        bool print = true;
         std::atomic<std::uint64_t> device{0}, queue{0};
     };
 
