@@ -72,6 +72,9 @@ pack() {
     fi
   done
   printf '%s\n' "${TEST_BINARIES[@]}" | while read -r b; do [ -x ".gpu/bin/$b" ] && echo "$b"; done > .gpu/test-binaries
+  # The test binaries travel compressed (a quarter of their size); `run` unpacks them. penumbra stays
+  # runnable as it is, for other commands on the host.
+  for b in $(cat .gpu/test-binaries); do xz -T0 -6 -f ".gpu/bin/$b"; done
   { git rev-parse --short HEAD; git status --porcelain --untracked-files=no | grep -q . && echo "(with uncommitted changes)" || true; } \
     | paste -sd' ' > .gpu/commit
   report_size
@@ -105,9 +108,15 @@ prepare_host() {
     mv .gpu/layers/libVkLayer_khronos_validation.so.part .gpu/layers/libVkLayer_khronos_validation.so
   fi
   export VK_LAYER_PATH="$root/.gpu/layers"
+  local b
+  for b in $(cat .gpu/test-binaries); do
+    if [ -f ".gpu/bin/$b.xz" ] && [ ! -x ".gpu/bin/$b" ]; then
+      unxz_to ".gpu/bin/$b.xz" ".gpu/bin/$b.part" && chmod +x ".gpu/bin/$b.part" && mv ".gpu/bin/$b.part" ".gpu/bin/$b"
+    fi
+  done
   local packed target
   while IFS= read -r -d '' packed; do
-    target=${packed#.gpu/assets}
+    target=${GPU_TESTS_ASSET_ROOT:-}${packed#.gpu/assets}  # the root is for testing this script only
     target=${target%.xz}
     [ -f "$target" ] && continue
     if mkdir -p "$(dirname "$target")" 2>/dev/null && unxz_to "$packed" "$target.part" 2>/dev/null; then

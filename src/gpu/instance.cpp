@@ -65,9 +65,9 @@ std::string describeFailure(VkResult r, const std::vector<const char*>& extensio
     const std::string call = std::string("vkCreateInstance returned ") + string_VkResult(r);
     *unavailable = false;
     if (earlier > 0)
-        return call + " after " + std::to_string(earlier) +
-               " instances were created earlier in this process, so a driver is installed: it refused one "
-               "more (a driver limit or leak); VK_LOADER_DEBUG=error,warn,driver shows the loader's reason";
+        return call + " after this process had created " + std::to_string(earlier) +
+               " Vulkan instances, so a driver is present: it refused one more (a driver limit or leak); "
+               "VK_LOADER_DEBUG=error,warn,driver shows the loader's reason";
     switch (r) {
         case VK_ERROR_INCOMPATIBLE_DRIVER:
             *unavailable = true;
@@ -119,7 +119,9 @@ MadeInstance makeInstance(const InstanceConfig& config) {
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
         messenger.messageSeverity =
             VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-        messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
+        // Validation only: the loader's own complaints (no driver found) come back as a VkResult,
+        // which describeFailure turns into one line.
+        messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
         messenger.pfnUserCallback = onInstanceMessage;
         info.pNext = &messenger;
     }
