@@ -133,7 +133,7 @@ prepare_host() {
   log_dir=${1:-.gpu/logs}
   mkdir -p "$log_dir"
   work=$(mktemp -d)
-  timeout_s=${PENUMBRA_GPU_TEST_TIMEOUT:-900}
+  timeout_s=${PENUMBRA_GPU_TEST_TIMEOUT:-300}
 }
 
 header() {
@@ -164,6 +164,10 @@ results() {
       sub(/^[A-Z]+ +\] /, "", r); sub(/ \([0-9]+ ms\)$/, "", r)
       print res "\t" r "\t" (res == "SKIPPED" ? reason : ""); reason = ""
     }' "$1"
+}
+
+counts() {
+  results "$1" | awk -F'\t' '{n[$1]++} END {printf "%d passed, %d failed, %d skipped", n["OK"], n["FAILED"], n["SKIPPED"]}'
 }
 
 summarise() {
@@ -214,8 +218,9 @@ run() {
   # On a GPU, rebuilding the viewer's pipelines is quick: every reopen of the viewer test draws.
   case "$PENUMBRA_TEST_DEVICE" in *llvmpipe*) ;; *) extra=(PENUMBRA_LEAK_REOPEN_FRAMES=100) ;; esac
   for name in $(cat .gpu/test-binaries); do
-    echo "gpu-tests: running $name" >&2
+    local start=$SECONDS
     run_binary "$name" ${extra[@]+"${extra[@]}"}
+    echo "gpu-tests: $name: exit $(cat "$work/$name.rc") after $((SECONDS - start)) s, $(counts "$work/$name.log")" >&2
   done
   local status=0
   { header; echo; summarise; } > "$log_dir/summary.txt" || status=$?
@@ -251,24 +256,30 @@ diagnose() {
     leak_run per-context PENUMBRA_INSTANCE_PER_CONTEXT=1 || old=1
     leak_run shared || new=1
     if [ "$old" -eq 1 ]; then
-      leak_run per-context-no-validation PENUMBRA_INSTANCE_PER_CONTEXT=1 PENUMBRA_LEAK_VALIDATION=0 && noval=0
+      if leak_run per-context-no-validation PENUMBRA_INSTANCE_PER_CONTEXT=1 PENUMBRA_LEAK_VALIDATION=0; then noval=0; fi
       local hard; hard=$(ulimit -Hn)
+      [ "$hard" = unlimited ] && hard=1048576
       if [ "$hard" != "$(ulimit -Sn)" ]; then
-        ( ulimit -Sn "$hard"; leak_run per-context-fd-limit-"$hard" PENUMBRA_INSTANCE_PER_CONTEXT=1 ) && fds=0
+        if ( ulimit -Sn "$hard" && leak_run per-context-fd-limit-"$hard" PENUMBRA_INSTANCE_PER_CONTEXT=1 ); then fds=0; fi
+      else
+        echo "--- the open-file limit is already at its maximum ($hard): no run with a higher one"
       fi
     fi
     run_binary material_tests PENUMBRA_INSTANCE_PER_CONTEXT=1
     { echo "===== material_tests with PENUMBRA_INSTANCE_PER_CONTEXT=1 (exit $(cat "$work/material_tests.rc"))"
       cat "$work/material_tests.log"; } >> "$log_dir/diagnose.log"
-    echo "--- material_tests with one instance per context: exit $(cat "$work/material_tests.rc"), $(results "$work/material_tests.log" |
-      awk -F'\t' '{n[$1]++} END {printf "%d passed, %d failed, %d skipped", n["OK"], n["FAILED"], n["SKIPPED"]}')"
+    echo "--- material_tests with one instance per context: exit $(cat "$work/material_tests.rc"), $(counts "$work/material_tests.log")"
     grep -m1 -A2 'Failure$' "$work/material_tests.log" | cut -c1-600 || true
     echo
     if [ "$old" -eq 1 ] && [ "$new" -eq 0 ]; then
       echo "VERDICT: instance cycling was the cause: with one VkInstance per context the driver refused a context"
       echo "  (see 'FAILED: context N ...' above), with the shared instance all contexts worked and nothing grew."
-      [ "$noval" -eq 0 ] && echo "  Without the validation layer the per-context run passed: the layer's per-instance state is involved."
-      [ "$fds" -eq 0 ] && echo "  With the open-file limit raised the per-context run passed: it ran out of file descriptors."
+      if [ "$noval" -eq 0 ]; then
+        echo "  Without the validation layer the per-context run passed: the layer's per-instance state is involved."
+      fi
+      if [ "$fds" -eq 0 ]; then
+        echo "  With the open-file limit raised the per-context run passed: it ran out of file descriptors."
+      fi
     elif [ "$old" -eq 0 ] && [ "$new" -eq 0 ]; then
       echo "VERDICT: NOT instance cycling: one instance per context also created every context. Compare the material_tests"
       echo "  run above with the suite's: the failure needs something else those tests do (see the 'after N' lines for growth)."
