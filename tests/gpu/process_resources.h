@@ -49,9 +49,11 @@ inline ProcessResources sampleProcess() {
 
 inline std::string describe(const ProcessResources& r) {
     char text[160];
-    std::snprintf(text, sizeof text, "fds %ld, threads %ld, mappings %ld, rss %.1f MiB, heap %.1f MiB", r.fds, r.threads,
-                  r.mappings, double(r.rssKiB) / 1024, double(r.heapKiB) / 1024);
-    return text;
+    std::snprintf(text, sizeof text, "fds %ld, threads %ld, mappings %ld, rss %.1f MiB, heap ", r.fds, r.threads,
+                  r.mappings, double(r.rssKiB) / 1024);
+    char heap[32] = "unknown";
+    if (r.heapKiB >= 0) std::snprintf(heap, sizeof heap, "%.1f MiB", double(r.heapKiB) / 1024);
+    return std::string(text) + heap;
 }
 
 inline long openFileLimit() {
