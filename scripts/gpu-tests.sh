@@ -184,8 +184,9 @@ summarise() {
     unexpected=$(grep '^SKIPPED' "$work/$name.results" | grep -Evc "$EXPECTED_SKIPS" || true)
     ran=$(grep -c '^\[==========\] .* ran\.' "$log" || true)
     local note=""
-    if [ "$rc" -eq 124 ]; then note="timed out after ${timeout_s} s"
-    elif [ "$ran" -eq 0 ]; then note="crashed or stopped (last started: $(grep '^\[ RUN' "$log" | tail -1 | sed 's/^\[ RUN *\] //'))"
+    local last; last=$(grep '^\[ RUN' "$log" | tail -1 | sed 's/^\[ RUN *\] //')
+    if [ "$rc" -eq 124 ]; then note="timed out after ${timeout_s} s, in $last"
+    elif [ "$ran" -eq 0 ]; then note="crashed or stopped (exit $rc) in $last"
     fi
     [ "$unexpected" -gt 0 ] && note="$note${note:+; }$unexpected unexpected skips"
     [ "$rc" -ne 0 ] || [ "$fail" -gt 0 ] || [ "$unexpected" -gt 0 ] || [ "$ran" -eq 0 ] && bad=1
