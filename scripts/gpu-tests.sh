@@ -241,9 +241,9 @@ leak_run() {
   mv "$work/leak_tests.log" "$work/$label.log"
   mv "$work/leak_tests.rc" "$work/$label.rc"
   { echo "===== $label: $* (exit $(cat "$work/$label.rc"))"; cat "$work/$label.log"; } >> "$log_dir/diagnose.log"
-  echo "--- $label ($*): exit $(cat "$work/$label.rc")"
+  echo "--- $label (${*:-default settings}): exit $(cat "$work/$label.rc")"
   grep -h '^\[leak\]' "$work/$label.log" | grep -Ev '^\[leak\] after [0-9]+: ' | cut -c1-600 || true
-  grep -h '^\[leak\] after [0-9]+: ' "$work/$label.log" | tail -2 | cut -c1-600 || true
+  grep -hE '^\[leak\] after [0-9]+: ' "$work/$label.log" | tail -2 | cut -c1-600 || true
   [ "$(cat "$work/$label.rc")" -eq 0 ]
 }
 
