@@ -17,7 +17,7 @@
 set -euo pipefail
 
 # The binaries, run in this order; viewer_smoke_tests only where the build made it (PENUMBRA_VIEWER).
-TEST_BINARIES=(gpu_tests material_tests viewer_gpu_tests cli_tests leak_tests viewer_smoke_tests)
+TEST_BINARIES=(gpu_tests material_tests viewer_gpu_tests cli_tests invariance_tests leak_tests viewer_smoke_tests)
 # Skips that are expected on the GPU host (no display, no xvfb-run there), as extended regexes.
 EXPECTED_SKIPS='xvfb-run is not installed'
 # Real assets the tests read from Debian packages, carried xz-compressed and unpacked at the same paths.

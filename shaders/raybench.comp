@@ -1,7 +1,8 @@
 #version 460
 // Ray-throughput benchmark, one ray kind per dispatch so each is timed alone:
 //   PRIMARY: a camera ray per pixel (closest hit), keeping the hit point for the next two;
-//   SHADOW:  from each kept point, an any-hit ray to a sampled light point;
+//   SHADOW:  from each kept point, an any-hit ray to a sample of a light the light sampler picked
+//            (results: 1 lit, 0 occluded, -1 no ray: no light reaches the point);
 //   DIFFUSE: from each kept point, a cosine-sampled bounce ray (closest hit).
 #extension GL_GOOGLE_include_directive : require
 
@@ -16,7 +17,7 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 #include "lib/bvh.glsl"
 #include "lib/camera.glsl"
 #include "lib/surface.glsl"
-#include "lib/lights.glsl"
+#include "lib/light_sampler.glsl"
 
 layout(std430, set = 0, binding = PN_BINDING_SCRATCH) buffer PointBuffer { SurfacePoint points[]; };
 // One word per pixel so the compiler cannot drop the traversal as dead code.
@@ -51,11 +52,12 @@ void main() {
     if (p.valid == 0u) return;
     vec3 origin = offsetRayOrigin(p.position, p.normal);
     if (push.mode == PN_RAYBENCH_SHADOW) {
-        if (frame.lightCount == 0u) return;
-        LightSample ls = sampleLight(rng);
-        vec3 span = offsetRayOrigin(ls.position, ls.normal) - origin;
-        float len = length(span);
-        results[index] = traceOccluded(origin, span / len, len * (1.0 - 1e-4)) ? 0.0 : 1.0;
+        results[index] = -1.0;
+        LightPick pick = pickLight(p.position, p.normal, rng);
+        if (pick.ref == PN_NO_LIGHT) return;
+        LightSample ls = sampleChosenLight(pick, p.position, p.normal, rng);
+        if (!(ls.pdf > 0.0)) return;
+        results[index] = shadowRayBlocked(origin, ls) ? 0.0 : 1.0;
     } else {
         vec3 d = sampleCosineHemisphere(p.normal, rngNext2(rng));
         results[index] = traceClosest(origin, d, PN_INFINITY).t;

@@ -1,9 +1,10 @@
 #version 460
 // The path tracer: one thread per pixel, samplesPerPass paths each, added into the accumulation
 // buffer (rgb = sum of radiance, a = sum of squared luminance, for variance estimates).
-// Unidirectional path tracing with next event estimation to emissive triangles, emissive spheres,
-// punctual lights, sun disks and the environment, combined with BSDF sampling per frame.misMode (lib/mis.glsl); every surface is shaded
-// by the one principled BSDF (lib/bsdf/bsdf.glsl) in its local shading frame.
+// Unidirectional path tracing with next event estimation (one light per vertex, chosen among
+// emissive triangles and spheres, punctual lights, sun disks and the environment by
+// lib/light_sampler.glsl), combined with BSDF sampling per frame.misMode (lib/mis.glsl); every
+// surface is shaded by the one principled BSDF (lib/bsdf/bsdf.glsl) in its local shading frame.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_basic : require
@@ -19,9 +20,7 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 #include "lib/bvh.glsl"
 #include "lib/camera.glsl"
 #include "lib/surface.glsl"
-#include "lib/lights.glsl"
-#include "lib/sphere_lights.glsl"
-#include "lib/environment.glsl"
+#include "lib/light_sampler.glsl"
 #include "lib/material.glsl"
 #include "lib/shading_frame.glsl"
 #include "lib/mis.glsl"
@@ -47,11 +46,13 @@ vec3 leavingOrigin(Surface s, vec3 wi) {
     return offsetRayOrigin(s.position, dot(wi, s.geometricNormal) > 0.0 ? s.geometricNormal : -s.geometricNormal);
 }
 
-// The light a light sampler found, arriving at the shading point along wi (world) from `dist`
-// away: radiance / lightPdf weighted by the BSDF, visibility, absorption and MIS. lightPdf is a
-// solid-angle density, or for a delta light the probability of having picked it (isDeltaLight).
-// Every light class ends here, so all of them treat the BSDF and MIS alike.
-vec3 shadeLightSample(ShadingPoint sp, vec3 wi, float dist, vec3 radiance, float lightPdf, bool isDeltaLight) {
+// The light a light sample brings, arriving at the shading point along ls.wi (world) from
+// ls.dist away: radiance / pdf weighted by the BSDF, visibility, absorption and MIS. The pdf is a
+// solid-angle density, or for a delta light the probability of having picked it (isDelta).
+vec3 shadeLightSample(ShadingPoint sp, LightSample ls) {
+    vec3 wi = ls.wi, radiance = ls.radiance;
+    float dist = ls.dist, lightPdf = ls.pdf;
+    bool isDeltaLight = ls.isDelta;
     if (!(lightPdf > 0.0) || max(radiance.r, max(radiance.g, radiance.b)) <= 0.0) return vec3(0.0);
     vec3 wiLocal = toLocal(sp.frame, wi);
     // The shading and the true surface must agree on which side wi is, or light would leak.
@@ -62,60 +63,18 @@ vec3 shadeLightSample(ShadingPoint sp, vec3 wi, float dist, vec3 radiance, float
     float weight = isDeltaLight ? 1.0 : misWeightLight(lightPdf, bsdfPdf(sp.bsdf, sp.wo, wiLocal));
     if (weight <= 0.0) return vec3(0.0);
     ++shadowRays;
-    if (traceOccluded(leavingOrigin(sp.surface, wi), wi, dist == PN_INFINITY ? PN_INFINITY : dist * (1.0 - 1e-4)))
-        return vec3(0.0);
+    if (shadowRayBlocked(leavingOrigin(sp.surface, wi), ls)) return vec3(0.0);
     vec3 sigma = above ? sp.mediumAbove : sp.mediumBelow;
     vec3 transmittance = dist == PN_INFINITY ? vec3(sigma == vec3(0.0) ? 1.0 : 0.0) : exp(-sigma * dist);
     return f * abs(wiLocal.z) * radiance * transmittance * (weight / lightPdf);
 }
 
-// Direct light from a sun disk (a directional light with an angular radius), MIS-weighted
-// against the BSDF: escaped rays can hit it too (escapedRadiance).
-vec3 sampleDirectSun(ShadingPoint sp, PunctualLight l, float pickPmf, inout uint rng) {
-    vec3 wi = sampleSunDisk(l, rngNext2(rng));
-    return shadeLightSample(sp, wi, PN_INFINITY, sunRadiance(l), pickPmf * sunConePdf(l), false);
-}
-
-// Direct light from the environment (map or constant background), MIS-weighted against the BSDF.
-vec3 sampleDirectEnvironment(ShadingPoint sp, inout uint rng) {
-    EnvSample es = sampleEnvironment(sp.frame.n, rng);
-    return shadeLightSample(sp, es.direction, PN_INFINITY, es.radiance, es.pdf, false);
-}
-
-// Direct light from a punctual light (a delta light: no MIS, BSDF sampling never hits it), or
-// from a sun disk, which is not a delta light.
-vec3 sampleDirectPunctual(ShadingPoint sp, inout uint rng) {
-    float pmf;
-    uint index = pickPunctual(sp.surface.position, rngNext(rng), pmf);
-    if (isSunDisk(punctualLights[index])) return sampleDirectSun(sp, punctualLights[index], pmf, rng);
-    vec3 wi;
-    float dist;
-    vec3 incident = punctualIncident(punctualLights[index], sp.surface.position, wi, dist);
-    return shadeLightSample(sp, wi, dist, incident, pmf, true);
-}
-
-// Direct light from an emissive triangle, MIS-weighted against the BSDF.
-vec3 sampleDirectTriangle(ShadingPoint sp, inout uint rng) {
-    LightSample ls = sampleLight(rng);
-    vec3 toLight = ls.position - sp.surface.position;
-    float dist2 = dot(toLight, toLight);
-    if (dist2 <= 0.0) return vec3(0.0);
-    float dist = sqrt(dist2);
-    vec3 wi = toLight / dist;
-    float cosLight = -dot(ls.normal, wi);
-    if (cosLight <= 0.0) return vec3(0.0);
-    float lightPdf = ls.pdfArea * dist2 / cosLight;  // solid angle
-    return shadeLightSample(sp, wi, dist, ls.radiance, lightPdf, false);
-}
-
-// Direct light from a sphere light (lib/sphere_lights.glsl), sampled in the cone it subtends.
-// A spot light with a radius has no geometry (BSDF sampling never reaches it), so it is treated
-// like a delta light: weight 1.
-vec3 sampleDirectSphere(ShadingPoint sp, inout uint rng) {
-    SphereLightSample ls = sampleSphereLight(sp.surface.position, rng);
-    if (!(ls.pdf > 0.0)) return vec3(0.0);
-    float dist = length(ls.position - sp.surface.position);
-    return shadeLightSample(sp, ls.wi, dist, ls.radiance, ls.pdf, ls.lightOnly);
+// Direct light: one light chosen among all of them by the unified sampler, one sample of it,
+// one shadow ray.
+vec3 sampleDirectLight(ShadingPoint sp, inout uint rng) {
+    LightPick pick = pickLight(sp.surface.position, sp.frame.n, rng);
+    if (pick.ref == PN_NO_LIGHT) return vec3(0.0);
+    return shadeLightSample(sp, sampleChosenLight(pick, sp.surface.position, sp.frame.n, rng));
 }
 
 vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
@@ -124,23 +83,25 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
     float bsdfPdfPrev = 0.0;  // solid-angle pdf of the direction that led here
     bool afterDelta = true;   // the camera ray, or a delta lobe: light sampling could not see this
     vec3 medium = vec3(0.0);  // absorption coefficient of the medium the ray travels in
-    vec3 previousNormal = vec3(0.0);  // shading normal where the current direction was sampled
+    vec3 previousNormal = vec3(0.0);    // shading normal where the current direction was sampled
+    vec3 previousPosition = vec3(0.0);  // and the surface point there (what light sampling saw)
     for (uint depth = 0u;; ++depth) {
         ++closestRays;
         Hit hit = traceClosest(origin, direction, PN_INFINITY);
         if (hit.triangle == PN_NO_HIT) {
             // Escaping inside an absorbing medium (an open mesh) leaves nothing.
             if (medium == vec3(0.0))
-                result += throughput * escapedRadiance(origin, previousNormal, direction, afterDelta ? 0.0 : bsdfPdfPrev);
+                result += throughput * escapedRadiance(previousPosition, previousNormal, direction, afterDelta ? 0.0 : bsdfPdfPrev);
             break;
         }
-        throughput *= exp(-medium * hit.t);
+        if (PN_HAS(PN_FEATURE_ABSORPTION)) throughput *= exp(-medium * hit.t);
         Surface s = surfaceAt(hit, origin, direction);
         Material m = materials[s.material];
 
         if ((m.flags & PN_MATERIAL_EMISSIVE) != 0u && s.frontFace) {
             float lightPdf = 0.0;
-            if (s.lightPmf > 0.0 && misSamplesLights()) lightPdf = emitterHitPdf(hit, s, origin, direction);
+            if (!afterDelta && s.lightIndex != PN_NO_LIGHT && misSamplesLights())
+                lightPdf = emitterHitPdf(hit, s, previousPosition, previousNormal, origin, direction);
             result += throughput * materialEmission(m, s.uv) * misWeightHit(bsdfPdfPrev, lightPdf, afterDelta);
         }
         if (depth >= frame.maxBounces) break;
@@ -152,12 +113,9 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
         sp.wo = toLocal(sp.frame, -direction);
         sp.mediumAbove = medium;
         // Refraction leaves the medium through a back face and enters the material's through a front one.
-        sp.mediumBelow = s.frontFace ? m.absorption : vec3(0.0);
+        sp.mediumBelow = PN_HAS(PN_FEATURE_ABSORPTION) && s.frontFace ? m.absorption : vec3(0.0);
 
-        if (frame.lightCount > 0u && misSamplesLights()) result += throughput * sampleDirectTriangle(sp, rng);
-        if (frame.punctualCount > 0u) result += throughput * sampleDirectPunctual(sp, rng);
-        if (frame.sphereLightCount > 0u) result += throughput * sampleDirectSphere(sp, rng);
-        if (environmentIsLight() && misSamplesLights()) result += throughput * sampleDirectEnvironment(sp, rng);
+        result += throughput * sampleDirectLight(sp, rng);
 
         vec3 u = vec3(rngNext2(rng), rngNext(rng));
         BsdfSample bs = bsdfSample(sp.bsdf, sp.wo, u);
@@ -180,6 +138,7 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
         origin = leavingOrigin(s, wi);
         direction = wi;
         previousNormal = sp.frame.n;
+        previousPosition = s.position;
     }
     return result;
 }
@@ -203,7 +162,7 @@ void main() {
                 atomicAdd(counters.invalidSamples, 1u);
             }
             sum += L;
-            float y = dot(L, vec3(0.2126, 0.7152, 0.0722));
+            float y = luminance(L);
             sumSquares += y * y;
         }
         accum[pixelIndex] += vec4(sum, sumSquares);

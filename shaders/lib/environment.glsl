@@ -1,6 +1,6 @@
 // Light from infinitely far away: an equirectangular environment map (or the constant
-// background), importance sampled, and the escaped-ray lookup that MIS-weights it and the sun
-// disks against light sampling. Include after scene_bindings.glsl and lights.glsl.
+// background), importance sampled. Rays that escape are weighed against light sampling in
+// lib/light_sampler.glsl. Include after scene_bindings.glsl.
 //
 // The map is looked up with the nearest texel, which keeps the lookup exactly proportional to
 // the pdf: texel i is picked with probability pmf_i from an alias table (luminance x solid
@@ -13,8 +13,6 @@
 
 #include "lib/sampling.glsl"
 #include "lib/rng.glsl"
-#include "lib/sun.glsl"
-#include "lib/mis.glsl"
 
 layout(std430, set = 0, binding = PN_BINDING_ENV_TABLE) readonly buffer EnvTableBuffer { EnvAlias envTable[]; };
 layout(std430, set = 0, binding = PN_BINDING_ENV_TEXELS) readonly buffer EnvTexelBuffer { vec4 envTexels[]; };
@@ -45,20 +43,14 @@ uint envTexelIndex(vec3 worldDirection) {
     return y * frame.envWidth + x;
 }
 
-// Whether the environment sends any light, so that sampling it is worth a shadow ray.
-bool environmentIsLight() {
-    vec3 b = frame.background;
-    return frame.envIntensity > 0.0 && (frame.envWidth > 0u || max(b.r, max(b.g, b.b)) > 0.0);
-}
-
 vec3 environmentRadiance(vec3 direction) {
-    if (frame.envWidth == 0u) return frame.background * frame.envIntensity;
+    if (!PN_HAS(PN_FEATURE_ENV_MAP) || frame.envWidth == 0u) return frame.background * frame.envIntensity;
     return envTexels[envTexelIndex(direction)].rgb * frame.envIntensity;
 }
 
 // Solid-angle pdf with which sampleEnvironment(n, ...) returns `direction`.
 float environmentPdf(vec3 direction, vec3 n) {
-    if (frame.envWidth == 0u) return max(dot(n, direction), 0.0) * PN_INV_PI;
+    if (!PN_HAS(PN_FEATURE_ENV_MAP) || frame.envWidth == 0u) return max(dot(n, direction), 0.0) * PN_INV_PI;
     return envTable[envTexelIndex(direction)].pdf;
 }
 
@@ -66,7 +58,7 @@ float environmentPdf(vec3 direction, vec3 n) {
 // sampling ignores n).
 EnvSample sampleEnvironment(vec3 n, inout uint rng) {
     EnvSample es;
-    if (frame.envWidth == 0u) {
+    if (!PN_HAS(PN_FEATURE_ENV_MAP) || frame.envWidth == 0u) {
         // The constant background: cosine-weighted around n, the distribution of its
         // contribution to any diffuse surface (for a Lambertian BSDF, MIS then gives every
         // unoccluded sample the exact answer).
@@ -93,26 +85,6 @@ EnvSample sampleEnvironment(vec3 n, inout uint rng) {
     es.radiance = envTexels[texel].rgb * frame.envIntensity;
     es.pdf = envTable[texel].pdf;
     return es;
-}
-
-// Light carried by a ray that left the scene from `from` (shading normal fromNormal) along
-// `direction`: the environment and any sun disk it points into. bsdfPdf is the solid-angle pdf of
-// the BSDF sample that made the ray (0: a camera ray, which no light sampling competes with).
-vec3 escapedRadiance(vec3 from, vec3 fromNormal, vec3 direction, float bsdfPdf) {
-    vec3 L = vec3(0.0);
-    // Weights as for any emitter BSDF sampling hits (lib/mis.glsl); no competing light sample
-    // after the camera or a delta lobe.
-    const bool unsampled = !(bsdfPdf > 0.0);
-    if (frame.envIntensity > 0.0) {
-        float lightPdf = environmentIsLight() ? environmentPdf(direction, fromNormal) : 0.0;
-        L += environmentRadiance(direction) * misWeightHit(bsdfPdf, lightPdf, unsampled);
-    }
-    for (uint i = 0u; i < frame.punctualCount; ++i) {
-        PunctualLight l = punctualLights[i];
-        if (!isSunDisk(l) || !insideSunDisk(l, direction)) continue;
-        L += sunRadiance(l) * misWeightHit(bsdfPdf, punctualPickPmf(i, from) * sunConePdf(l), unsampled);
-    }
-    return L;
 }
 
 #endif

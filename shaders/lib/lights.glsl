@@ -1,37 +1,34 @@
-// Light sampling: an emissive triangle chosen from the alias table (in proportion to power),
-// then a point uniform over its area.
+// Sampling one light once it is chosen: a point uniform over an emissive triangle, and the light a
+// punctual light sends to a point. Choosing which light is lib/light_sampler.glsl's job.
 #ifndef PN_LIGHTS_GLSL
 #define PN_LIGHTS_GLSL
 
 #include "lib/material.glsl"
 #include "lib/sampling.glsl"
 
-struct LightSample {
+struct TrianglePoint {
     vec3 position;
     vec3 normal;     // front (emitting) side
-    vec3 radiance;
-    float pdfArea;   // pmf of the triangle / its area (the triangle table's share included)
+    vec3 radiance;   // zero where an alpha-tested emitter has a hole (rays pass through there)
+    float area;
 };
 
-// A point on an emissive triangle chosen by power. Triangle and punctual lights are each sampled
-// at every vertex, so neither class's share of samples has to be guessed.
-LightSample sampleLight(inout uint rng) {
-    float u = rngNext(rng) * float(frame.lightCount);
-    uint slot = min(uint(u), frame.lightCount - 1u);
-    LightAlias entry = lights[slot];
-    if (fract(u) >= entry.threshold) entry = lights[entry.alias];
-    TriVerts tv = triVerts[entry.triangle];
-    TriAttribs ta = triAttribs[entry.triangle];
-    vec2 b = sampleTriangleUniform(rngNext2(rng));
-    LightSample ls;
-    ls.position = tv.v0 + b.x * tv.e1 + b.y * tv.e2;
-    ls.normal = normalize(cross(tv.e1, tv.e2));
-    ls.radiance = materialEmission(materials[ta.materialId], interpolateUv(ta, b.x, b.y));
-    ls.pdfArea = entry.pmf / ta.area;
-    return ls;
+// A point uniform over the area of primitive slot `tri` (an emissive triangle).
+TrianglePoint sampleTrianglePoint(uint tri, vec2 u) {
+    TriVerts tv = triVerts[tri];
+    TriAttribs ta = triAttribs[tri];
+    vec2 b = sampleTriangleUniform(u);
+    Material m = materials[ta.materialId];
+    TrianglePoint tp;
+    tp.position = tv.v0 + b.x * tv.e1 + b.y * tv.e2;
+    tp.normal = normalize(cross(tv.e1, tv.e2));
+    tp.area = ta.area;
+    bool hole = (tv.flags & PN_TRI_ALPHA_TESTED) != 0u && isAlphaHole(tri, b.x, b.y);
+    tp.radiance = hole ? vec3(0.0) : materialEmission(m, interpolateUv(ta, b.x, b.y));
+    return tp;
 }
 
-// Light from punctual light `index` arriving at p: direction to it, distance, and the radiant
+// Light from punctual light `l` arriving at p: direction to it, distance, and the radiant
 // intensity falling on p (already divided by distance squared and windowed by range and cone).
 vec3 punctualIncident(PunctualLight l, vec3 p, out vec3 wi, out float dist) {
     if (l.type == PN_LIGHT_DIRECTIONAL) {
@@ -54,34 +51,6 @@ vec3 punctualIncident(PunctualLight l, vec3 p, out vec3 wi, out float dist) {
         falloff *= smoothstep(l.cosOuter, max(l.cosInner, l.cosOuter + 1e-4), cd);
     }
     return l.intensity * falloff;
-}
-
-// How much light `l` could bring to p (ignoring visibility and the surface's orientation).
-float punctualWeight(PunctualLight l, vec3 p) {
-    if (frame.punctualCount > PN_PUNCTUAL_SCAN_LIMIT) return l.selectPmf;
-    vec3 wi;
-    float dist;
-    return dot(punctualIncident(l, p, wi, dist), vec3(0.2126, 0.7152, 0.0722));
-}
-
-// Picks a punctual light in proportion to punctualWeight at p; pmf is its probability (0 when
-// no light reaches p at all).
-uint pickPunctual(vec3 p, float u, out float pmf) {
-    float total = 0.0;
-    for (uint i = 0u; i < frame.punctualCount; ++i) total += punctualWeight(punctualLights[i], p);
-    pmf = 0.0;
-    if (!(total > 0.0)) return 0u;
-    float target = u * total, acc = 0.0;
-    uint last = 0u;
-    for (uint i = 0u; i < frame.punctualCount; ++i) {
-        float w = punctualWeight(punctualLights[i], p);
-        if (w <= 0.0) continue;
-        last = i;
-        pmf = w / total;
-        acc += w;
-        if (target < acc) return i;
-    }
-    return last;  // rounding left target at the very top: the last light with weight
 }
 
 #endif

@@ -13,7 +13,7 @@ BsdfParams materialBsdf(Material m, vec2 uv, bool frontFace) {
     p.baseColor = materialBaseColor(m, uv).rgb;
     p.metallic = m.metallic;
     p.roughness = m.roughness;
-    if (m.metallicRoughnessTexture != PN_NO_TEXTURE) {
+    if (PN_HAS(PN_FEATURE_TEXTURES) && m.metallicRoughnessTexture != PN_NO_TEXTURE) {
         vec4 mr = sampleTexture(m.metallicRoughnessTexture, uv, m.metallicRoughnessWrap);
         p.roughness *= mr.g;
         p.metallic *= mr.b;
@@ -21,7 +21,7 @@ BsdfParams materialBsdf(Material m, vec2 uv, bool frontFace) {
     p.metallic = clamp(p.metallic, 0.0, 1.0);
     p.roughness = clamp(p.roughness, 0.0, 1.0);
     p.ior = max(m.ior, 1.0);
-    p.transmission = clamp(m.transmission, 0.0, 1.0);
+    p.transmission = PN_HAS(PN_FEATURE_TRANSMISSION) ? clamp(m.transmission, 0.0, 1.0) : 0.0;
     p.specular = clamp(m.specular, 0.0, 1.0);
     p.entering = frontFace;
     if ((m.flags & PN_MATERIAL_ONE_SIDED) != 0u && !frontFace && p.transmission == 0.0) {
@@ -33,7 +33,7 @@ BsdfParams materialBsdf(Material m, vec2 uv, bool frontFace) {
 }
 
 vec3 materialEmission(Material m, vec2 uv) {
-    if (m.emissionTexture == PN_NO_TEXTURE) return m.emission;
+    if (!PN_HAS(PN_FEATURE_TEXTURES) || m.emissionTexture == PN_NO_TEXTURE) return m.emission;
     return m.emission * sampleTexture(m.emissionTexture, uv, m.emissionWrap).rgb;
 }
 

@@ -2,16 +2,22 @@
 #ifndef PN_SCENE_BINDINGS_GLSL
 #define PN_SCENE_BINDINGS_GLSL
 
-layout(std430, set = 0, binding = PN_BINDING_NODES) readonly buffer NodeBuffer { BvhNode nodes[]; };
+layout(std430, set = 0, binding = PN_BINDING_NODES) readonly buffer NodeBuffer { BvhNodePair nodes[]; };
 layout(std430, set = 0, binding = PN_BINDING_TRI_VERTS) readonly buffer TriVertBuffer { TriVerts triVerts[]; };
 layout(std430, set = 0, binding = PN_BINDING_TRI_ATTRIBS) readonly buffer TriAttribBuffer { TriAttribs triAttribs[]; };
 layout(std430, set = 0, binding = PN_BINDING_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
-layout(std430, set = 0, binding = PN_BINDING_LIGHTS) readonly buffer LightBuffer { LightAlias lights[]; };
+layout(std430, set = 0, binding = PN_BINDING_LIGHTS) readonly buffer LightBuffer { LightRef lights[]; };
+layout(std430, set = 0, binding = PN_BINDING_LIGHT_NODES) readonly buffer LightNodeBuffer { LightNode lightNodes[]; };
 layout(std140, set = 0, binding = PN_BINDING_FRAME) uniform FrameBuffer { FrameUniforms frame; };
 layout(std430, set = 0, binding = PN_BINDING_TEXTURES) readonly buffer TextureBuffer { TextureInfo textures[]; };
 layout(std430, set = 0, binding = PN_BINDING_TEXELS) readonly buffer TexelBuffer { uint texels[]; };
 layout(std430, set = 0, binding = PN_BINDING_PUNCTUAL) readonly buffer PunctualBuffer { PunctualLight punctualLights[]; };
 layout(std430, set = 0, binding = PN_BINDING_SPHERE_LIGHTS) readonly buffer SphereLightBuffer { SphereLight sphereLights[]; };
 layout(push_constant) uniform PushBlock { PassPush push; };
+
+// What this pipeline was specialised for (PN_FEATURE_*); branches on it vanish at pipeline
+// creation. PN_HAS must stay a macro: a function argument would not be a constant.
+layout(constant_id = 0) const uint pnFeatures = PN_FEATURE_ALL;
+#define PN_HAS(feature) ((pnFeatures & (feature)) != 0u)
 
 #endif

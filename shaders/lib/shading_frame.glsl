@@ -26,7 +26,7 @@ ShadingFrame frameAround(vec3 n) {
 // the triangle's UV derivatives (no per-vertex tangents); the map's +y is up in the image, which
 // is -v in our top-row-first UVs (glTF's convention).
 vec3 normalMapped(Material m, uint triangle, vec2 uv, vec3 front) {
-    if (m.normalTexture == PN_NO_TEXTURE || triangle >= frame.triCount) return front;
+    if (!PN_HAS(PN_FEATURE_NORMAL_MAPS) || m.normalTexture == PN_NO_TEXTURE || triangle >= frame.triCount) return front;
     TriVerts tv = triVerts[triangle];
     if ((tv.flags & PN_TRI_SPHERE) != 0u) return front;  // spheres have no triangle UV frame
     TriAttribs ta = triAttribs[triangle];

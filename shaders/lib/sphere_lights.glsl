@@ -1,6 +1,6 @@
 // Sphere lights (emissive spheres and spot lights with a radius, FrameUniforms.sphereLightCount
-// of them), chosen by power and sampled uniformly over the cone of directions the sphere
-// subtends: every sample is a point the shading point can see, and the pdf is the constant
+// of them; lib/light_sampler.glsl chooses one), sampled uniformly over the cone of directions the
+// sphere subtends: every sample is a point the shading point can see, and the pdf is the constant
 // 1 / (2 pi (1 - cos theta_max)). From inside a sphere there is no cone; there the sample is
 // uniform over the sphere's area instead.
 #ifndef PN_SPHERE_LIGHTS_GLSL
@@ -13,7 +13,7 @@ struct SphereLightSample {
     vec3 position;   // the sampled point, on the side of the sphere the shading point sees
     vec3 normal;     // outward, at position
     vec3 radiance;   // arriving along -wi (a spot light's cone falloff applied)
-    float pdf;       // solid angle, the light's selection probability included; 0: no sample
+    float pdf;       // solid angle (the light's selection probability not included); 0: no sample
     bool lightOnly;  // no geometry (a spot light): BSDF sampling never reaches it, so no MIS
 };
 
@@ -21,19 +21,7 @@ struct SphereLightSample {
 // that it keeps its digits for distant, small spheres (1 - sqrt(1 - x) cancels for small x).
 float sphereConeOneMinusCos(float sin2) { return sin2 / (1.0 + sqrt(max(0.0, 1.0 - sin2))); }
 
-// The light whose cdf interval holds u (binary search; the last cdf is exactly 1).
-uint pickSphereLight(float u, out float pmf) {
-    uint lo = 0u, hi = frame.sphereLightCount - 1u;
-    while (lo < hi) {
-        uint mid = (lo + hi) / 2u;
-        if (u < sphereLights[mid].cdf) hi = mid;
-        else lo = mid + 1u;
-    }
-    pmf = sphereLights[lo].selectPmf;
-    return lo;
-}
-
-// Solid-angle density with which sampleSphereLight picks a direction from p that meets the
+// Solid-angle density with which sampleSphereLight draws a direction from p that meets the
 // sphere (centre c, radius r) at distance tHit with |cos| cosHit at the surface, excluding the
 // selection probability. Must agree with the sampler, for MIS on BSDF-sampled hits.
 float sphereDirectionPdf(vec3 c, float r, vec3 p, float tHit, float cosHit) {
@@ -44,16 +32,10 @@ float sphereDirectionPdf(vec3 c, float r, vec3 p, float tHit, float cosHit) {
     return 1.0 / (2.0 * PN_PI * sphereConeOneMinusCos(r2 / dc2));
 }
 
-SphereLightSample sampleSphereLight(vec3 p, inout uint rng) {
+SphereLightSample sampleSphereLight(SphereLight l, vec3 p, vec2 u) {
     SphereLightSample ls;
     ls.pdf = 0.0;
-    float pmf;
-    SphereLight l = sphereLights[pickSphereLight(rngNext(rng), pmf)];
-    vec2 u = rngNext2(rng);
     ls.lightOnly = l.primitive == PN_NO_HIT;
-    // In BSDF-only mode an emissive sphere's light comes from BSDF hits; a spot light has no
-    // other way in, so it is still sampled.
-    if (!(pmf > 0.0) || (!ls.lightOnly && frame.misMode == PN_MIS_BSDF_ONLY)) return ls;
 
     vec3 pc = l.center - p;
     float dc2 = dot(pc, pc);
@@ -71,7 +53,7 @@ SphereLightSample sampleSphereLight(vec3 p, inout uint rng) {
         if (!(dist2 > 0.0)) return ls;
         ls.wi = toPoint * inversesqrt(dist2);
         ls.radiance = vec3(0.0);  // the inside is the back face
-        ls.pdf = pmf * sphereDirectionPdf(l.center, l.radius, p, sqrt(dist2), abs(dot(ls.normal, ls.wi)));
+        ls.pdf = sphereDirectionPdf(l.center, l.radius, p, sqrt(dist2), abs(dot(ls.normal, ls.wi)));
         return ls;
     }
 
@@ -94,7 +76,7 @@ SphereLightSample sampleSphereLight(vec3 p, inout uint rng) {
     ls.normal = -(sinAlpha * cos(phi) * t + sinAlpha * sin(phi) * b + cosAlpha * axis);
     ls.position = l.center + l.radius * ls.normal;
     ls.wi = normalize(ls.position - p);
-    ls.pdf = pmf / (2.0 * PN_PI * oneMinusCosMax);
+    ls.pdf = 1.0 / (2.0 * PN_PI * oneMinusCosMax);
     ls.radiance = l.radiance;
     if (ls.lightOnly) {
         // A spot light's cone, by the direction from its centre to the shading point.
@@ -102,17 +84,6 @@ SphereLightSample sampleSphereLight(vec3 p, inout uint rng) {
         ls.radiance *= smoothstep(l.cosOuter, max(l.cosInner, l.cosOuter + 1e-4), cd);
     }
     return ls;
-}
-
-// The solid-angle pdf with which light sampling would have produced a BSDF-sampled hit on an
-// emitter (ray from `origin` along unit `direction`): a triangle's area pdf converted, or a
-// sphere's cone pdf. Selection probabilities included.
-float emitterHitPdf(Hit hit, Surface s, vec3 origin, vec3 direction) {
-    float cosLight = dot(s.geometricNormal, -direction);
-    TriVerts tv = triVerts[hit.triangle];
-    if ((tv.flags & PN_TRI_SPHERE) != 0u)
-        return s.lightPmf * sphereDirectionPdf(tv.v0, tv.e1.x, origin, hit.t, cosLight);
-    return s.lightPmf / s.area * hit.t * hit.t / max(cosLight, 1e-12);
 }
 
 #endif

@@ -24,7 +24,7 @@ Surface sphereSurfaceAt(TriVerts tv, TriAttribs ta, float t, vec3 o, vec3 d) {
     s.geometricNormal = s.frontFace ? n : -n;
     s.shadingNormal = s.geometricNormal;
     s.material = ta.materialId;
-    s.lightPmf = ta.lightPmf;
+    s.lightIndex = ta.lightIndex;
     s.area = ta.area;
     s.uv = sphereUv(n);
     return s;

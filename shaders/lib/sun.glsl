@@ -2,7 +2,7 @@
 // L = E / (pi sin^2 alpha) filling a cone of half-angle alpha around the direction toward the
 // light, so that a surface facing it receives illuminance E, as from the delta light it
 // replaces. Sampled uniformly over the cone's solid angle 2 pi (1 - cos alpha).
-// Include after scene_bindings.glsl and lights.glsl.
+// Include after scene_bindings.glsl.
 #ifndef PN_SUN_GLSL
 #define PN_SUN_GLSL
 
@@ -29,13 +29,6 @@ vec3 sampleSunDisk(PunctualLight l, vec2 u) {
     vec3 axis = -l.direction, t, b;
     basisAround(axis, t, b);
     return normalize(t * (sinTheta * cos(phi)) + b * (sinTheta * sin(phi)) + axis * cosTheta);
-}
-
-// Probability that pickPunctual(p, ...) returns light `index`.
-float punctualPickPmf(uint index, vec3 p) {
-    float total = 0.0;
-    for (uint i = 0u; i < frame.punctualCount; ++i) total += punctualWeight(punctualLights[i], p);
-    return total > 0.0 ? punctualWeight(punctualLights[index], p) / total : 0.0;
 }
 
 #endif

@@ -8,7 +8,7 @@ struct Surface {
     vec3 shadingNormal;    // unit, on the same side as geometricNormal
     bool frontFace;        // the ray hit the side the winding order calls front (the emitting side)
     uint material;
-    float lightPmf;
+    uint lightIndex;  // LightRef of an emitter (PN_NO_LIGHT: none), for MIS on hits
     float area;
     vec2 uv;
 };
@@ -18,7 +18,7 @@ struct Surface {
 Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     TriVerts tv = triVerts[hit.triangle];
     TriAttribs ta = triAttribs[hit.triangle];
-    if ((tv.flags & PN_TRI_SPHERE) != 0u) return sphereSurfaceAt(tv, ta, hit.t, o, d);
+    if (PN_HAS(PN_FEATURE_SPHERES) && (tv.flags & PN_TRI_SPHERE) != 0u) return sphereSurfaceAt(tv, ta, hit.t, o, d);
     Surface s;
     s.position = o + hit.t * d;
     vec3 ng = normalize(cross(tv.e1, tv.e2));
@@ -29,7 +29,7 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     if (dot(ns, s.geometricNormal) < 0.0) ns = -ns;
     s.shadingNormal = ns;
     s.material = ta.materialId;
-    s.lightPmf = ta.lightPmf;
+    s.lightIndex = ta.lightIndex;
     s.area = ta.area;
     s.uv = interpolateUv(ta, hit.u, hit.v);
     return s;

@@ -3,9 +3,7 @@
 #ifndef PN_TEXTURES_GLSL
 #define PN_TEXTURES_GLSL
 
-float srgbToLinear(float c) {
-    return c <= 0.04045 ? c * (1.0 / 12.92) : pow((c + 0.055) * (1.0 / 1.055), 2.4);
-}
+#include "shared/color.h"
 
 int wrapTexel(int i, int size, uint mode) {
     if (mode == PN_WRAP_CLAMP) return clamp(i, 0, size - 1);
@@ -47,7 +45,7 @@ vec2 interpolateUv(TriAttribs ta, float u, float v) {
 
 // Base colour (rgb) and coverage (a) of a material at uv.
 vec4 materialBaseColor(Material m, vec2 uv) {
-    if (m.albedoTexture == PN_NO_TEXTURE) return vec4(m.albedo, 1.0);
+    if (!PN_HAS(PN_FEATURE_TEXTURES) || m.albedoTexture == PN_NO_TEXTURE) return vec4(m.albedo, 1.0);
     vec4 t = sampleTexture(m.albedoTexture, uv, m.albedoWrap);
     return vec4(m.albedo * t.rgb, t.a);
 }

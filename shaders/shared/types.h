@@ -26,7 +26,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_TRI_VERTS 1
 #define PN_BINDING_TRI_ATTRIBS 2
 #define PN_BINDING_MATERIALS 3
-#define PN_BINDING_LIGHTS 4
+#define PN_BINDING_LIGHTS 4  // LightRef per light the unified sampler can pick (top-level entries first)
 #define PN_BINDING_FRAME 5
 #define PN_BINDING_ACCUM 6
 #define PN_BINDING_COUNTERS 7
@@ -49,6 +49,21 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_DISPLAY 23       // uint per pixel: RGBA8 (r in the low byte), what the window shows
 #define PN_BINDING_ENV_TEXELS 24     // environment radiance, one vec4 (rgb, unused) per texel
 #define PN_BINDING_OVERLAY_BOXES 25  // BvhNode per box the viewer's box overlay outlines (bounds only)
+#define PN_BINDING_LIGHT_NODES 26    // LightNode per node of the light BVH (depth-first, root first)
+#define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
+
+// ---- kernel features: specialization constant 0 of the tracing kernels, a bit set. A pipeline
+// made for a scene leaves out what the scene does not use (render/kernel_features.h); the
+// shader's default, every bit, handles any scene. ----
+#define PN_FEATURE_SPHERES 1u       // analytic spheres among the primitives
+#define PN_FEATURE_ALPHA_TEST 2u    // alpha-tested triangles
+#define PN_FEATURE_TEXTURES 4u      // base colour, metallic-roughness or emission textures
+#define PN_FEATURE_NORMAL_MAPS 8u
+#define PN_FEATURE_ABSORPTION 16u   // materials with Beer absorption
+#define PN_FEATURE_TRANSMISSION 32u // glass
+#define PN_FEATURE_ENV_MAP 64u      // an environment map (else the constant background)
+#define PN_FEATURE_BRUTE_FORCE 128u // --accel brute
+#define PN_FEATURE_ALL 0xffffffffu
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic
@@ -94,9 +109,15 @@ using namespace penumbra::gpu_types;
 #define PN_LIGHT_POINT 0u
 #define PN_LIGHT_SPOT 1u
 #define PN_LIGHT_DIRECTIONAL 2u
-// Up to this many punctual lights, the one to sample is chosen by its contribution at the
-// shading point (so a torch next to the camera wins over distant lamps); beyond it, by power.
-#define PN_PUNCTUAL_SCAN_LIMIT 64u
+
+// ---- the unified light sampler (lib/light_sampler.glsl) ----
+#define PN_LIGHTREF_TRIANGLE 0u     // LightRef.index: primitive slot of an emissive triangle
+#define PN_LIGHTREF_SPHERE 1u       // LightRef.index: entry of the sphere-light table
+#define PN_LIGHTREF_PUNCTUAL 2u     // LightRef.index: entry of the punctual-light table
+#define PN_LIGHTREF_ENVIRONMENT 3u  // the environment (map or constant background)
+#define PN_NO_LIGHT 0xffffffffu     // TriAttribs.lightIndex of a primitive that is no light
+#define PN_LIGHT_TREE_MAX_DEPTH 64u // the bit trail of a light has 64 bits (two uints)
+#define PN_LIGHT_NODE_LEAF 0x80000000u  // LightNode.childOrLight: a leaf; low bits are the LightRef
 
 #define PN_NO_HIT 0xffffffffu
 
@@ -110,6 +131,22 @@ PN_STRUCT(BvhNode) {
     uint firstOrRight;  //  4
     vec3 boundsMax;     // 12
     uint triCount;      //  4
+};
+
+// A node of the BVH as the GPU walks it, 64 bytes: the bounds of both children of a BvhNode,
+// so one fetch decides where to go (Aila & Laine 2009). A child is a leaf (count > 0: primitives
+// [index, index + count) in leaf order) or an interior node (count == 0: index into this array).
+// Nodes follow the BvhNodes' depth-first order, so a first child that is interior is usually the
+// next node.
+PN_STRUCT(BvhNodePair) {
+    vec3 leftMin;
+    uint leftIndex;
+    vec3 leftMax;
+    uint leftCount;
+    vec3 rightMin;
+    uint rightIndex;
+    vec3 rightMax;
+    uint rightCount;
 };
 
 // Hot triangle data, read on every traversal step: 48 bytes. Edges are precomputed for
@@ -128,7 +165,7 @@ PN_STRUCT(TriAttribs) {
     vec3 n0;          // per-vertex shading normals
     uint materialId;
     vec3 n1;
-    float lightPmf;   // probability that light sampling picks this triangle (0: not a light)
+    uint lightIndex;  // LightRef of this emitter, or PN_NO_LIGHT
     vec3 n2;
     float area;       // world-space area, for converting light pdfs
     vec2 uv0;
@@ -179,12 +216,32 @@ PN_STRUCT(EnvAlias) {
     float pad;
 };
 
-// One entry of the alias table over emissive triangles, 16 bytes (Vose's method).
-PN_STRUCT(LightAlias) {
-    uint triangle;    // triangle index (in BVH leaf order)
-    float threshold;  // keep this entry when u < threshold, else take the alias
-    uint alias;       // index of the alias entry
-    float pmf;        // probability of this entry's triangle being chosen
+// One light the unified sampler can pick, 16 bytes. The first FrameUniforms.topLightCount
+// entries are picked directly at every shading point (infinite lights, lights that move every
+// frame); the rest are the leaves of the light BVH. The bit trail (bit d: the path took the
+// second child at depth d) lets MIS find the probability of picking a light it hit.
+PN_STRUCT(LightRef) {
+    uint type;     // PN_LIGHTREF_*
+    uint index;    // into the table of that type (see PN_LIGHTREF_*)
+    uint trailLo;  // depths 0-31
+    uint trailHi;  // depths 32-63
+};
+
+// A node of the light BVH, 64 bytes: the bounds of the lights below it (Conty & Kulla 2018,
+// pbrt-v4's LightBounds): where they are, how much they emit and in which directions.
+//   childOrLight & PN_LIGHT_NODE_LEAF: a leaf holding LightRef (childOrLight & ~LEAF)
+//   otherwise: an interior node; its first child is the next node, its second childOrLight
+PN_STRUCT(LightNode) {
+    vec3 boundsMin;
+    float phi;          // emitted power bound: radiance x area (irradiance at unit distance)
+    vec3 boundsMax;
+    float cosThetaO;    // normals (emission directions) lie within thetaO of axis
+    vec3 axis;          // unit
+    float cosThetaE;    // emission spreads at most thetaE beyond the normals (pi/2: Lambertian)
+    uint childOrLight;
+    uint twoSided;      // nonzero: emits on both sides of its normals
+    float sinThetaO;    // precomputed for the importance bound
+    float minDistance2; // half the bounds' diagonal: pbrt-v4's floor on the squared distance
 };
 
 // A point, spot or directional light, 64 bytes. Delta lights: reached only by light sampling.
@@ -196,7 +253,7 @@ PN_STRUCT(PunctualLight) {
     vec3 direction;       // unit, where the light travels (spot, directional)
     float cosOuter;       // spot: cosine of the outer cone angle
     float cosInner;       // spot: cosine of the inner cone angle
-    float selectPmf;      // share of the lights' total power (used to pick among many lights)
+    float pad2;
     float coneOneMinusCos;  // directional: 1 - cos(angular radius); 0 is a delta light (a sun
                             // disk of radiance intensity / (pi sin^2 radius) otherwise)
     float pad1;
@@ -210,16 +267,16 @@ PN_STRUCT(SphereLight) {
     vec3 center;
     float radius;
     vec3 radiance;        // leaving the sphere's outside, W/(m^2 sr) per channel
-    float selectPmf;      // probability that light sampling picks this light (by power)
+    float pad2;
     vec3 spotDirection;   // spot: unit, where the light travels
     float cosOuter;       // spot: cosine of the outer cone angle (-1 for a sphere: no cone)
     float cosInner;       // spot: cosine of the inner cone angle
-    float cdf;            // sum of selectPmf over this entry and those before it
+    float pad3;
     uint primitive;       // slot in TriVerts / TriAttribs, or PN_NO_HIT for a spot light
     uint pad0;
 };
 
-// Per-frame constants (uniform buffer), 160 bytes.
+// Per-frame constants (uniform buffer), 176 bytes.
 PN_STRUCT(FrameUniforms) {
     vec3 cameraPosition;
     float tanHalfFovY;
@@ -231,7 +288,7 @@ PN_STRUCT(FrameUniforms) {
     uint height;
     uint maxBounces;     // path segments after the camera ray (pbrt's maxdepth)
     uint rouletteStart;  // bounce from which Russian roulette may end paths
-    uint lightCount;     // entries in the alias table
+    uint lightNodeCount; // nodes of the light BVH (0: no bounded lights)
     uint triCount;       // primitive slots: triangles and spheres (PN_TRI_SPHERE)
     uint nodeCount;
     uint accel;          // PN_ACCEL_*
@@ -254,6 +311,11 @@ PN_STRUCT(FrameUniforms) {
     uint debugMode;        // viewer debug views; 0: the image
     uint pad0;
     uint pad1;
+    // The unified light sampler.
+    uint topLightCount;    // LightRef entries picked directly at every shading point
+    float envLuminance;    // mean luminance of the environment over directions (intensity 1)
+    uint lightRefCount;    // LightRef entries in all
+    uint lightPickUniform; // nonzero: pick every light with the same probability (a test oracle)
 };
 
 // ---- viewer passes (temporal.comp, atrous.comp, tonemap.comp, gbuffer.comp, heatmap.comp) ----
@@ -271,6 +333,10 @@ PN_STRUCT(FrameUniforms) {
 #define PN_MAX_OVERLAY_BOXES 4096u  // boxes the overlay draws at most (each pixel tests every one)
 #define PN_OVERLAY_COLOR 0xff00ffffu  // RGBA8 of an outlined pixel: opaque yellow
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
+// The denoiser's per-pixel guide, written by temporal.comp: x = the shading normal, octahedral,
+// packSnorm2x16; y = the linear depth's float bits (0: the primary ray missed). 8 bytes instead of
+// a 48-byte GBufferTexel per tap keeps the 25-tap filter in cache.
+#define PN_DENOISE_GUIDE_BYTES 8u
 
 // What the primary ray saw at a pixel's centre, 48 bytes.
 PN_STRUCT(GBufferTexel) {
@@ -398,10 +464,13 @@ PN_STRUCT(BsdfTestResult) {
 // Layout checks: every offset the shader relies on. A failure here means a field moved.
 static_assert(sizeof(BvhNode) == 32 && offsetof(BvhNode, firstOrRight) == 12 &&
               offsetof(BvhNode, boundsMax) == 16 && offsetof(BvhNode, triCount) == 28);
+static_assert(sizeof(BvhNodePair) == 64 && offsetof(BvhNodePair, leftIndex) == 12 &&
+              offsetof(BvhNodePair, leftCount) == 28 && offsetof(BvhNodePair, rightMin) == 32 &&
+              offsetof(BvhNodePair, rightIndex) == 44 && offsetof(BvhNodePair, rightCount) == 60);
 static_assert(sizeof(TriVerts) == 48 && offsetof(TriVerts, flags) == 12 && offsetof(TriVerts, e1) == 16 &&
               offsetof(TriVerts, e2) == 32);
 static_assert(sizeof(TriAttribs) == 80 && offsetof(TriAttribs, materialId) == 12 &&
-              offsetof(TriAttribs, n1) == 16 && offsetof(TriAttribs, lightPmf) == 28 &&
+              offsetof(TriAttribs, n1) == 16 && offsetof(TriAttribs, lightIndex) == 28 &&
               offsetof(TriAttribs, n2) == 32 && offsetof(TriAttribs, area) == 44 &&
               offsetof(TriAttribs, uv0) == 48 && offsetof(TriAttribs, uv2) == 64);
 static_assert(sizeof(Material) == 96 && offsetof(Material, flags) == 12 &&
@@ -413,9 +482,15 @@ static_assert(sizeof(Material) == 96 && offsetof(Material, flags) == 12 &&
               offsetof(Material, metallicRoughnessTexture) == 72 && offsetof(Material, normalTexture) == 80 &&
               offsetof(Material, emissionTexture) == 88 && offsetof(Material, emissionWrap) == 92);
 static_assert(sizeof(TextureInfo) == 16 && offsetof(TextureInfo, flags) == 12);
-static_assert(sizeof(LightAlias) == 16 && offsetof(LightAlias, pmf) == 12);
+static_assert(sizeof(LightRef) == 16 && offsetof(LightRef, index) == 4 && offsetof(LightRef, trailHi) == 12);
+static_assert(sizeof(LightNode) == 64 && offsetof(LightNode, phi) == 12 && offsetof(LightNode, boundsMax) == 16 &&
+              offsetof(LightNode, cosThetaO) == 28 && offsetof(LightNode, axis) == 32 &&
+              offsetof(LightNode, cosThetaE) == 44 && offsetof(LightNode, childOrLight) == 48 &&
+              offsetof(LightNode, twoSided) == 52 && offsetof(LightNode, sinThetaO) == 56 &&
+              offsetof(LightNode, minDistance2) == 60);
 static_assert(sizeof(EnvAlias) == 16 && offsetof(EnvAlias, alias) == 4 && offsetof(EnvAlias, pdf) == 8);
-static_assert(sizeof(FrameUniforms) == 160 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
+static_assert(sizeof(FrameUniforms) == 176 && offsetof(FrameUniforms, topLightCount) == 160 &&
+              offsetof(FrameUniforms, envLuminance) == 164 && offsetof(FrameUniforms, lightPickUniform) == 172 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
               offsetof(FrameUniforms, cameraRight) == 16 && offsetof(FrameUniforms, aspect) == 28 &&
               offsetof(FrameUniforms, cameraUp) == 32 && offsetof(FrameUniforms, width) == 44 &&
               offsetof(FrameUniforms, cameraForward) == 48 && offsetof(FrameUniforms, height) == 60 &&
@@ -426,12 +501,12 @@ static_assert(sizeof(FrameUniforms) == 160 && offsetof(FrameUniforms, tanHalfFov
               offsetof(FrameUniforms, misMode) == 144 && offsetof(FrameUniforms, debugMode) == 148);
 static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, type) == 12 &&
               offsetof(PunctualLight, range) == 28 && offsetof(PunctualLight, direction) == 32 &&
-              offsetof(PunctualLight, cosOuter) == 44 && offsetof(PunctualLight, selectPmf) == 52 &&
+              offsetof(PunctualLight, cosOuter) == 44 &&
               offsetof(PunctualLight, coneOneMinusCos) == 56);
 static_assert(sizeof(SphereLight) == 64 && offsetof(SphereLight, radius) == 12 &&
-              offsetof(SphereLight, radiance) == 16 && offsetof(SphereLight, selectPmf) == 28 &&
+              offsetof(SphereLight, radiance) == 16 &&
               offsetof(SphereLight, spotDirection) == 32 && offsetof(SphereLight, cosOuter) == 44 &&
-              offsetof(SphereLight, cosInner) == 48 && offsetof(SphereLight, cdf) == 52 &&
+              offsetof(SphereLight, cosInner) == 48 &&
               offsetof(SphereLight, primitive) == 56);
 static_assert(sizeof(PassPush) == 16 && offsetof(PassPush, countRays) == 12);
 static_assert(sizeof(RayCounters) == 16);

@@ -17,6 +17,7 @@ layout(local_size_x = PN_LINEAR_GROUP) in;
 #include "lib/bvh.glsl"
 #include "lib/lights.glsl"
 #include "lib/environment.glsl"
+#include "lib/sun.glsl"
 
 layout(std430, set = 0, binding = PN_BINDING_SCRATCH) readonly buffer InBuffer { vec4 directions[]; };
 layout(std430, set = 0, binding = PN_BINDING_SCRATCH2) writeonly buffer OutBuffer { vec4 results[]; };

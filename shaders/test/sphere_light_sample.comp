@@ -1,6 +1,6 @@
 #version 460
-// Test kernel: draws sphere-light samples (lib/sphere_lights.glsl) from given shading points,
-// for the chi-square and geometry tests of the sampler.
+// Test kernel: draws samples of the scene's first sphere light (lib/sphere_lights.glsl) from given
+// shading points, for the chi-square and geometry tests of the sampler.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/types.h"
@@ -23,7 +23,7 @@ void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= push.itemCount) return;
     uint rng = rngSeed(i, 0u, frame.seed);
-    SphereLightSample ls = sampleSphereLight(points[i / push.mode].origin, rng);
+    SphereLightSample ls = sampleSphereLight(sphereLights[0], points[i / push.mode].origin, rngNext2(rng));
     samples[2u * i] = vec4(ls.wi, ls.pdf);
-    samples[2u * i + 1u] = vec4(ls.position, dot(ls.radiance, vec3(0.2126, 0.7152, 0.0722)));
+    samples[2u * i + 1u] = vec4(ls.position, luminance(ls.radiance));
 }

@@ -1,10 +1,13 @@
 // penumbra bench [SCENE]: BVH build time, rays per second by kind, and one frame's GPU time.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
 #include "app/commands.h"
 #include "app/common_options.h"
+#include "image/write.h"
 #include "render/ray_bench.h"
+#include "render/viewer_bench.h"
 
 namespace penumbra::app {
 namespace {
@@ -18,11 +21,121 @@ struct BenchArgs {
     int repeats = 20;
     bool json = false;
     EnvironmentSpec env;
+    CameraOverrides camera;
+    // --viewer: the viewer's whole frame
+    bool viewer = false;
+    std::uint32_t spp = 1, denoise = 5, rouletteStart = 3;
+    bool noTemporal = false;
+    std::string motion = "static";
+    int frames = 200;
+    int warmupFrames = 30;
+    double warmupSeconds = 1.5;
+    std::string reference;
+    double budgetMs = 100;
 };
 
 double mrays(std::uint64_t rays, double ms) { return ms > 0 ? double(rays) / (ms * 1e3) : 0.0; }
 
+// A JSON string's contents: quotes, backslashes and control characters escaped.
+std::string jsonEscape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+        out += c;
+    }
+    return out;
+}
+
+void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Context& ctx, const ViewerBenchOptions& o,
+                     const ViewerBenchResult& r) {
+    std::printf("{\n  \"scene\": \"%s\",\n  \"device\": \"%s\",\n  \"width\": %u,\n  \"height\": %u,\n"
+                "  \"spp\": %u,\n  \"bounces\": %u,\n  \"temporal\": %s,\n  \"denoise_passes\": %u,\n"
+                "  \"camera_motion\": \"%s\",\n  \"frames\": %d,\n  \"viewer_frame_ms\": %.4f,\n  \"passes\": {",
+                jsonEscape(scene.name).c_str(), jsonEscape(ctx.info().name).c_str(), o.width, o.height, o.view.samplesPerFrame,
+                o.view.maxBounces, o.view.temporal ? "true" : "false", o.view.denoise ? o.view.denoiseIterations : 0,
+                cameraMotionName(o.motion), r.frames, r.frameMs);
+    const char* sep = "";
+    for (const auto& [name, ms] : r.passMs) {
+        std::printf("%s\n    \"%s\": %.4f", sep, name.c_str(), ms);
+        sep = ",";
+    }
+    std::printf("\n  },\n  \"rays_per_pixel_per_sample\": %.3f,\n  \"trace_mrays_per_s\": %.1f", r.raysPerPixelPerSample,
+                r.mraysPerSecond);
+    std::printf(",\n  \"kernel_features\": \"%s\",\n  \"trace_pipeline\": {", r.kernelFeatures.c_str());
+    sep = "";
+    for (const gpu::PipelineStatistic& s : r.traceStatistics) {
+        std::printf("%s\n    \"%s\": \"%s\"", sep, jsonEscape(s.executable + ": " + s.name).c_str(), jsonEscape(s.value).c_str());
+        sep = ",";
+    }
+    std::printf("\n  }");
+    if (r.relMseRaw)
+        std::printf(",\n  \"budget_ms\": %.2f,\n  \"budget_frames\": %d,\n  \"rel_mse_raw\": %.6g", args.budgetMs,
+                    r.budgetFrames, *r.relMseRaw);
+    if (r.relMseDenoised) std::printf(",\n  \"rel_mse_denoised\": %.6g", *r.relMseDenoised);
+    std::printf("\n}\n");
+}
+
+void printViewerText(const Scene& scene, const gpu::Context& ctx, const ViewerBenchOptions& o,
+                     const ViewerBenchResult& r) {
+    std::printf("%s on %s, viewer frame %ux%u, %u spp, %u bounces, temporal %s, %u denoise passes, camera %s; "
+                "medians of %d frames\n",
+                scene.name.c_str(), ctx.info().name.c_str(), o.width, o.height, o.view.samplesPerFrame,
+                o.view.maxBounces, o.view.temporal ? "on" : "off", o.view.denoise ? o.view.denoiseIterations : 0,
+                cameraMotionName(o.motion), r.frames);
+    std::printf("  whole frame      %10.3f ms\n", r.frameMs);
+    for (const auto& [name, ms] : r.passMs) std::printf("  %-16s %10.3f ms\n", name.c_str(), ms);
+    std::printf("  rays per pixel per sample %.2f, trace %.1f Mrays/s\n", r.raysPerPixelPerSample, r.mraysPerSecond);
+    std::printf("  kernel specialised for: %s\n", r.kernelFeatures.c_str());
+    for (const gpu::PipelineStatistic& s : r.traceStatistics)
+        std::printf("  trace pipeline, %s: %s = %s\n", s.executable.c_str(), s.name.c_str(), s.value.c_str());
+    if (r.relMseRaw)
+        std::printf("  equal-time error over %d frames: relMSE raw %.5g", r.budgetFrames, *r.relMseRaw);
+    if (r.relMseDenoised) std::printf(", denoised %.5g", *r.relMseDenoised);
+    if (r.relMseRaw) std::printf("\n");
+}
+
+void runViewerBenchCommand(const BenchArgs& args) {
+    ViewerBenchOptions o;
+    o.width = args.width;
+    o.height = args.height;
+    o.view.samplesPerFrame = args.spp;
+    o.view.maxBounces = args.bounces;
+    o.view.rouletteStart = args.rouletteStart;
+    o.view.temporal = !args.noTemporal;
+    o.view.denoise = args.denoise > 0;
+    o.view.denoiseIterations = std::max(args.denoise, 1u);
+    o.motion = parseCameraMotion(args.motion);
+    o.frames = args.frames;
+    o.warmupSeconds = args.warmupSeconds;
+    o.warmupFrames = args.warmupFrames;
+    if (args.warmupFrames < 0 || args.warmupFrames > 100000) throw UsageError("--warmup-frames must be within [0, 100000]");
+    if (args.spp < 1 || args.spp > 64) throw UsageError("--spp must be between 1 and 64 for --viewer");
+    if (args.denoise > 5) throw UsageError("--denoise must be between 0 (off) and 5 passes");
+    if (!(args.warmupSeconds >= 0 && args.warmupSeconds <= 60)) throw UsageError("--warmup-seconds must be within [0, 60]");
+    if (!args.reference.empty()) {
+        if (!(args.budgetMs > 0 && args.budgetMs <= 1e6)) throw UsageError("--budget-ms must be within (0, 1e6]");
+        o.reference = readExr(args.reference);
+        o.budgetMs = args.budgetMs;
+    }
+    Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env);
+    const bool torch = scene.torch.enabled && scene.torch.intensity > 0;
+    o.view.torch = torch;
+    o.view.torchColor = scene.torch.color;
+    o.view.torchIntensity = scene.torch.intensity;
+    o.view.torchRange = scene.torch.range;
+    if (scene.camera.apertureRadius > 0) {
+        o.view.apertureRadius = scene.camera.apertureRadius;
+        o.view.focusDistance = scene.camera.focusDistance;
+    }
+    auto ctx = openDevice(args.device);
+    const ViewerBenchResult r = runViewerBench(*ctx, scene, torch, o);
+    if (args.json) printViewerJson(args, scene, *ctx, o, r);
+    else printViewerText(scene, *ctx, o, r);
+}
+
 void runBench(const BenchArgs& args) {
+    if (args.viewer) return runViewerBenchCommand(args);
     if (args.repeats < 1 || args.repeats > 10000) throw UsageError("--repeats must be between 1 and 10000");
     RenderSettings settings;
     settings.width = args.width;
@@ -31,7 +144,7 @@ void runBench(const BenchArgs& args) {
     settings.samplesPerPixel = 1;
     settings.accel = parseAccel(args.accel);
     validateSettings(settings);
-    Scene scene = loadScene(args.scene, args.map, {}, nullptr, args.env);
+    Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env);
     auto ctx = openDevice(args.device);
     Renderer renderer(*ctx, scene, settings);
     RayBenchResult r = runRayBench(*ctx, renderer, args.repeats);
@@ -77,8 +190,22 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--repeats", args->repeats, "timed runs per figure; medians are reported (default 20)");
     cmd->add_option("--accel", args->accel, "bvh or brute");
     cmd->add_flag("--json", args->json, "print one JSON object instead of text");
+    cmd->add_flag("--viewer", args->viewer,
+                  "time the viewer's whole frame (trace, G-buffer, temporal, denoise, tonemap) instead of ray kernels");
+    cmd->add_option("--spp", args->spp, "--viewer: samples per pixel per frame (default 1)");
+    cmd->add_option("--denoise", args->denoise, "--viewer: a-trous denoiser passes, 0 turns it off (default 5)");
+    cmd->add_flag("--no-temporal", args->noTemporal, "--viewer: no temporal accumulation");
+    cmd->add_option("--roulette-start", args->rouletteStart, "--viewer: bounce from which Russian roulette may end paths (default 3)");
+    cmd->add_option("--camera-motion", args->motion, "--viewer: static, orbit or walk (default static)");
+    cmd->add_option("--frames", args->frames, "--viewer: timed frames (default 200)");
+    cmd->add_option("--warmup-frames", args->warmupFrames, "--viewer: untimed frames first, at least (default 30)");
+    cmd->add_option("--warmup-seconds", args->warmupSeconds, "--viewer: untimed warm-up time, at least (default 1.5)");
+    cmd->add_option("--reference", args->reference,
+                    "--viewer: a converged EXR of the same view and size; reports the error after --budget-ms of frames");
+    cmd->add_option("--budget-ms", args->budgetMs, "--viewer: GPU time budget of the equal-time error (default 100)");
     addDeviceOption(*cmd, args->device);
     addEnvironmentOptions(*cmd, args->env);
+    addCameraOptions(*cmd, args->camera);
     cmd->callback([args, &action] { action = [args] { runBench(*args); }; });
 }
 

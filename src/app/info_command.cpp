@@ -26,12 +26,11 @@ void printScene(const std::string& name, const std::string& map, const Environme
     SceneArrays arrays = buildSceneArrays(scene);
     const bvh::BvhStats& s = arrays.stats;
     const std::size_t tris = arrays.triVerts.size();
-    const std::size_t gpuBytes = arrays.nodes.size() * sizeof(shader::BvhNode) + tris * (sizeof(shader::TriVerts) + sizeof(shader::TriAttribs)) +
-                                 arrays.materials.size() * sizeof(shader::Material) + arrays.lights.size() * sizeof(shader::LightAlias) +
-                                 arrays.textures.size() * sizeof(shader::TextureInfo) + arrays.texels.size() * 4 +
-                                 arrays.env.alias.size() * (sizeof(shader::EnvAlias) + sizeof(Vec4));
-    std::printf("scene %s: %zu triangles, %zu materials, %zu emissive triangles, loaded in %.0f ms\n",
-                scene.name.c_str(), tris, scene.materials.size(), arrays.lights.size(), loadMs);
+    const std::size_t gpuBytes = deviceBytes(arrays);
+    std::printf("scene %s: %zu triangles, %zu materials, %zu lights (%u sampled one by one, the rest in a light BVH "
+                "of %zu nodes), loaded in %.0f ms\n",
+                scene.name.c_str(), tris, scene.materials.size(), arrays.lightRefs.size(), arrays.topLightCount,
+                arrays.lightNodes.size() - arrays.topLightCount, loadMs);
     std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, built in %.2f ms\n", s.nodes,
                 s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.buildMilliseconds);
     std::printf("  %zu textures, %zu punctual lights, %u spheres (in the triangle count), %zu sphere lights\n",

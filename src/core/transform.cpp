@@ -10,11 +10,14 @@ float Affine::determinant() const {
 }
 
 Vec3 Affine::normal(Vec3 n) const {
-    // The cofactor matrix is det * inverse transpose; its scale does not matter after normalising,
-    // but its sign does, so multiply by the determinant's sign.
+    // The cofactor matrix C is det * inverse transpose; its scale does not matter after
+    // normalising, but its sign does, so multiply by the determinant's sign. Its rows are the
+    // cross products of the rows of the linear part, so C n is their dot products with n (not a
+    // sum of rows weighted by n's components: that would be C^T n, the inverse without the
+    // transpose, which turns normals the wrong way under a rotation).
     Vec3 r0{m[0][0], m[0][1], m[0][2]}, r1{m[1][0], m[1][1], m[1][2]}, r2{m[2][0], m[2][1], m[2][2]};
     Vec3 c0 = cross(r1, r2), c1 = cross(r2, r0), c2 = cross(r0, r1);
-    Vec3 out = c0 * n.x + c1 * n.y + c2 * n.z;
+    Vec3 out{dot(c0, n), dot(c1, n), dot(c2, n)};
     return normalize(determinant() < 0 ? -out : out);
 }
 

@@ -126,6 +126,15 @@ Enumeration physicalDevices(VkInstance instance) {
     return {devices, {}};
 }
 
+bool hasDeviceExtension(VkPhysicalDevice device, const char* name) {
+    std::uint32_t count = 0;
+    PN_VK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
+    std::vector<VkExtensionProperties> extensions(count);
+    PN_VK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data()));
+    return std::any_of(extensions.begin(), extensions.end(),
+                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
 std::string deviceList(const std::vector<DeviceInfo>& infos) {
     std::string list;
     for (const DeviceInfo& d : infos) list += (list.empty() ? "" : ", ") + std::to_string(d.index) + " " + d.name;
@@ -272,6 +281,20 @@ ContextResult Context::create(const ContextOptions& options) {
     vkGetPhysicalDeviceFeatures2(ctx->physical_, &supported);
     features12.hostQueryReset = supported12.hostQueryReset;
     if (!supported12.hostQueryReset) ctx->timestampBits_ = 0;
+
+    // Registers and spills per pipeline, where the driver can tell (asked for, never required).
+    VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR executableFeatures{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
+    if (hasDeviceExtension(ctx->physical_, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME)) {
+        VkPhysicalDeviceFeatures2 query{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &executableFeatures};
+        vkGetPhysicalDeviceFeatures2(ctx->physical_, &query);
+        if (executableFeatures.pipelineExecutableInfo) {
+            deviceExtensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
+            executableFeatures.pNext = features.pNext;
+            features.pNext = &executableFeatures;
+            ctx->pipelineStatistics_ = true;
+        }
+    }
 
     VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
     deviceInfo.queueCreateInfoCount = 1;

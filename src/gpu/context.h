@@ -81,6 +81,9 @@ public:
     // Finds a memory type with all `required` flags among those allowed by `typeBits`.
     std::uint32_t findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags required) const;
 
+    // VK_KHR_pipeline_executable_properties is on: pipelines can report registers and spills.
+    bool pipelineStatisticsSupported() const { return pipelineStatistics_; }
+
     bool validationEnabled() const { return messenger_ != nullptr; }
     // Messages the validation layer reported so far (tests fail if any).
     std::vector<std::string> validationMessages() const { return log_->messages(); }
@@ -100,6 +103,7 @@ private:
     VkQueue queue_ = VK_NULL_HANDLE;
     std::uint32_t queueFamily_ = 0;
     std::uint32_t timestampBits_ = 0;
+    bool pipelineStatistics_ = false;
     DeviceInfo info_;
     VkPhysicalDeviceMemoryProperties memory_{};
 };

@@ -7,7 +7,8 @@
 namespace penumbra::gpu {
 
 ComputePipeline::ComputePipeline(const Context& ctx, std::string shaderName,
-                                 std::span<const BindingSpec> bindings, std::uint32_t pushConstantBytes)
+                                 std::span<const BindingSpec> bindings, std::uint32_t pushConstantBytes,
+                                 std::span<const std::uint32_t> specialization)
     : ctx_(ctx), name_(std::move(shaderName)), bindings_(bindings.begin(), bindings.end()),
       pushBytes_(pushConstantBytes) {
     VkDevice device = ctx.device();
@@ -43,11 +44,18 @@ ComputePipeline::ComputePipeline(const Context& ctx, std::string shaderName,
     PN_VK(vkCreateShaderModule(device, &moduleInfo, nullptr, &module));
     ShaderModule moduleOwner(device, module);
 
+    std::vector<VkSpecializationMapEntry> entries;
+    for (std::uint32_t i = 0; i < specialization.size(); ++i)
+        entries.push_back({i, i * std::uint32_t(sizeof(std::uint32_t)), sizeof(std::uint32_t)});
+    VkSpecializationInfo specInfo{static_cast<std::uint32_t>(entries.size()), entries.data(),
+                                  specialization.size_bytes(), specialization.data()};
     VkComputePipelineCreateInfo pipeInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    if (ctx.pipelineStatisticsSupported()) pipeInfo.flags |= VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR;
     pipeInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     pipeInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipeInfo.stage.module = module;
     pipeInfo.stage.pName = "main";
+    pipeInfo.stage.pSpecializationInfo = specialization.empty() ? nullptr : &specInfo;
     pipeInfo.layout = layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
     PN_VK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipeInfo, nullptr, &pipeline));
@@ -69,6 +77,48 @@ ComputePipeline::ComputePipeline(const Context& ctx, std::string shaderName,
     alloc.descriptorSetCount = 1;
     alloc.pSetLayouts = &setLayout;
     PN_VK(vkAllocateDescriptorSets(device, &alloc, &set_));
+}
+
+namespace {
+
+std::string formatStatistic(const VkPipelineExecutableStatisticKHR& s) {
+    switch (s.format) {
+        case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_BOOL32_KHR: return s.value.b32 ? "true" : "false";
+        case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_INT64_KHR: return std::to_string(s.value.i64);
+        case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_UINT64_KHR: return std::to_string(s.value.u64);
+        case VK_PIPELINE_EXECUTABLE_STATISTIC_FORMAT_FLOAT64_KHR: return std::to_string(s.value.f64);
+        default: return "?";
+    }
+}
+
+}  // namespace
+
+std::vector<PipelineStatistic> ComputePipeline::statistics() const {
+    std::vector<PipelineStatistic> out;
+    if (!ctx_.pipelineStatisticsSupported()) return out;
+    VkDevice device = ctx_.device();
+    auto getProperties = reinterpret_cast<PFN_vkGetPipelineExecutablePropertiesKHR>(
+        vkGetDeviceProcAddr(device, "vkGetPipelineExecutablePropertiesKHR"));
+    auto getStatistics = reinterpret_cast<PFN_vkGetPipelineExecutableStatisticsKHR>(
+        vkGetDeviceProcAddr(device, "vkGetPipelineExecutableStatisticsKHR"));
+    if (!getProperties || !getStatistics) return out;
+    VkPipelineInfoKHR info{VK_STRUCTURE_TYPE_PIPELINE_INFO_KHR};
+    info.pipeline = pipeline_.get();
+    std::uint32_t count = 0;
+    PN_VK(getProperties(device, &info, &count, nullptr));
+    std::vector<VkPipelineExecutablePropertiesKHR> executables(count, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR});
+    PN_VK(getProperties(device, &info, &count, executables.data()));
+    for (std::uint32_t e = 0; e < count; ++e) {
+        VkPipelineExecutableInfoKHR exec{VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INFO_KHR};
+        exec.pipeline = pipeline_.get();
+        exec.executableIndex = e;
+        std::uint32_t n = 0;
+        PN_VK(getStatistics(device, &exec, &n, nullptr));
+        std::vector<VkPipelineExecutableStatisticKHR> stats(n, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_STATISTIC_KHR});
+        PN_VK(getStatistics(device, &exec, &n, stats.data()));
+        for (const auto& s : stats) out.push_back({executables[e].name, s.name, formatStatistic(s)});
+    }
+    return out;
 }
 
 void ComputePipeline::bind(std::uint32_t binding, const Buffer& buffer) {

@@ -15,10 +15,24 @@ struct BindingSpec {
     VkDescriptorType type;  // VK_DESCRIPTOR_TYPE_STORAGE_BUFFER or _UNIFORM_BUFFER
 };
 
+// One statistic the driver reports for a compiled pipeline (VK_KHR_pipeline_executable_properties):
+// registers, spills, shared memory... Names and meanings are the driver's.
+struct PipelineStatistic {
+    std::string executable;  // the driver's name for the compiled stage
+    std::string name;
+    std::string value;       // formatted number
+};
+
 class ComputePipeline {
 public:
+    // specialization: the values of specialization constants 0, 1, 2, ... (uint32 each); empty
+    // keeps the shader's defaults.
     ComputePipeline(const Context& ctx, std::string shaderName, std::span<const BindingSpec> bindings,
-                    std::uint32_t pushConstantBytes);
+                    std::uint32_t pushConstantBytes, std::span<const std::uint32_t> specialization = {});
+
+    // What the driver says about the compiled pipeline; empty when it cannot say
+    // (Context::pipelineStatisticsSupported).
+    std::vector<PipelineStatistic> statistics() const;
 
     // Points `binding` at `buffer`. Call between submissions, not while a dispatch is in flight.
     void bind(std::uint32_t binding, const Buffer& buffer);

@@ -5,7 +5,7 @@
 namespace penumbra {
 
 shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, const RenderSettings& settings,
-                                        std::uint32_t lightCount, std::uint32_t triCount,
+                                        std::uint32_t lightNodeCount, std::uint32_t triCount,
                                         std::uint32_t nodeCount) {
     validateCamera(camera);
     shader::FrameUniforms f{};
@@ -23,7 +23,7 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.height = settings.height;
     f.maxBounces = settings.maxBounces;
     f.rouletteStart = settings.rouletteStart;
-    f.lightCount = lightCount;
+    f.lightNodeCount = lightNodeCount;
     f.triCount = triCount;
     f.nodeCount = nodeCount;
     f.accel = settings.accel == Accel::Brute ? PN_ACCEL_BRUTE : PN_ACCEL_BVH;
@@ -37,6 +37,7 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.envWidth = 0;
     f.envHeight = 0;
     f.envIntensity = 1.0f;
+    f.lightPickUniform = settings.uniformLightPick ? 1u : 0u;
     f.misMode = settings.mis == MisMode::LightOnly  ? PN_MIS_LIGHT_ONLY
                 : settings.mis == MisMode::BsdfOnly ? PN_MIS_BSDF_ONLY
                                                     : PN_MIS_BOTH;
@@ -46,7 +47,10 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
 shader::FrameUniforms makeSceneFrameUniforms(const Camera& camera, Vec3 background, const Environment& env,
                                              const RenderSettings& settings, const GpuScene& scene) {
     shader::FrameUniforms f =
-        makeFrameUniforms(camera, background, settings, scene.lightCount, scene.triCount, scene.nodeCount);
+        makeFrameUniforms(camera, background, settings, scene.lightNodeCount, scene.triCount, scene.nodeCount);
+    f.topLightCount = scene.topLightCount;
+    f.envLuminance = scene.envLuminance;
+    f.lightRefCount = scene.lightRefCount;
     f.punctualCount = scene.punctualCount;
     f.sphereCount = scene.sphereCount;
     f.sphereLightCount = scene.sphereLightCount;

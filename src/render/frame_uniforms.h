@@ -10,7 +10,7 @@ namespace penumbra {
 
 // background: radiance of rays that leave the scene (Scene::background).
 shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, const RenderSettings& settings,
-                                        std::uint32_t lightCount, std::uint32_t triCount,
+                                        std::uint32_t lightNodeCount, std::uint32_t triCount,
                                         std::uint32_t nodeCount);
 
 // The environment's fields: map size (0: the constant background), intensity, rotation.

@@ -6,10 +6,12 @@
 #include <cstring>
 #include <numeric>
 
+#include "bvh/node_pairs.h"
 #include "bvh/sphere.h"
 #include "bvh/triangle.h"
 #include "core/error.h"
-#include "render/light_table.h"
+#include "render/env_table.h"
+#include "render/light_list.h"
 #include "render/scene_objects.h"
 #include "render/sphere_lights.h"
 #include "scene/environment.h"
@@ -64,12 +66,9 @@ shader::Material toGpuMaterial(const Material& m) {
 
 namespace {
 
-// Converts the scene's punctual lights, with each one's share of their total power (what picks
-// among them when there are too many to weigh at every shading point).
-void addPunctualLights(const Scene& scene, std::vector<shader::PunctualLight>& out) {
-    const Aabb box = scene.bounds();
-    const double sceneRadius = box.empty() ? 1.0 : 0.5 * length(box.extent());
-    std::vector<double> power;
+// Converts the scene's punctual lights (those without power are left out); moves[i] says whether
+// out[i] moves every frame.
+void addPunctualLights(const Scene& scene, std::vector<shader::PunctualLight>& out, std::vector<bool>& moves) {
     // The environment's sun first, so the scene's own last light (the viewer's torch) stays last.
     std::vector<Light> lights = distantLights(scene.environment);
     lights.insert(lights.end(), scene.lights.begin(), scene.lights.end());
@@ -86,18 +85,41 @@ void addPunctualLights(const Scene& scene, std::vector<shader::PunctualLight>& o
         // 1 - cos, written so that a tiny radius (the sun's 0.0047 rad) keeps its precision.
         const double halfSin = std::sin(0.5 * double(l.angularRadius));
         if (l.type == LightType::Directional) p.coneOneMinusCos = float(2 * halfSin * halfSin);
-        const double lum = luminance(p.intensity);
-        // Point: 4 pi I. Spot: the cone's solid angle. Directional: irradiance over the scene's
-        // cross-section.
-        double w = l.type == LightType::Point ? 4 * 3.14159265358979 * lum
-                   : l.type == LightType::Spot ? 2 * 3.14159265358979 * (1 - p.cosOuter) * lum
-                                               : 3.14159265358979 * sceneRadius * sceneRadius * lum;
-        if (!(w > 0) || !isFinite(p.position) || !isFinite(p.intensity)) continue;
+        if (!(luminance(p.intensity) > 0) || !isFinite(p.position) || !isFinite(p.intensity)) continue;
         out.push_back(p);
-        power.push_back(w);
+        moves.push_back(l.moves);
     }
-    const double total = std::accumulate(power.begin(), power.end(), 0.0);
-    for (std::size_t i = 0; i < out.size(); ++i) out[i].selectPmf = float(power[i] / total);
+}
+
+// Mean luminance of the environment over the sphere of directions (intensity 1): the map's,
+// weighted by each texel's solid angle, or the constant background's.
+float environmentLuminance(const Scene& scene) {
+    if (!scene.environment.map) return luminance(scene.background);
+    const EnvironmentMap& map = *scene.environment.map;
+    double sum = 0;
+    for (int y = 0; y < map.height; ++y) {
+        const double solidAngle = envTexelSolidAngle(std::uint32_t(y), std::uint32_t(map.width), std::uint32_t(map.height));
+        for (int x = 0; x < map.width; ++x) sum += luminance(map.radiance[std::size_t(y) * map.width + x]) * solidAngle;
+    }
+    return float(sum / (4 * 3.14159265358979));
+}
+
+// Every light, for the unified sampler; sets TriAttribs::lightIndex of emissive primitives.
+void addLightList(const Scene& scene, std::span<const EmissiveTriangle> emissive,
+                  const std::vector<bool>& punctualMoves, SceneArrays& out) {
+    LightListInput in;
+    in.triangles.assign(emissive.begin(), emissive.end());
+    in.spheres = out.sphereLights;
+    in.punctual = out.punctual;
+    in.punctualMoves = punctualMoves;
+    out.envLuminance = environmentLuminance(scene);
+    in.environment = scene.environment.sampled && scene.environment.intensity > 0 && out.envLuminance > 0;
+    LightList list = buildLightList(in);
+    for (shader::TriAttribs& a : out.triAttribs) a.lightIndex = PN_NO_LIGHT;
+    for (auto [slot, ref] : list.primitiveLights) out.triAttribs[slot].lightIndex = ref;
+    out.lightRefs = std::move(list.refs);
+    out.lightNodes = std::move(list.nodes);
+    out.topLightCount = list.topCount;
 }
 
 }  // namespace
@@ -130,6 +152,7 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
     out.buildMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     out.stats = bvh::computeStats(tree, options);
     out.nodes = std::move(tree.nodes);
+    out.nodePairs = bvh::toNodePairs(out.nodes);
 
     out.triVerts.resize(primCount);
     out.triAttribs.resize(primCount);
@@ -138,8 +161,8 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
     triangleMesh.reserve(tris.size());
     for (std::size_t m = 0; m < scene.meshes.size(); ++m)
         triangleMesh.insert(triangleMesh.end(), scene.meshes[m].triangleCount(), std::uint32_t(m));
-    std::vector<std::uint32_t> emissive;
-    std::vector<double> power;
+    std::vector<float> textureLuminance(scene.textures.size(), -1.0f);  // emission textures' means, on demand
+    std::vector<EmissiveTriangle> emissive;
     std::vector<std::uint32_t> sphereSlots(spheres.spheres.size());
     for (std::size_t i = 0; i < tree.primOrder.size(); ++i) {
         if (tree.primOrder[i] >= tris.size()) {
@@ -169,18 +192,20 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
         a.area = 0.5f * length(cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
         const Material& m = scene.materials[t.material];
         if (m.isEmissive() && a.area > 0) {
-            emissive.push_back(static_cast<std::uint32_t>(i));
-            // Power up to a constant factor (pi): what NEE should be proportional to.
-            power.push_back(double(luminance(m.emission)) * a.area);
+            // Emission textures scale the light by their mean: the tree's power estimate.
+            float texture = 1.0f;
+            if (m.emissionTexture.present()) {
+                float& mean = textureLuminance[std::size_t(m.emissionTexture.texture)];
+                if (mean < 0) mean = meanLuminance(scene.textures[std::size_t(m.emissionTexture.texture)]);
+                texture = mean;
+            }
+            emissive.push_back({static_cast<std::uint32_t>(i), {t.p[0], t.p[1], t.p[2]}, luminance(m.emission) * texture});
         }
     }
-    out.lights = buildAliasTable(emissive, power);
-    addPunctualLights(scene, out.punctual);
-    for (const shader::LightAlias& l : out.lights) out.triAttribs[l.triangle].lightPmf = l.pmf;
+    std::vector<bool> punctualMoves;
+    addPunctualLights(scene, out.punctual, punctualMoves);
     out.sphereLights = buildSphereLightTable(scene, spheres, materials, sphereSlots);
-    // BSDF-sampled hits on an emissive sphere need its selection probability for MIS.
-    for (const shader::SphereLight& l : out.sphereLights)
-        if (l.primitive != PN_NO_HIT) out.triAttribs[l.primitive].lightPmf = l.selectPmf;
+    addLightList(scene, emissive, punctualMoves, out);
     out.sphereCount = static_cast<std::uint32_t>(spheres.spheres.size());
 
     for (const Texture& t : scene.textures) {
@@ -207,29 +232,40 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
     return out;
 }
 
+std::size_t deviceBytes(const SceneArrays& a) {
+    auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
+    return bytes(a.nodePairs) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.materials) + bytes(a.lightRefs) +
+           bytes(a.lightNodes) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
+           bytes(a.env.alias) + bytes(a.env.radiance);
+}
+
 GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& a)
-    : nodes(gpu::uploadStorageBuffer<shader::BvhNode>(ctx, commands, a.nodes)),
+    : nodes(gpu::uploadStorageBuffer<shader::BvhNodePair>(ctx, commands, a.nodePairs)),
       triVerts(gpu::uploadStorageBuffer<shader::TriVerts>(ctx, commands, a.triVerts)),
       triAttribs(gpu::uploadStorageBuffer<shader::TriAttribs>(ctx, commands, a.triAttribs)),
       materials(gpu::uploadStorageBuffer<shader::Material>(ctx, commands, a.materials)),
-      lights(gpu::uploadStorageBuffer<shader::LightAlias>(ctx, commands, a.lights)),
+      lightRefs(gpu::uploadStorageBuffer<shader::LightRef>(ctx, commands, a.lightRefs)),
+      lightNodes(gpu::uploadStorageBuffer<shader::LightNode>(ctx, commands, a.lightNodes)),
       textures(gpu::uploadStorageBuffer<shader::TextureInfo>(ctx, commands, a.textures)),
       texels(gpu::uploadStorageBuffer<std::uint32_t>(ctx, commands, a.texels)),
       punctual(gpu::uploadStorageBuffer<shader::PunctualLight>(ctx, commands, a.punctual)),
       sphereLights(gpu::uploadStorageBuffer<shader::SphereLight>(ctx, commands, a.sphereLights)),
       envTable(gpu::uploadStorageBuffer<shader::EnvAlias>(ctx, commands, a.env.alias)),
       envTexels(gpu::uploadStorageBuffer<Vec4>(ctx, commands, a.env.radiance)),
-      nodeCount(static_cast<std::uint32_t>(a.nodes.size())),
+      nodeCount(static_cast<std::uint32_t>(a.nodePairs.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
-      lightCount(static_cast<std::uint32_t>(a.lights.size())),
+      lightNodeCount(static_cast<std::uint32_t>(a.lightNodes.size())),
+      topLightCount(a.topLightCount),
+      lightRefCount(static_cast<std::uint32_t>(a.lightRefs.size())),
       punctualCount(static_cast<std::uint32_t>(a.punctual.size())),
       sphereCount(a.sphereCount),
       sphereLightCount(static_cast<std::uint32_t>(a.sphereLights.size())),
       envWidth(a.env.width),
-      envHeight(a.env.height) {}
+      envHeight(a.env.height),
+      envLuminance(a.envLuminance) {}
 
 std::size_t GpuScene::deviceBytes() const {
-    return nodes.size() + triVerts.size() + triAttribs.size() + materials.size() + lights.size() +
+    return nodes.size() + triVerts.size() + triAttribs.size() + materials.size() + lightRefs.size() + lightNodes.size() +
            textures.size() + texels.size() + punctual.size() + sphereLights.size() + envTable.size() + envTexels.size();
 }
 

@@ -16,11 +16,16 @@ namespace penumbra {
 
 // The host-side arrays, kept separate from the upload so tests and tools can use them on the CPU.
 struct SceneArrays {
-    std::vector<shader::BvhNode> nodes;
+    std::vector<shader::BvhNode> nodes;          // the binary BVH (CPU traversal, statistics, overlays)
+    std::vector<shader::BvhNodePair> nodePairs;  // the same tree as the GPU walks it
     std::vector<shader::TriVerts> triVerts;      // leaf order; triangles and spheres (PN_TRI_SPHERE)
     std::vector<shader::TriAttribs> triAttribs;  // leaf order
     std::vector<shader::Material> materials;
-    std::vector<shader::LightAlias> lights;
+    // The unified light sampler's lights and light BVH (render/light_list.h).
+    std::vector<shader::LightRef> lightRefs;
+    std::vector<shader::LightNode> lightNodes;
+    std::uint32_t topLightCount = 0;
+    float envLuminance = 0;  // mean luminance of the environment over directions (intensity 1)
     std::vector<shader::TextureInfo> textures;
     std::vector<std::uint32_t> texels;  // RGBA8, one texel per word
     std::vector<shader::PunctualLight> punctual;
@@ -43,14 +48,18 @@ Vec3 absorptionCoefficient(const Material& m);
 
 SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options = {});
 
+// Bytes the arrays take once uploaded (what GpuScene::deviceBytes reports after the upload).
+std::size_t deviceBytes(const SceneArrays& arrays);
+
 class GpuScene {
 public:
     GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& arrays);
 
-    gpu::Buffer nodes, triVerts, triAttribs, materials, lights, textures, texels, punctual, sphereLights, envTable,
-        envTexels;
-    std::uint32_t nodeCount = 0, triCount = 0, lightCount = 0, punctualCount = 0, sphereCount = 0, sphereLightCount = 0,
-                  envWidth = 0, envHeight = 0;
+    gpu::Buffer nodes, triVerts, triAttribs, materials, lightRefs, lightNodes, textures, texels, punctual, sphereLights,
+        envTable, envTexels;
+    std::uint32_t nodeCount = 0, triCount = 0, lightNodeCount = 0, topLightCount = 0, lightRefCount = 0, punctualCount = 0,
+                  sphereCount = 0, sphereLightCount = 0, envWidth = 0, envHeight = 0;
+    float envLuminance = 0;
 
     std::size_t deviceBytes() const;
 };

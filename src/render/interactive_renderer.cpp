@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "gpu/check.h"
 #include "render/frame_uniforms.h"
+#include "render/kernel_features.h"
 #include "render/passes/gbuffer_pass.h"
 
 namespace penumbra {
@@ -25,7 +26,8 @@ bool sameCamera(const shader::FrameUniforms& a, const shader::FrameUniforms& b) 
 bool changesTheImage(const ViewSettings& a, const ViewSettings& b) {
     auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
     return a.apertureRadius != b.apertureRadius || a.focusDistance != b.focusDistance ||
-           a.samplesPerFrame != b.samplesPerFrame || a.maxBounces != b.maxBounces || a.torch != b.torch ||
+           a.samplesPerFrame != b.samplesPerFrame || a.maxBounces != b.maxBounces ||
+           a.rouletteStart != b.rouletteStart || a.torch != b.torch ||
            !same(a.torchColor, b.torchColor) || a.torchIntensity != b.torchIntensity || a.torchRange != b.torchRange;
 }
 
@@ -48,6 +50,7 @@ const char* viewerPassName(ViewerPass pass) {
         case ViewerPass::Tonemap: return "tonemap";
         case ViewerPass::Heatmap: return "heat map";
         case ViewerPass::Boxes: return "BVH boxes";
+        case ViewerPass::Frame: return "frame";
         case ViewerPass::Count: break;
     }
     return "?";
@@ -129,12 +132,13 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
     historyB_ = pixelBuffer(sizeof(shader::HistoryTexel));
     filterA_ = pixelBuffer(sizeof(Vec4));
     filterB_ = pixelBuffer(sizeof(Vec4));
+    guide_ = pixelBuffer(PN_DENOISE_GUIDE_BYTES);
     display_ = pixelBuffer(sizeof(std::uint32_t));
     historyIn_ = &historyA_;
     historyOut_ = &historyB_;
     // Everything starts defined, so no pass ever reads uninitialised memory.
     commands_.run([&](VkCommandBuffer cmd) {
-        for (gpu::Buffer* b : {&accumulation_, &gbuffer_, &gbufferPrev_, &historyA_, &historyB_, &filterA_, &filterB_, &display_})
+        for (gpu::Buffer* b : {&accumulation_, &gbuffer_, &gbufferPrev_, &historyA_, &historyB_, &filterA_, &filterB_, &guide_, &display_})
             vkCmdFillBuffer(cmd, b->get(), 0, VK_WHOLE_SIZE, 0);
     });
     createPasses();
@@ -143,16 +147,17 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
 }
 
 void InteractiveRenderer::createPasses() {
-    trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_);
-    gbufferPass_ = std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, gbuffer_);
+    features_ = penumbra::kernelFeatures(arrays_, Accel::Bvh);
+    trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, features_);
+    gbufferPass_ = std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, gbuffer_, features_);
     auto temporal = [&](const gpu::Buffer& in, const gpu::Buffer& out) {
         return std::make_unique<TemporalPass>(
             ctx_, TemporalBuffers{&frameUniforms_, &viewerUniforms_, &accumulation_, &gbuffer_, &gbufferPrev_, &in,
-                                  &out, &filterA_});
+                                  &out, &filterA_, &guide_});
     };
     temporalAB_ = temporal(historyA_, historyB_);
     temporalBA_ = temporal(historyB_, historyA_);
-    denoise_ = std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer_, filterA_, filterB_);
+    denoise_ = std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer_, guide_, filterA_, filterB_);
     tonemapA_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyA_, filterB_, gbuffer_, display_);
     tonemapB_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyB_, filterB_, gbuffer_, display_);
     heatmap_ = std::make_unique<HeatmapPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, filterB_, heatCounters_);
@@ -173,6 +178,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     rs.height = height_;
     rs.samplesPerPass = s.samplesPerFrame;
     rs.maxBounces = s.maxBounces;
+    rs.rouletteStart = s.rouletteStart;
     rs.seed = seed_;
     Camera lens = camera;
     lens.apertureRadius = s.apertureRadius;
@@ -219,6 +225,8 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     heatFrame_ = heat;
 
     timer_.reset();
+    recorded_ = 0;
+    timer_.begin(cmd, std::uint32_t(ViewerPass::Frame));
     if (torchLight_ && s.torch) {
         // attachTorch's placement: 15 cm below the eye.
         shader::PunctualLight light = arrays_.punctual[*torchLight_];
@@ -238,7 +246,6 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
         timer_.end(cmd, std::uint32_t(pass));
         recorded_ |= 1u << std::uint32_t(pass);
     };
-    recorded_ = 0;
     timed(ViewerPass::Trace, [&] { trace_->record(cmd, width_, height_, frameIndex_, true); });
     timed(ViewerPass::GBuffer, [&] { gbufferPass_->record(cmd, width_, height_); });
     if (heat) timed(ViewerPass::Heatmap, [&] { heatmap_->record(cmd, width_, height_); });
@@ -249,8 +256,10 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     TonemapPass& tonemap = fromA ? *tonemapB_ : *tonemapA_;
     if (denoise) {
         timed(ViewerPass::Denoise, [&] { denoise_->record(cmd, width_, height_, s.denoiseIterations); });
-        tonemap.setFiltered(denoise_->output(s.denoiseIterations));
+        denoised_ = &denoise_->output(s.denoiseIterations);
+        tonemap.setFiltered(*denoised_);
     } else {
+        denoised_ = nullptr;
         tonemap.setFiltered(filterB_);  // the heat map's counts, when it ran
     }
     timed(ViewerPass::Tonemap, [&] { tonemap.record(cmd, width_, height_); });
@@ -267,6 +276,8 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     VkBufferCopy copy{0, 0, gbuffer_.size()};
     vkCmdCopyBuffer(cmd, gbuffer_.get(), gbufferPrev_.get(), 1, &copy);
     gpu::computeBarrier(cmd);
+    timer_.end(cmd, std::uint32_t(ViewerPass::Frame));
+    recorded_ |= 1u << std::uint32_t(ViewerPass::Frame);
 
     previousFrame_ = f;
     historyValid_ = true;
@@ -279,7 +290,8 @@ void InteractiveRenderer::finishFrame() {
         stats_.passMilliseconds[p] = (recorded_ >> p) & 1u ? timer_.milliseconds(p) : 0.0;
     const auto* counts = static_cast<const shader::RayCounters*>(counters_.mapped());
     const double traceSeconds = stats_.passMilliseconds[std::size_t(ViewerPass::Trace)] * 1e-3;
-    stats_.raysPerSecond = traceSeconds > 0 ? double(counts->closestRays + counts->shadowRays) / traceSeconds : 0.0;
+    stats_.rays = std::uint64_t(counts->closestRays) + counts->shadowRays;
+    stats_.raysPerSecond = traceSeconds > 0 ? double(stats_.rays) / traceSeconds : 0.0;
     if (heatFrame_) {
         const auto* heat = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());
         stats_.heatMaxNodes = heat->maxNodes;

@@ -21,13 +21,15 @@
 
 namespace penumbra {
 
-enum class ViewerPass : std::uint32_t { Trace, GBuffer, Temporal, Denoise, Tonemap, Heatmap, Boxes, Count };
+// Frame spans the whole recorded frame (every pass, barrier and copy), the others one pass each.
+enum class ViewerPass : std::uint32_t { Trace, GBuffer, Temporal, Denoise, Tonemap, Heatmap, Boxes, Frame, Count };
 const char* viewerPassName(ViewerPass pass);
 
 struct ViewerStats {
     std::uint32_t samplesPerPixel = 0;  // accumulated since the last reset (the running mean's N)
     double passMilliseconds[std::size_t(ViewerPass::Count)] = {};  // last frame; -1: no timestamps
     double raysPerSecond = 0;           // last frame's rays over its trace time
+    std::uint64_t rays = 0;             // last frame's rays: closest hits and shadow rays
     std::uint32_t heatMaxNodes = 0, heatMaxTriangles = 0;  // last heat-map frame
 };
 
@@ -61,9 +63,15 @@ public:
     const gpu::Buffer& display() const { return display_; }  // uint RGBA8 per pixel
     const gpu::Buffer& history() const { return *historyOut_; }  // HistoryTexel per pixel
     const gpu::Buffer& gbuffer() const { return gbuffer_; }
+    // The linear image the tonemap pass read last frame (vec4 per pixel, rgb radiance): the
+    // denoiser's output, or null when the denoiser did not run.
+    const gpu::Buffer* denoised() const { return denoised_; }
     const ViewerStats& stats() const { return stats_; }
     bool hasTorch() const { return torchLight_.has_value(); }
     const GpuScene& gpuScene() const { return *gpuScene_; }
+    // The trace pass's pipeline (for its driver statistics); valid after resize.
+    const gpu::ComputePipeline& tracePipeline() const { return trace_->pipeline(); }
+    std::uint32_t kernelFeatures() const { return features_; }
     const SceneArrays& sceneArrays() const { return arrays_; }
     gpu::Commands& commands() { return commands_; }
 
@@ -80,7 +88,7 @@ private:
     std::optional<std::uint32_t> torchLight_;
     std::uint32_t seed_;
     gpu::Buffer frameUniforms_, viewerUniforms_, counters_, heatCounters_;
-    gpu::Buffer accumulation_, gbuffer_, gbufferPrev_, historyA_, historyB_, filterA_, filterB_, display_;
+    gpu::Buffer accumulation_, gbuffer_, gbufferPrev_, historyA_, historyB_, filterA_, filterB_, guide_, display_;
     gpu::Buffer* historyIn_ = nullptr;  // last frame's history; the two swap every frame
     gpu::Buffer* historyOut_ = nullptr;
     std::unique_ptr<TracePass> trace_;
@@ -93,11 +101,13 @@ private:
     std::optional<std::uint32_t> boxesDepth_;  // the depth boxes_ holds; none: refill it
     gpu::GpuTimer timer_;
     std::uint32_t width_ = 0, height_ = 0;
+    std::uint32_t features_ = PN_FEATURE_ALL;  // what the scene kernels are specialised for
     bool historyValid_ = false;
     std::uint32_t frameIndex_ = 0;  // frames since the last reset: the trace pass index
     std::optional<shader::FrameUniforms> previousFrame_;
     std::optional<ViewSettings> previousSettings_;
     bool heatFrame_ = false;
+    const gpu::Buffer* denoised_ = nullptr;
     std::uint32_t recorded_ = 0;  // bit per ViewerPass timed this frame
     ViewerStats stats_;
 };

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "gpu/commands.h"
 #include "gpu/timer.h"
+#include "render/kernel_features.h"
 #include "render/scene_pipeline.h"
 
 namespace penumbra {
@@ -28,9 +29,11 @@ RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repe
     gpu::GpuTimer timer(ctx, 1);
     gpu::Buffer points(ctx, pixels * sizeof(shader::SurfacePoint), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                        gpu::MemoryKind::DeviceLocal);
-    gpu::Buffer results(ctx, pixels * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryKind::DeviceLocal);
+    gpu::Buffer results(ctx, pixels * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                        gpu::MemoryKind::DeviceLocal);
     auto pipeline = makeScenePipeline(ctx, "raybench", renderer.gpuScene(), renderer.frameUniforms(),
-                                      {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2});
+                                      {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2},
+                                      kernelFeatures(renderer.sceneArrays(), renderer.settings().accel));
     pipeline->bind(PN_BINDING_SCRATCH, points);
     pipeline->bind(PN_BINDING_SCRATCH2, results);
 
@@ -62,7 +65,10 @@ RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repe
     auto kept = gpu::downloadBuffer<shader::SurfacePoint>(ctx, commands, points, pixels);
     std::uint64_t valid = std::count_if(kept.begin(), kept.end(), [](const shader::SurfacePoint& p) { return p.valid != 0; });
     r.primaryRays = pixels;
-    r.shadowRays = renderer.gpuScene().lightCount ? valid : 0;
+    // The shadow rays the last shadow pass traced (it writes -1 where no light reached a point).
+    timeMode(PN_RAYBENCH_SHADOW, 0);
+    auto shadowResults = gpu::downloadBuffer<float>(ctx, commands, results, pixels);
+    r.shadowRays = std::uint64_t(std::count_if(shadowResults.begin(), shadowResults.end(), [](float v) { return v >= 0; }));
     r.diffuseRays = valid;
     r.primaryMs = median(primary);
     r.shadowMs = median(shadow);

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "render/frame_uniforms.h"
+#include "render/kernel_features.h"
 
 namespace penumbra {
 
@@ -26,7 +27,8 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
                             gpu::MemoryKind::HostVisible);
     std::memset(counters_.mapped(), 0, sizeof(shader::RayCounters));
     commands_.run([&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0); });
-    trace_ = std::make_unique<TracePass>(ctx, *gpuScene_, frameUniforms_, accumulation_, counters_);
+    trace_ = std::make_unique<TracePass>(ctx, *gpuScene_, frameUniforms_, accumulation_, counters_,
+                                         kernelFeatures(arrays_, settings_.accel));
 }
 
 Renderer::~Renderer() = default;

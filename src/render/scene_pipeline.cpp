@@ -6,7 +6,8 @@ namespace penumbra {
 
 std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx, const std::string& shader,
                                                         const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                                                        const std::vector<std::uint32_t>& extraStorageBindings) {
+                                                        const std::vector<std::uint32_t>& extraStorageBindings,
+                                                        std::uint32_t features) {
     constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     std::vector<gpu::BindingSpec> bindings = {
         {PN_BINDING_NODES, storage},     {PN_BINDING_TRI_VERTS, storage},
@@ -14,14 +15,16 @@ std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx,
         {PN_BINDING_LIGHTS, storage},    {PN_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
         {PN_BINDING_TEXTURES, storage},  {PN_BINDING_TEXELS, storage},
         {PN_BINDING_PUNCTUAL, storage},  {PN_BINDING_SPHERE_LIGHTS, storage}, {PN_BINDING_ENV_TABLE, storage},
-        {PN_BINDING_ENV_TEXELS, storage}};
+        {PN_BINDING_ENV_TEXELS, storage}, {PN_BINDING_LIGHT_NODES, storage}};
     for (std::uint32_t b : extraStorageBindings) bindings.push_back({b, storage});
-    auto pipeline = std::make_unique<gpu::ComputePipeline>(ctx, shader, bindings, sizeof(shader::PassPush));
+    const std::uint32_t specialization[] = {features};
+    auto pipeline = std::make_unique<gpu::ComputePipeline>(ctx, shader, bindings, sizeof(shader::PassPush), specialization);
     pipeline->bind(PN_BINDING_NODES, scene.nodes);
     pipeline->bind(PN_BINDING_TRI_VERTS, scene.triVerts);
     pipeline->bind(PN_BINDING_TRI_ATTRIBS, scene.triAttribs);
     pipeline->bind(PN_BINDING_MATERIALS, scene.materials);
-    pipeline->bind(PN_BINDING_LIGHTS, scene.lights);
+    pipeline->bind(PN_BINDING_LIGHTS, scene.lightRefs);
+    pipeline->bind(PN_BINDING_LIGHT_NODES, scene.lightNodes);
     pipeline->bind(PN_BINDING_FRAME, frameUniforms);
     pipeline->bind(PN_BINDING_TEXTURES, scene.textures);
     pipeline->bind(PN_BINDING_TEXELS, scene.texels);

@@ -11,9 +11,11 @@
 
 namespace penumbra {
 
-// extraStorageBindings: pass-specific storage buffers (accumulation, scratch, ...).
+// extraStorageBindings: pass-specific storage buffers (accumulation, scratch, ...). features:
+// what the kernel is specialised for (PN_FEATURE_*, render/kernel_features.h); all by default.
 std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx, const std::string& shader,
                                                         const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                                                        const std::vector<std::uint32_t>& extraStorageBindings);
+                                                        const std::vector<std::uint32_t>& extraStorageBindings,
+                                                        std::uint32_t features = PN_FEATURE_ALL);
 
 }  // namespace penumbra

@@ -22,6 +22,9 @@ struct RenderSettings {
     std::uint32_t seed = 1;
     Accel accel = Accel::Bvh;
     MisMode mis = MisMode::Both;
+    // Pick every light with the same probability instead of by its estimated contribution: the
+    // oracle that tests compare the light sampler with (same mean, more noise).
+    bool uniformLightPick = false;
 };
 
 // Limits that keep absurd requests from allocating unbounded memory or running forever.

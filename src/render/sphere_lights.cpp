@@ -39,7 +39,6 @@ std::vector<shader::SphereLight> buildSphereLightTable(const Scene& scene, const
                                                        std::span<const Material> materials,
                                                        std::span<const std::uint32_t> slots) {
     std::vector<shader::SphereLight> table;
-    std::vector<double> power;
     for (std::size_t i = 0; i < spheres.spheres.size(); ++i) {
         const Sphere& s = spheres.spheres[i];
         const Material& m = materials[s.material];
@@ -53,8 +52,6 @@ std::vector<shader::SphereLight> buildSphereLightTable(const Scene& scene, const
         l.spotDirection = Vec3{0, -1, 0};
         l.primitive = slots[i];
         table.push_back(l);
-        // Radiant power up to the factor pi every entry shares: radiance times area.
-        power.push_back(double(luminance(m.emission)) * 4 * kPi * double(s.radius) * double(s.radius));
     }
     for (const Light& light : scene.lights) {
         if (!isSphereLight(light) || light.type != LightType::Spot) continue;
@@ -66,23 +63,10 @@ std::vector<shader::SphereLight> buildSphereLightTable(const Scene& scene, const
         l.cosOuter = std::cos(light.outerConeRadians);
         l.cosInner = std::cos(light.innerConeRadians);
         l.primitive = PN_NO_HIT;
-        // Intensity (radiance times pi r^2) over the cone's solid angle, divided by the same pi.
-        const double w = double(luminance(l.radiance)) * double(light.radius) * double(light.radius) * 2 * kPi *
-                         (1 - double(l.cosOuter));
-        if (!(w > 0) || !std::isfinite(w) || !isFinite(l.center) || !isFinite(l.spotDirection)) continue;
+        if (!(luminance(l.radiance) > 0) || !isFinite(l.radiance) || !isFinite(l.center) || !isFinite(l.spotDirection))
+            continue;
         table.push_back(l);
-        power.push_back(w);
     }
-    double total = 0;
-    for (double w : power) total += w;
-    if (!(total > 0)) return {};
-    double running = 0;
-    for (std::size_t i = 0; i < table.size(); ++i) {
-        table[i].selectPmf = float(power[i] / total);
-        running += power[i];
-        table[i].cdf = float(running / total);
-    }
-    table.back().cdf = 1.0f;  // so every u in [0, 1) finds an entry despite rounding
     return table;
 }
 

@@ -22,8 +22,8 @@ struct RenderSpheres {
 RenderSpheres renderSpheres(const Scene& scene);
 
 // One entry per emissive sphere (slots[i] = sphere i's slot in the primitive arrays) and per spot
-// light with a radius, with selection probabilities in proportion to power and their running
-// sum. materials: the scene's followed by the extra ones.
+// light with a radius (the light sampler picks among them, render/light_list.h). materials: the
+// scene's followed by the extra ones.
 std::vector<shader::SphereLight> buildSphereLightTable(const Scene& scene, const RenderSpheres& spheres,
                                                        std::span<const Material> materials,
                                                        std::span<const std::uint32_t> slots);

@@ -25,6 +25,7 @@ enum class DebugView : std::uint32_t {
 struct ViewSettings {
     std::uint32_t samplesPerFrame = 1;
     std::uint32_t maxBounces = 8;
+    std::uint32_t rouletteStart = 3;  // Russian roulette may end paths from this bounce on
     float resolutionScale = 1.0f;  // render at this fraction of the window, upscaled to it
     bool temporal = true;
     bool denoise = false;

@@ -5,6 +5,18 @@
 
 namespace penumbra {
 
+float meanScale(const Affine& transform) { return std::cbrt(std::abs(transform.determinant())); }
+
+Camera transformCamera(const Camera& camera, const Affine& transform) {
+    Camera c = camera;
+    c.position = transform.point(camera.position);
+    c.lookAt = transform.point(camera.lookAt);
+    c.up = normalize(transform.vector(camera.up));
+    c.apertureRadius *= meanScale(transform);
+    c.focusDistance *= meanScale(transform);
+    return c;
+}
+
 void appendScene(Scene& into, Scene part, const Affine& transform) {
     const auto materialBase = static_cast<std::uint32_t>(into.materials.size());
     const auto textureBase = static_cast<int>(into.textures.size());
@@ -25,7 +37,7 @@ void appendScene(Scene& into, Scene part, const Affine& transform) {
     }
     // A sphere stays a sphere: its radius scales by the transform's mean scale factor (exact for
     // uniform scaling; non-uniform scaling of a sphere would make an ellipsoid).
-    const float radiusScale = std::cbrt(std::abs(transform.determinant()));
+    const float radiusScale = meanScale(transform);
     for (Sphere& s : part.spheres) {
         s.center = transform.point(s.center);
         s.radius *= radiusScale;

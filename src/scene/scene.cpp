@@ -86,6 +86,7 @@ void attachTorch(Scene& scene) {
     torch.color = scene.torch.color;
     torch.intensity = scene.torch.intensity;
     torch.range = scene.torch.range;
+    torch.moves = true;
     scene.lights.push_back(torch);
 }
 

@@ -77,6 +77,8 @@ struct Light {
     // Directional only: > 0 makes it a disk of this angular radius (the sun: 0.0047 rad), with
     // soft shadows; 0 is a delta light. At most kMaxAngularRadius.
     float angularRadius = 0.0f;
+    // Moved every frame (the viewer's torch): kept out of the light BVH, bounded per frame instead.
+    bool moves = false;
 };
 
 constexpr float kMaxAngularRadius = 0.7853982f;  // 45 degrees
@@ -98,6 +100,10 @@ struct Environment {
     std::optional<Light> sun;  // directional, map-local direction (see distantLights)
     float intensity = 1.0f;
     float rotationDegrees = 0.0f;
+    // Light sampling aims shadow rays at it. Off where its light is better found through geometry
+    // (a Doom level's sky, seen through its sky ceilings, which are sampled as emitters): then
+    // only rays that escape see it, and it is not sampled twice.
+    bool sampled = true;
 };
 
 // An indexed triangle mesh with one material. normals and uvs are either empty or one per

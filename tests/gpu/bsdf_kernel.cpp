@@ -29,7 +29,7 @@ std::vector<shader::BsdfTestResult> BsdfKernel::run(const std::vector<shader::Bs
     RenderSettings settings;
     settings.seed = seed;
     shader::FrameUniforms frame =
-        makeFrameUniforms(Camera{}, Vec3{0}, settings, scene_->lightCount, scene_->triCount, scene_->nodeCount);
+        makeFrameUniforms(Camera{}, Vec3{0}, settings, scene_->lightNodeCount, scene_->triCount, scene_->nodeCount);
     gpu::Buffer frameBuffer(ctx_, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryKind::HostVisible);
     std::memcpy(frameBuffer.mapped(), &frame, sizeof(frame));
     gpu::Buffer queryBuffer = gpu::uploadStorageBuffer<shader::BsdfTestQuery>(ctx_, commands_, queries);

@@ -7,63 +7,13 @@
 #include <fstream>
 #include <sstream>
 
-#include "binary_path.h"
-#include "gpu_fixture.h"
+#include "cli_fixture.h"
 #include "image/write.h"
 
 namespace penumbra::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct RunResult {
-    int exitCode;
-    std::string err;
-};
-
-class CliTest : public GpuTest {
-protected:
-    void SetUp() override {
-        GpuTest::SetUp();
-        dir = fs::temp_directory_path() / ("penumbra-cli-" + std::to_string(::getpid()) + "-" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override {
-        fs::remove_all(dir);
-        GpuTest::TearDown();
-    }
-
-    // Runs penumbra in `dir` with `args`; env is a prefix of VAR=value assignments.
-    RunResult run(const std::string& args, const std::string& env = "") {
-        const char* device = std::getenv("PENUMBRA_TEST_DEVICE");
-        std::string cmd = "cd '" + dir.string() + "' && env PENUMBRA_DEVICE=" + (device ? device : "llvmpipe") +
-                          " PENUMBRA_VALIDATION=1 " + env + " '" + penumbraBinary() + "' " + args +
-                          " >/dev/null 2>stderr.txt";
-        int status = std::system(cmd.c_str());
-        std::ifstream in(dir / "stderr.txt");
-        std::stringstream ss;
-        ss << in.rdbuf();
-        fs::remove(dir / "stderr.txt");
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
-    }
-
-    static void expectOneLineError(const RunResult& r, int code, const std::string& mentions) {
-        EXPECT_EQ(r.exitCode, code) << r.err;
-        EXPECT_EQ(r.err.rfind("penumbra: error: ", 0), 0u) << r.err;
-        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-        EXPECT_NE(r.err.find(mentions), std::string::npos) << "expected '" << mentions << "' in: " << r.err;
-    }
-
-    std::vector<fs::path> filesIn(const fs::path& d) {
-        std::vector<fs::path> out;
-        for (const auto& e : fs::recursive_directory_iterator(d)) out.push_back(e.path());
-        return out;
-    }
-
-    fs::path dir;
-};
 
 TEST_F(CliTest, RenderWithoutSceneOrOutputWritesTheCornellBoxToOut) {
     RunResult r = run("render --width 40 --height 30 --spp 4 --quiet");

@@ -8,22 +8,6 @@
 namespace penumbra::test {
 namespace {
 
-struct MeanEstimate {
-    double mean;
-    double stderr;
-};
-
-MeanEstimate imageMean(const std::vector<Vec4>& sums, double samples) {
-    double total = 0, variance = 0;
-    for (const Vec4& s : sums) {
-        PixelStats p = pixelStats(s, samples);
-        total += p.mean;
-        variance += p.stderr * p.stderr;
-    }
-    double n = double(sums.size());
-    return {total / n, std::sqrt(variance) / n};
-}
-
 RenderSettings smallSettings(std::uint32_t spp, std::uint32_t seed) {
     RenderSettings s;
     s.width = 32;

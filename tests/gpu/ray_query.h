@@ -22,7 +22,7 @@ inline GpuHits traceOnGpu(const gpu::Context& ctx, const SceneArrays& arrays, co
     GpuScene scene(ctx, commands, arrays);
     RenderSettings settings;
     settings.accel = accel;
-    shader::FrameUniforms frame = makeFrameUniforms(Camera{}, Vec3{0}, settings, scene.lightCount, scene.triCount, scene.nodeCount);
+    shader::FrameUniforms frame = makeFrameUniforms(Camera{}, Vec3{0}, settings, scene.lightNodeCount, scene.triCount, scene.nodeCount);
     gpu::Buffer frameBuffer(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryKind::HostVisible);
     std::memcpy(frameBuffer.mapped(), &frame, sizeof(frame));
     gpu::Buffer rayBuffer = gpu::uploadStorageBuffer<shader::RayDesc>(ctx, commands, rays);

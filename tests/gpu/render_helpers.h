@@ -61,6 +61,24 @@ inline PixelStats pixelStats(const Vec4& sums, double samples) {
     return {mean, std::sqrt(variance / samples)};
 }
 
+struct MeanEstimate {
+    double mean;
+    double stderr;
+};
+
+// The mean luminance of an image from its accumulation (sums of samples and of squared
+// luminance), with its standard error from the per-pixel sample variances.
+inline MeanEstimate imageMean(const std::vector<Vec4>& sums, double samples) {
+    double total = 0, variance = 0;
+    for (const Vec4& s : sums) {
+        PixelStats p = pixelStats(s, samples);
+        total += p.mean;
+        variance += p.stderr * p.stderr;
+    }
+    double n = double(sums.size());
+    return {total / n, std::sqrt(variance) / n};
+}
+
 // The normal quantile that keeps the family-wise false-alarm rate at `alpha` over `tests`
 // independent tests (Sidak), by bisection on the complementary error function.
 inline double sidakZ(double alpha, std::size_t tests) {

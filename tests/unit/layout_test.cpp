@@ -51,7 +51,7 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
         Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
         expectMembers(spv, "BvhNode", {0, offsetof(BvhNode, firstOrRight), offsetof(BvhNode, boundsMax), offsetof(BvhNode, triCount)});
         expectMembers(spv, "TriVerts", {0, offsetof(TriVerts, flags), offsetof(TriVerts, e1), 28, offsetof(TriVerts, e2), 44});
-        expectMembers(spv, "TriAttribs", {0, offsetof(TriAttribs, materialId), offsetof(TriAttribs, n1), offsetof(TriAttribs, lightPmf),
+        expectMembers(spv, "TriAttribs", {0, offsetof(TriAttribs, materialId), offsetof(TriAttribs, n1), offsetof(TriAttribs, lightIndex),
                                           offsetof(TriAttribs, n2), offsetof(TriAttribs, area), offsetof(TriAttribs, uv0),
                                           offsetof(TriAttribs, uv1), offsetof(TriAttribs, uv2), offsetof(TriAttribs, pad)});
         expectMembers(spv, "Material", {0, offsetof(Material, flags), offsetof(Material, emission), offsetof(Material, alphaCutoff),
@@ -63,12 +63,15 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                                         offsetof(Material, normalWrap), offsetof(Material, emissionTexture),
                                         offsetof(Material, emissionWrap)});
         expectMembers(spv, "TextureInfo", {0, offsetof(TextureInfo, width), offsetof(TextureInfo, height), offsetof(TextureInfo, flags)});
-        expectMembers(spv, "LightAlias", {0, offsetof(LightAlias, threshold), offsetof(LightAlias, alias), offsetof(LightAlias, pmf)});
+        expectMembers(spv, "LightRef", {0, offsetof(LightRef, index), offsetof(LightRef, trailLo), offsetof(LightRef, trailHi)});
+        expectMembers(spv, "LightNode", {0, offsetof(LightNode, phi), offsetof(LightNode, boundsMax), offsetof(LightNode, cosThetaO),
+                                         offsetof(LightNode, axis), offsetof(LightNode, cosThetaE), offsetof(LightNode, childOrLight),
+                                         offsetof(LightNode, twoSided), offsetof(LightNode, sinThetaO), offsetof(LightNode, minDistance2)});
         expectMembers(spv, "FrameUniforms",
                       {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight), offsetof(FrameUniforms, aspect),
                        offsetof(FrameUniforms, cameraUp), offsetof(FrameUniforms, width), offsetof(FrameUniforms, cameraForward),
                        offsetof(FrameUniforms, height), offsetof(FrameUniforms, maxBounces), offsetof(FrameUniforms, rouletteStart),
-                       offsetof(FrameUniforms, lightCount), offsetof(FrameUniforms, triCount), offsetof(FrameUniforms, nodeCount),
+                       offsetof(FrameUniforms, lightNodeCount), offsetof(FrameUniforms, triCount), offsetof(FrameUniforms, nodeCount),
                        offsetof(FrameUniforms, accel), offsetof(FrameUniforms, seed), offsetof(FrameUniforms, samplesPerPass),
                        offsetof(FrameUniforms, background), offsetof(FrameUniforms, punctualCount),
                        offsetof(FrameUniforms, lensRadius), offsetof(FrameUniforms, focusDistance),
@@ -76,17 +79,19 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, envWidth), offsetof(FrameUniforms, envIntensity),
                        offsetof(FrameUniforms, envRotation), offsetof(FrameUniforms, envHeight),
                        offsetof(FrameUniforms, misMode), offsetof(FrameUniforms, debugMode),
-                       offsetof(FrameUniforms, pad0), offsetof(FrameUniforms, pad1)});
+                       offsetof(FrameUniforms, pad0), offsetof(FrameUniforms, pad1),
+                       offsetof(FrameUniforms, topLightCount), offsetof(FrameUniforms, envLuminance),
+                       offsetof(FrameUniforms, lightRefCount), offsetof(FrameUniforms, lightPickUniform)});
         expectMembers(spv, "PunctualLight", {0, offsetof(PunctualLight, type), offsetof(PunctualLight, intensity),
                                              offsetof(PunctualLight, range), offsetof(PunctualLight, direction),
                                              offsetof(PunctualLight, cosOuter), offsetof(PunctualLight, cosInner),
-                                             offsetof(PunctualLight, selectPmf), offsetof(PunctualLight, coneOneMinusCos),
+                                             offsetof(PunctualLight, pad2), offsetof(PunctualLight, coneOneMinusCos),
                                              offsetof(PunctualLight, pad1)});
         expectMembers(spv, "EnvAlias", {0, offsetof(EnvAlias, alias), offsetof(EnvAlias, pdf), offsetof(EnvAlias, pad)});
         expectMembers(spv, "SphereLight", {0, offsetof(SphereLight, radius), offsetof(SphereLight, radiance),
-                                           offsetof(SphereLight, selectPmf), offsetof(SphereLight, spotDirection),
+                                           offsetof(SphereLight, pad2), offsetof(SphereLight, spotDirection),
                                            offsetof(SphereLight, cosOuter), offsetof(SphereLight, cosInner),
-                                           offsetof(SphereLight, cdf), offsetof(SphereLight, primitive),
+                                           offsetof(SphereLight, pad3), offsetof(SphereLight, primitive),
                                            offsetof(SphereLight, pad0)});
         expectMembers(spv, "PassPush", {0, 4, 8, offsetof(PassPush, countRays)});
         expectMembers(spv, "RayCounters", {0, 4, offsetof(RayCounters, invalidSamples), 12});

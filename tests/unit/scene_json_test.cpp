@@ -76,6 +76,71 @@ TEST(SceneJson, MaterialKeysForSpecularAndAbsorptionAreRead) {
     EXPECT_NE(errorOf(R"({"materials": [{"name": "x", "specular": 2}]})"), "");
 }
 
+TEST(SceneJson, AnAssetMaterialReplacesEveryMaterialOfTheAsset) {
+    Scene s = parse(R"({"assets": [{"preset": "cornell"}, {"preset": "caffeine", "scale": 0.1, "material": "gold"}],
+                       "materials": [{"name": "gold", "metallic": 1, "albedo": [1, 0.8, 0.3]}]})");
+    const Scene cornell = makeCornellBox(), caffeine = makePreset("caffeine");
+    ASSERT_EQ(s.meshes.size(), cornell.meshes.size() + caffeine.meshes.size());
+    ASSERT_EQ(s.spheres.size(), caffeine.spheres.size());
+    ASSERT_FALSE(caffeine.spheres.empty());
+    const std::string& gold = s.materials.back().name;
+    ASSERT_EQ(gold, "gold");
+    for (std::size_t m = 0; m < s.meshes.size(); ++m)
+        EXPECT_EQ(s.materials[s.meshes[m].material].name == gold, m >= cornell.meshes.size()) << "mesh " << m;
+    for (const Sphere& sphere : s.spheres) EXPECT_EQ(s.materials[sphere.material].name, gold);
+}
+
+TEST(SceneJson, AnAssetMaterialMustExist) {
+    const std::string e = errorOf(R"({"assets": [{"preset": "cornell"}, {"preset": "furnace", "material": "nope"}]})");
+    EXPECT_NE(e.find("assets[1].material: no material named 'nope'"), std::string::npos) << e;
+    EXPECT_NE(errorOf(R"({"assets": [{"preset": "cornell", "material": 3}]})").find("assets[0].material"), std::string::npos);
+}
+
+TEST(SceneJson, AMaterialNothingUsesIsAWarning) {
+    testing::internal::CaptureStderr();
+    parse(R"({"assets": [{"preset": "cornell"}], "materials": [{"name": "unused", "albedo": [1, 0, 0]}, {"name": "red"}]})");
+    std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("penumbra: warning: test.json: materials[0] ('unused') is not used"), std::string::npos) << err;
+    EXPECT_EQ(err.find("materials[1]"), std::string::npos) << "'red' is the Cornell box's: " << err;
+
+    testing::internal::CaptureStderr();
+    parse(R"({"assets": [{"preset": "cornell", "material": "used"}],
+              "materials": [{"name": "used"}, {"name": "sphere"}, {"name": "quad"}],
+              "spheres": [{"center": [0, 0, 0], "radius": 1, "material": "sphere"}],
+              "quads": [{"material": "quad", "corners": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]}]})");
+    err = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(err.find("warning"), std::string::npos) << err;
+}
+
+// Including a scene file with a transform moves its whole world: geometry, spheres, lights and
+// (as the first asset) its camera, whose lens scales with it.
+TEST(SceneJson, IncludingASceneFileTransformsItsWholeWorld) {
+    const auto dir = std::filesystem::temp_directory_path() / ("penumbra-world-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "inner.json") << R"({
+        "materials": [{"name": "m"}],
+        "quads": [{"material": "m", "corners": [[0, 0, 0], [1, 0, 0], [1, 0, -1], [0, 0, -1]]}],
+        "spheres": [{"center": [1, 2, 3], "radius": 0.5, "material": "m"}],
+        "lights": [{"type": "spot", "position": [0, 3, 0], "direction": [0, -1, 0], "radius": 0.1}],
+        "camera": {"position": [0, 1, 4], "look_at": [0, 1, 0], "aperture": 0.02, "focus_distance": 4}})";
+    std::ofstream(dir / "outer.json")
+        << R"({"assets": [{"file": "inner.json", "scale": 2, "rotate": [0, 0, 90], "translate": [10, 0, 0]}]})";
+    const Scene s = loadSceneJson(dir / "outer.json");
+    std::filesystem::remove_all(dir);
+    const auto near = [](Vec3 a, Vec3 b) { return length(a - b) < 1e-4f; };
+    // Scale 2, then 90 degrees about z (x -> y, y -> -x), then x + 10.
+    EXPECT_TRUE(near(s.spheres.at(0).center, {6, 2, 6}));
+    EXPECT_FLOAT_EQ(s.spheres[0].radius, 1.0f);
+    EXPECT_TRUE(near(s.lights.at(0).position, {4, 0, 0}));
+    EXPECT_TRUE(near(s.lights[0].direction, {1, 0, 0}));
+    EXPECT_FLOAT_EQ(s.lights[0].radius, 0.2f);
+    EXPECT_TRUE(near(s.camera.position, {8, 0, 8}));
+    EXPECT_TRUE(near(s.camera.lookAt, {8, 0, 0}));
+    EXPECT_TRUE(near(s.camera.up, {-1, 0, 0}));
+    EXPECT_FLOAT_EQ(s.camera.apertureRadius, 0.04f);
+    EXPECT_FLOAT_EQ(s.camera.focusDistance, 8.0f);
+}
+
 TEST(SceneJson, RenderSettingsAreRead) {
     SceneFileSettings settings;
     parse(R"({"assets": [{"preset": "cornell"}], "render": {"spp": 7, "bounces": 3, "width": 20, "height": 10, "exposure": 1.5}})",

@@ -2,6 +2,8 @@
 // sampling picks from (probabilities in proportion to power, a cdf that ends at exactly 1).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "bvh/sphere.h"
 #include "render/gpu_scene.h"
 #include "scene/presets/mesh_builder.h"
@@ -42,38 +44,33 @@ TEST(SphereLightTable, PointLightsWithRadiusBecomeSpheresAndEveryLightIsPickedBy
     EXPECT_FLOAT_EQ(a.materials.back().emission.x, pointRadiance);
     ASSERT_EQ(a.sphereLights.size(), 4u);
 
-    // Power up to a shared factor pi: radiance x area (4 pi r^2), or for the spot its intensity
-    // (radiance x pi r^2) over the cone's solid angle.
-    const double cone = 2 * kPi * (1 - std::cos(0.5));
-    std::vector<double> power = {2.0 * 4 * kPi * 0.25, 2.0 * 4 * kPi * 1.0, pointRadiance * 4 * kPi * 0.0625,
-                                 pointRadiance * 0.0625 * cone};
-    double total = 0;
-    for (double p : power) total += p;
-    double cdf = 0;
     for (std::size_t i = 0; i < 4; ++i) {
         const shader::SphereLight& l = a.sphereLights[i];
-        EXPECT_NEAR(l.selectPmf, power[i] / total, 1e-6) << "light " << i;
-        cdf += power[i] / total;
-        EXPECT_NEAR(l.cdf, cdf, 1e-6) << "light " << i;
         if (i < 3) {
-            // Emissive spheres live in the BVH, and their slot knows its selection probability.
+            // Emissive spheres live in the BVH, and their slot knows its light (for MIS on hits).
             ASSERT_LT(l.primitive, a.triVerts.size());
             EXPECT_TRUE(bvh::isSphere(a.triVerts[l.primitive]));
             EXPECT_EQ(a.triVerts[l.primitive].v0, l.center);
             EXPECT_EQ(a.triVerts[l.primitive].e1.x, l.radius);
-            EXPECT_EQ(a.triAttribs[l.primitive].lightPmf, l.selectPmf);
+            const std::uint32_t ref = a.triAttribs[l.primitive].lightIndex;
+            ASSERT_LT(ref, a.lightRefs.size());
+            EXPECT_EQ(a.lightRefs[ref].type, PN_LIGHTREF_SPHERE);
+            EXPECT_EQ(a.lightRefs[ref].index, i);
         } else {
             EXPECT_EQ(l.primitive, PN_NO_HIT);  // the spot light has no geometry
             EXPECT_FLOAT_EQ(l.cosOuter, std::cos(0.5f));
         }
     }
-    EXPECT_EQ(a.sphereLights.back().cdf, 1.0f);
+    // Every sphere light is one leaf of the light tree.
+    EXPECT_EQ(std::count_if(a.lightRefs.begin(), a.lightRefs.end(),
+                            [](const shader::LightRef& r) { return r.type == PN_LIGHTREF_SPHERE; }),
+              4);
     // The non-emissive sphere is geometry only.
     int greySpheres = 0;
     for (std::size_t i = 0; i < a.triVerts.size(); ++i)
         if (bvh::isSphere(a.triVerts[i]) && a.triAttribs[i].materialId == grey) {
             ++greySpheres;
-            EXPECT_EQ(a.triAttribs[i].lightPmf, 0.0f);
+            EXPECT_EQ(a.triAttribs[i].lightIndex, PN_NO_LIGHT);
         }
     EXPECT_EQ(greySpheres, 1);
 }

@@ -7,8 +7,8 @@
 namespace penumbra {
 
 GBufferPass::GBufferPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                         const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer)
-    : pipeline_(makeScenePipeline(ctx, "gbuffer", scene, frameUniforms, {PN_BINDING_VIEWER, PN_BINDING_GBUFFER})) {
+                         const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer, std::uint32_t features)
+    : pipeline_(makeScenePipeline(ctx, "gbuffer", scene, frameUniforms, {PN_BINDING_VIEWER, PN_BINDING_GBUFFER}, features)) {
     pipeline_->bind(PN_BINDING_VIEWER, viewerUniforms);
     pipeline_->bind(PN_BINDING_GBUFFER, gbuffer);
 }

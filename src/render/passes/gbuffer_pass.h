@@ -12,7 +12,7 @@ namespace penumbra {
 class GBufferPass {
 public:
     GBufferPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer);
+                const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer, std::uint32_t features);
     void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height) const;
 
 private:

@@ -5,8 +5,8 @@
 namespace penumbra {
 
 TracePass::TracePass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                     const gpu::Buffer& accumulation, const gpu::Buffer& counters)
-    : pipeline_(makeScenePipeline(ctx, "trace", scene, frameUniforms, {PN_BINDING_ACCUM, PN_BINDING_COUNTERS})) {
+                     const gpu::Buffer& accumulation, const gpu::Buffer& counters, std::uint32_t features)
+    : pipeline_(makeScenePipeline(ctx, "trace", scene, frameUniforms, {PN_BINDING_ACCUM, PN_BINDING_COUNTERS}, features)) {
     pipeline_->bind(PN_BINDING_ACCUM, accumulation);
     pipeline_->bind(PN_BINDING_COUNTERS, counters);
 }

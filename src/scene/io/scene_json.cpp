@@ -107,11 +107,15 @@ std::vector<T> readFlat(const Reader& r, const Json& j, const std::string& where
     return out;
 }
 
-std::uint32_t readMaterialRef(const Reader& r, const Json& j, const std::string& where, const Scene& scene) {
-    const std::string material = r.string(r.member(j, "material", where), where + ".material");
+// The first material called `material`; `where` names the reference, for the error.
+std::uint32_t findMaterial(const Reader& r, const std::string& material, const std::string& where, const Scene& scene) {
     for (std::size_t i = 0; i < scene.materials.size(); ++i)
         if (scene.materials[i].name == material) return std::uint32_t(i);
-    r.fail(where + ".material", "no material named '" + material + "'");
+    r.fail(where, "no material named '" + material + "'");
+}
+
+std::uint32_t readMaterialRef(const Reader& r, const Json& j, const std::string& where, const Scene& scene) {
+    return findMaterial(r, r.string(r.member(j, "material", where), where + ".material"), where + ".material", scene);
 }
 
 Mesh readInlineMesh(const Reader& r, const Json& j, const std::string& where, const Scene& scene) {
@@ -167,6 +171,98 @@ Mesh readQuad(const Reader& r, const Json& j, const std::string& where, const Sc
     m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     m.indices = {0, 1, 2, 0, 2, 3};
     return m;
+}
+
+// An asset's "material": every mesh and sphere the asset brought takes it. Resolved once the
+// file's "materials" are read, since they may define it.
+struct AssetMaterial {
+    std::string material;
+    std::string where;
+    std::size_t meshBegin, meshEnd, sphereBegin, sphereEnd;
+};
+
+Scene loadAsset(const Reader& r, const Json& a, const std::string& where, const std::filesystem::path& baseDir) {
+    if (a.contains("preset")) return makePreset(r.string(a["preset"], where + ".preset"));
+    std::filesystem::path file = r.string(r.member(a, "file", where), where + ".file");
+    if (file.is_relative()) file = baseDir / file;
+    LoadOptions options;
+    if (a.contains("map")) options.map = r.string(a["map"], where + ".map");
+    return loadSceneFile(file, options);
+}
+
+// "assets": each is loaded, transformed and appended; the first one's camera (transformed with
+// it), background and environment become the scene's.
+std::vector<AssetMaterial> readAssets(const Reader& r, const Json& doc, const std::filesystem::path& baseDir,
+                                      Scene& scene) {
+    std::vector<AssetMaterial> assetMaterials;
+    if (!doc.contains("assets")) return assetMaterials;
+    const Json& assets = doc["assets"];
+    if (!assets.is_array()) r.fail("assets", "expected an array");
+    for (std::size_t i = 0; i < assets.size(); ++i) {
+        const std::string where = "assets[" + std::to_string(i) + "]";
+        const Json& a = assets[i];
+        if (!a.is_object()) r.fail(where, "expected an object");
+        Scene part = loadAsset(r, a, where, baseDir);
+        const Affine transform = readTransform(r, a, where);
+        if (i == 0) {
+            scene.camera = transformCamera(part.camera, transform);
+            scene.background = part.background;
+            scene.environment = part.environment;
+        }
+        AssetMaterial am{"", where, scene.meshes.size(), 0, scene.spheres.size(), 0};
+        appendScene(scene, std::move(part), transform);
+        if (a.contains("material")) {
+            am.material = r.string(a["material"], where + ".material");
+            am.meshEnd = scene.meshes.size();
+            am.sphereEnd = scene.spheres.size();
+            assetMaterials.push_back(am);
+        }
+    }
+    return assetMaterials;
+}
+
+// "materials": a name that exists overrides the given fields of every material of that name; a
+// new name defines a material.
+void readMaterials(const Reader& r, const Json& mats, Scene& scene) {
+    if (!mats.is_array()) r.fail("materials", "expected an array");
+    for (std::size_t i = 0; i < mats.size(); ++i) {
+        const std::string where = "materials[" + std::to_string(i) + "]";
+        std::string matName = r.string(r.member(mats[i], "name", where), where + ".name");
+        bool overridden = false;
+        for (Material& m : scene.materials)
+            if (m.name == matName) readMaterial(r, mats[i], where, m), overridden = true;
+        if (!overridden) {
+            Material m;
+            m.name = matName;
+            readMaterial(r, mats[i], where, m);
+            scene.materials.push_back(m);
+        }
+    }
+}
+
+void assignAssetMaterials(const Reader& r, const std::vector<AssetMaterial>& assetMaterials, Scene& scene) {
+    for (const AssetMaterial& am : assetMaterials) {
+        const std::uint32_t id = findMaterial(r, am.material, am.where + ".material", scene);
+        for (std::size_t m = am.meshBegin; m < am.meshEnd; ++m) scene.meshes[m].material = id;
+        for (std::size_t s = am.sphereBegin; s < am.sphereEnd; ++s) scene.spheres[s].material = id;
+    }
+}
+
+// A material the file writes that no mesh, quad, sphere or asset uses is most likely meant for
+// an asset and forgotten: say so rather than render silently without it.
+void warnUnusedMaterials(const std::string& file, const Json& mats, const Scene& scene) {
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const Mesh& m : scene.meshes) used.at(m.material) = true;
+    for (const Sphere& s : scene.spheres) used.at(s.material) = true;
+    for (std::size_t i = 0; i < mats.size(); ++i) {
+        const std::string matName = mats[i]["name"].get<std::string>();
+        bool anyUsed = false;
+        for (std::size_t k = 0; k < scene.materials.size(); ++k) anyUsed |= used[k] && scene.materials[k].name == matName;
+        if (!anyUsed)
+            logWarning(file + ": materials[" + std::to_string(i) + "] ('" + matName +
+                       "') is not used by any mesh, quad, sphere or asset; give it to an asset with \"material\": \"" +
+                       matName + "\"");
+    }
 }
 
 Light readLight(const Reader& r, const Json& j, const std::string& where) {
@@ -238,54 +334,9 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
 
     Scene scene;
     scene.name = std::filesystem::path(name).stem().string();
-    bool haveCamera = false;
-    if (doc.contains("assets")) {
-        const Json& assets = doc["assets"];
-        if (!assets.is_array()) r.fail("assets", "expected an array");
-        for (std::size_t i = 0; i < assets.size(); ++i) {
-            const std::string where = "assets[" + std::to_string(i) + "]";
-            const Json& a = assets[i];
-            if (!a.is_object()) r.fail(where, "expected an object");
-            Scene part;
-            if (a.contains("preset")) {
-                part = makePreset(r.string(a["preset"], where + ".preset"));
-            } else {
-                std::filesystem::path file = r.string(r.member(a, "file", where), where + ".file");
-                if (file.is_relative()) file = baseDir / file;
-                LoadOptions options;
-                if (a.contains("map")) options.map = r.string(a["map"], where + ".map");
-                part = loadSceneFile(file, options);
-            }
-            if (!haveCamera) {
-                Affine t = readTransform(r, a, where);
-                scene.camera = part.camera;
-                scene.camera.position = t.point(part.camera.position);
-                scene.camera.lookAt = t.point(part.camera.lookAt);
-                scene.camera.up = normalize(t.vector(part.camera.up));
-                scene.background = part.background;
-                scene.environment = part.environment;
-                haveCamera = true;
-            }
-            appendScene(scene, std::move(part), readTransform(r, a, where));
-        }
-    }
-    if (doc.contains("materials")) {
-        const Json& mats = doc["materials"];
-        if (!mats.is_array()) r.fail("materials", "expected an array");
-        for (std::size_t i = 0; i < mats.size(); ++i) {
-            const std::string where = "materials[" + std::to_string(i) + "]";
-            std::string matName = r.string(r.member(mats[i], "name", where), where + ".name");
-            bool overridden = false;
-            for (Material& m : scene.materials)
-                if (m.name == matName) readMaterial(r, mats[i], where, m), overridden = true;
-            if (!overridden) {
-                Material m;
-                m.name = matName;
-                readMaterial(r, mats[i], where, m);
-                scene.materials.push_back(m);
-            }
-        }
-    }
+    const std::vector<AssetMaterial> assetMaterials = readAssets(r, doc, baseDir, scene);
+    if (doc.contains("materials")) readMaterials(r, doc["materials"], scene);
+    assignAssetMaterials(r, assetMaterials, scene);
     if (doc.contains("meshes")) {
         const Json& meshes = doc["meshes"];
         if (!meshes.is_array()) r.fail("meshes", "expected an array");
@@ -344,6 +395,7 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
     if (scene.meshes.empty() && scene.spheres.empty())
         r.fail("top level", "the scene has no geometry (add \"assets\", \"meshes\", \"quads\" or \"spheres\")");
     scene.validate();
+    if (doc.contains("materials")) warnUnusedMaterials(name, doc["materials"], scene);
     try {
         validateCamera(scene.camera);
     } catch (const Error& e) {

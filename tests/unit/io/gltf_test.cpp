@@ -4,8 +4,11 @@
 
 #include <cmath>
 
+#include "../image/test_dir.h"
+#include "../smooth_sphere.h"
 #include "core/error.h"
 #include "io_test_util.h"
+#include "mesh_files.h"
 #include "scene/io/gltf.h"
 
 namespace penumbra {
@@ -83,6 +86,40 @@ TEST_F(GltfScene, MirroredNodeFlipsWindingAndKeepsNormals) {
     expectNear(quad->positions[1], {-1, 0, -3});
     ASSERT_EQ(quad->uvs.size(), 4u);
     EXPECT_FLOAT_EQ(quad->uvs[2].x, 1.0f);
+}
+
+// A node's rotation (quaternion), mirroring non-uniform scale and translation: positions go by
+// T R S, normals by the inverse transpose R S^-1 (written out here from the quaternion), and the
+// winding is reversed so that front faces stay outside.
+TEST(GltfLoader, NodeTransformsTurnNormalsByTheInverseTranspose) {
+    const Vec3 axis = normalize(Vec3{1, 2, 3}), scale{0.5f, -2.0f, 1.5f}, translation{1, -2, 3};
+    const float half = 0.5f * 70.0f * 3.14159265f / 180.0f;
+    const float x = axis.x * std::sin(half), y = axis.y * std::sin(half), z = axis.z * std::sin(half),
+                w = std::cos(half);
+    const Vec3 r0{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)};
+    const Vec3 r1{2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)};
+    const Vec3 r2{2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)};
+    const auto rotate = [&](Vec3 v) { return Vec3{dot(r0, v), dot(r1, v), dot(r2, v)}; };
+
+    const Mesh sphere = test::smoothSphere(Vec3{0}, 1.0f, 4, 6, 0);
+    test::TempDir dir;
+    const nlohmann::json node = {{"rotation", {x, y, z, w}},
+                                 {"scale", {scale.x, scale.y, scale.z}},
+                                 {"translation", {translation.x, translation.y, translation.z}}};
+    test::writeGltf(dir.path(), "sphere", sphere, node);
+    const Scene s = loadGltf(dir / "sphere.gltf");
+    ASSERT_EQ(s.meshes.size(), 1u);
+    const Mesh& m = s.meshes[0];
+    ASSERT_EQ(m.positions.size(), sphere.positions.size());
+    ASSERT_EQ(m.normals.size(), sphere.normals.size());
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+        expectNear(m.positions[i], translation + rotate(sphere.positions[i] * scale), 1e-5f);
+        expectNear(m.normals[i], normalize(rotate(sphere.normals[i] / scale)), 1e-5f);
+    }
+    for (std::size_t t = 0; t < m.indices.size(); t += 3) {
+        EXPECT_EQ(m.indices[t], sphere.indices[t]);
+        EXPECT_EQ(m.indices[t + 1], sphere.indices[t + 2]) << "a mirroring node keeps the winding";
+    }
 }
 
 TEST_F(GltfScene, Materials) {

@@ -82,6 +82,9 @@ public:
     Scene build() {
         scene_.name = wad_.fileName() + ":" + map_.name;
         scene_.background = kSkyRadiance;
+        // The sky lights the level through its sky ceilings, which light sampling finds as
+        // emitters; sampling the background too would send a second shadow ray at the same sky.
+        scene_.environment.sampled = false;
         buildWalls();
         buildFlats();
         placeCamera();

@@ -1,0 +1,276 @@
+// The unified light sampler: one pick among every light in the scene, by its estimated
+// contribution at the shading point, then one sample of that light, so every shading vertex
+// sends one shadow ray whatever the mix of lights.
+//
+// The lights are LightRef entries (render/light_list.h). The first frame.topLightCount are
+// weighed one by one at every point: the environment (pi times its mean luminance), directional
+// lights (illuminance times the cosine bound at the surface) and lights that move every frame
+// (their LightNode, rewritten per frame). Everything bounded in space sits in a light BVH whose
+// root competes with them; the pick descends it choosing children in proportion to their
+// importance (Conty Estevez & Kulla 2018; pbrt-v4's BVHLightSampler): power over squared
+// distance, times bounds on the emitter's and the surface's cosines. lightPickPmf retraces the
+// same choices along the light's bit trail, so MIS uses exactly the probability sampling had.
+#ifndef PN_LIGHT_SAMPLER_GLSL
+#define PN_LIGHT_SAMPLER_GLSL
+
+#include "lib/sampling.glsl"
+#include "lib/rng.glsl"
+#include "lib/lights.glsl"
+#include "lib/sphere_lights.glsl"
+#include "lib/sun.glsl"
+#include "lib/environment.glsl"
+#include "lib/mis.glsl"
+#include "lib/offset.glsl"
+#include "lib/bvh.glsl"
+
+// cos(max(0, a - b)) and sin(max(0, a - b)) from the sines and cosines of angles a, b in [0, pi].
+float cosSubClamped(float sinA, float cosA, float sinB, float cosB) { return cosA > cosB ? 1.0 : cosA * cosB + sinA * sinB; }
+float sinSubClamped(float sinA, float cosA, float sinB, float cosB) { return cosA > cosB ? 0.0 : sinA * cosB - cosA * sinB; }
+
+float sinFromCos(float c) { return sqrt(max(0.0, 1.0 - c * c)); }
+
+
+// How much the lights under `node` could bring to a surface at p with normal n (n = 0: no
+// surface): zero only where they cannot light p at all.
+float lightNodeImportance(LightNode node, vec3 p, vec3 n) {
+    vec3 halfDiagonal = 0.5 * (node.boundsMax - node.boundsMin);
+    vec3 toP = p - (node.boundsMin + halfDiagonal);
+    float dist2 = dot(toP, toP);
+    // Within the bounds the squared distance says little; pbrt-v4 floors it at half the diagonal.
+    float d2 = max(dist2, node.minDistance2);
+    vec3 wi = dist2 > 0.0 ? toP * inversesqrt(dist2) : node.axis;
+    float cosW = dot(node.axis, wi);
+    if (node.twoSided != 0u) cosW = abs(cosW);
+    float sinW = sinFromCos(cosW);
+    // The cone from p that holds the box (through its bounding sphere); every direction from
+    // inside that sphere.
+    float r2 = dot(halfDiagonal, halfDiagonal);
+    float sin2B = dist2 > r2 ? r2 / dist2 : 1.0;
+    float cosB = dist2 > r2 ? sqrt(1.0 - sin2B) : -1.0;
+    float sinB = dist2 > r2 ? sqrt(sin2B) : 0.0;
+    // The smallest angle between an emitting normal and a direction toward p, then the emission
+    // spread beyond it.
+    float cosX = cosSubClamped(sinW, cosW, node.sinThetaO, node.cosThetaO);
+    float sinX = sinSubClamped(sinW, cosW, node.sinThetaO, node.cosThetaO);
+    float cosP = cosSubClamped(sinX, cosX, sinB, cosB);
+    if (cosP <= node.cosThetaE) return 0.0;
+    float importance = node.phi * cosP / d2;
+    if (n != vec3(0.0)) {
+        // The cosine at the surface, either side (transmission), bounded over the box's cone.
+        float cosI = abs(dot(wi, n));
+        importance *= cosSubClamped(sinFromCos(cosI), cosI, sinB, cosB);
+    }
+    return max(importance, 0.0);
+}
+
+// A directional light's illuminance times the best cosine at the surface over its disk.
+float directionalImportance(PunctualLight l, vec3 n) {
+    float cosI = abs(dot(n, l.direction));
+    float cosR = 1.0 - l.coneOneMinusCos;
+    return luminance(l.intensity) * cosSubClamped(sinFromCos(cosI), cosI, sinFromCos(cosR), cosR);
+}
+
+float topLightImportance(uint k, vec3 p, vec3 n) {
+    LightRef r = lights[k];
+    if (r.type == PN_LIGHTREF_ENVIRONMENT) return PN_PI * frame.envLuminance * frame.envIntensity;
+    if (r.index >= frame.punctualCount) return 0.0;  // the viewer's torch, switched off
+    PunctualLight l = punctualLights[r.index];
+    if (l.type == PN_LIGHT_DIRECTIONAL) return directionalImportance(l, n);
+    return lightNodeImportance(lightNodes[k], p, n);
+}
+
+float treeImportance(vec3 p, vec3 n) {
+    return frame.lightNodeCount > frame.topLightCount ? lightNodeImportance(lightNodes[frame.topLightCount], p, n) : 0.0;
+}
+
+float totalLightImportance(vec3 p, vec3 n) {
+    float total = treeImportance(p, n);
+    for (uint k = 0u; k < frame.topLightCount; ++k) total += topLightImportance(k, p, n);
+    return total;
+}
+
+// Probability that a node's first child is chosen at p; -1 when neither child can light p.
+float firstChildProbability(uint node, vec3 p, vec3 n) {
+    float first = lightNodeImportance(lightNodes[node + 1u], p, n);
+    float second = lightNodeImportance(lightNodes[lightNodes[node].childOrLight], p, n);
+    return first + second > 0.0 ? first / (first + second) : -1.0;
+}
+
+struct LightPick {
+    uint ref;   // LightRef index; PN_NO_LIGHT: no light can reach p
+    float pmf;  // probability of this pick at p
+};
+
+LightPick pickLight(vec3 p, vec3 n, inout uint rng) {
+    if (frame.lightPickUniform != 0u) {
+        if (frame.lightRefCount == 0u) return LightPick(PN_NO_LIGHT, 0.0);
+        uint k = min(uint(rngNext(rng) * float(frame.lightRefCount)), frame.lightRefCount - 1u);
+        return LightPick(k, 1.0 / float(frame.lightRefCount));
+    }
+    float tree = treeImportance(p, n);
+    float total = totalLightImportance(p, n);
+    if (!(total > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
+    float u = rngNext(rng) * total;
+    LightPick pick = LightPick(PN_NO_LIGHT, 0.0);
+    for (uint k = 0u; k < frame.topLightCount; ++k) {
+        float w = topLightImportance(k, p, n);
+        if (!(w > 0.0)) continue;
+        pick = LightPick(k, w / total);
+        if (u < w) return pick;
+        u -= w;
+    }
+    if (!(tree > 0.0)) return pick;  // rounding carried u past the last top-level light
+    pick = LightPick(PN_NO_LIGHT, tree / total);
+    uint node = frame.topLightCount;
+    for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
+        uint child = lightNodes[node].childOrLight;
+        if ((child & PN_LIGHT_NODE_LEAF) != 0u) return LightPick(child & ~PN_LIGHT_NODE_LEAF, pick.pmf);
+        float first = firstChildProbability(node, p, n);
+        if (first < 0.0) break;
+        if (rngNext(rng) < first) {
+            node = node + 1u;
+            pick.pmf *= first;
+        } else {
+            node = child;
+            pick.pmf *= 1.0 - first;
+        }
+    }
+    return LightPick(PN_NO_LIGHT, 0.0);
+}
+
+// The probability that pickLight(p, n) returns `ref`.
+float lightPickPmf(uint ref, vec3 p, vec3 n) {
+    if (frame.lightPickUniform != 0u) return 1.0 / float(frame.lightRefCount);
+    float total = totalLightImportance(p, n);
+    if (!(total > 0.0)) return 0.0;
+    if (ref < frame.topLightCount) return topLightImportance(ref, p, n) / total;
+    float pmf = treeImportance(p, n) / total;
+    LightRef r = lights[ref];
+    uint node = frame.topLightCount;
+    for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
+        uint child = lightNodes[node].childOrLight;
+        if ((child & PN_LIGHT_NODE_LEAF) != 0u) return (child & ~PN_LIGHT_NODE_LEAF) == ref ? pmf : 0.0;
+        float first = firstChildProbability(node, p, n);
+        if (first < 0.0) return 0.0;
+        bool second = (depth < 32u ? (r.trailLo >> depth) : (r.trailHi >> (depth - 32u))) % 2u != 0u;
+        if (second) {
+            node = child;
+            pmf *= 1.0 - first;
+        } else {
+            node = node + 1u;
+            pmf *= first;
+        }
+    }
+    return 0.0;
+}
+
+// One sample of a chosen light, seen from p (shading normal n).
+struct LightSample {
+    vec3 wi;        // unit, toward the light
+    float dist;     // to the sampled point; PN_INFINITY for distant lights
+    vec3 target;    // where a shadow ray aims (finite lights): the sampled point, moved off the
+                    // emitter's surface toward p so that the ray never meets the emitter itself
+    vec3 radiance;  // arriving along -wi (or, for a delta light, irradiance-like intensity)
+    float pdf;      // solid angle, the pick included; for a delta light the pick's probability
+    bool isDelta;   // BSDF sampling can never find it: no MIS
+};
+
+LightSample sampleChosenLight(LightPick pick, vec3 p, vec3 n, inout uint rng) {
+    LightSample ls = LightSample(vec3(0.0, 0.0, 1.0), PN_INFINITY, p, vec3(0.0), 0.0, false);
+    LightRef r = lights[pick.ref];
+    vec2 u = rngNext2(rng);
+    if (r.type == PN_LIGHTREF_TRIANGLE) {
+        TrianglePoint tp = sampleTrianglePoint(r.index, u);
+        vec3 toLight = tp.position - p;
+        float dist2 = dot(toLight, toLight);
+        if (!(dist2 > 0.0)) return ls;
+        ls.dist = sqrt(dist2);
+        ls.wi = toLight / ls.dist;
+        float cosLight = -dot(tp.normal, ls.wi);
+        if (cosLight <= 0.0) return ls;
+        ls.radiance = tp.radiance;
+        ls.pdf = pick.pmf / tp.area * dist2 / cosLight;
+        ls.target = offsetRayOrigin(tp.position, tp.normal);
+    } else if (r.type == PN_LIGHTREF_SPHERE) {
+        SphereLightSample ss = sampleSphereLight(sphereLights[r.index], p, u);
+        ls.wi = ss.wi;
+        ls.dist = length(ss.position - p);
+        ls.target = ss.lightOnly ? ss.position : offsetRayOrigin(ss.position, ss.normal);
+        ls.radiance = ss.radiance;
+        ls.pdf = pick.pmf * ss.pdf;
+        // A spot light with a radius has no geometry: BSDF sampling never reaches it.
+        ls.isDelta = ss.lightOnly;
+    } else if (r.type == PN_LIGHTREF_PUNCTUAL) {
+        if (r.index >= frame.punctualCount) return ls;  // the viewer's torch, switched off
+        PunctualLight l = punctualLights[r.index];
+        if (isSunDisk(l)) {
+            ls.wi = sampleSunDisk(l, u);
+            ls.radiance = sunRadiance(l);
+            ls.pdf = pick.pmf * sunConePdf(l);
+        } else {
+            ls.radiance = punctualIncident(l, p, ls.wi, ls.dist);
+            ls.target = l.position;
+            ls.pdf = pick.pmf;
+            ls.isDelta = true;
+        }
+    } else {
+        EnvSample es = sampleEnvironment(n, rng);
+        ls.wi = es.direction;
+        ls.radiance = es.radiance;
+        ls.pdf = pick.pmf * es.pdf;
+    }
+    return ls;
+}
+
+// Whether the shadow ray from `origin` (already off the shading point's surface) to the light
+// sample is blocked. Both ends are off their surfaces, so the ray meets neither the shading
+// surface nor the emitter itself, however far from the world's origin they are.
+bool shadowRayBlocked(vec3 origin, LightSample ls) {
+    if (ls.dist == PN_INFINITY) return traceOccluded(origin, ls.wi, PN_INFINITY);
+    vec3 span = ls.target - origin;
+    float length2 = dot(span, span);
+    if (!(length2 > 0.0)) return false;
+    float len = sqrt(length2);
+    return traceOccluded(origin, span / len, len * (1.0 - 1e-4));
+}
+
+// The solid-angle pdf with which light sampling at the previous vertex (position p, shading
+// normal n) would have produced a BSDF-sampled ray's hit on an emitter: the pick's probability
+// times a triangle's area pdf converted to solid angle, or a sphere's cone pdf.
+float emitterHitPdf(Hit hit, Surface s, vec3 p, vec3 n, vec3 origin, vec3 direction) {
+    float pick = lightPickPmf(s.lightIndex, p, n);
+    if (!(pick > 0.0)) return 0.0;
+    float cosLight = dot(s.geometricNormal, -direction);
+    TriVerts tv = triVerts[hit.triangle];
+    if ((tv.flags & PN_TRI_SPHERE) != 0u) return pick * sphereDirectionPdf(tv.v0, tv.e1.x, origin, hit.t, cosLight);
+    return pick / s.area * hit.t * hit.t / max(cosLight, 1e-12);
+}
+
+// Light carried by a ray that left the scene along `direction` after a BSDF sample at the
+// previous vertex (position p, shading normal n; bsdfPdf 0 for a camera ray or a delta lobe, where
+// no light sampling competes): the environment and any sun disk it points into, MIS-weighted.
+vec3 escapedRadiance(vec3 p, vec3 n, vec3 direction, float bsdfPdf) {
+    const bool unsampled = !(bsdfPdf > 0.0);
+    vec3 L = vec3(0.0);
+    bool environmentSampled = false;
+    for (uint k = 0u; k < frame.topLightCount; ++k) {
+        LightRef r = lights[k];
+        if (r.type == PN_LIGHTREF_ENVIRONMENT) {
+            environmentSampled = true;
+            float pick = unsampled ? 0.0 : lightPickPmf(k, p, n);
+            float lightPdf = pick > 0.0 ? pick * environmentPdf(direction, n) : 0.0;
+            L += environmentRadiance(direction) * misWeightHit(bsdfPdf, lightPdf, unsampled);
+            continue;
+        }
+        if (r.type != PN_LIGHTREF_PUNCTUAL || r.index >= frame.punctualCount) continue;
+        PunctualLight l = punctualLights[r.index];
+        if (!isSunDisk(l) || !insideSunDisk(l, direction)) continue;
+        float pick = unsampled ? 0.0 : lightPickPmf(k, p, n);
+        L += sunRadiance(l) * misWeightHit(bsdfPdf, pick * sunConePdf(l), unsampled);
+    }
+    // An environment left out of light sampling (none, or a Doom sky) is found by escaping rays only.
+    if (!environmentSampled && frame.envIntensity > 0.0) L += environmentRadiance(direction);
+    return L;
+}
+
+#endif

@@ -1,0 +1,161 @@
+#include "render/viewer_bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "core/error.h"
+#include "gpu/buffer.h"
+#include "render/kernel_features.h"
+
+namespace penumbra {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// v turned by `radians` about the unit axis (Rodrigues' formula).
+Vec3 rotateAbout(Vec3 v, Vec3 axis, double radians) {
+    const float c = float(std::cos(radians)), s = float(std::sin(radians));
+    return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0f - c));
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+void renderFrame(InteractiveRenderer& renderer, const Camera& camera, const ViewSettings& view) {
+    renderer.commands().run([&](VkCommandBuffer cmd) { renderer.record(cmd, camera, view); });
+    renderer.finishFrame();
+}
+
+ImageRgb imageFromHistory(const gpu::Context& ctx, InteractiveRenderer& r) {
+    auto texels = gpu::downloadBuffer<shader::HistoryTexel>(ctx, r.commands(), r.history(),
+                                                            std::size_t(r.width()) * r.height());
+    ImageRgb image(int(r.width()), int(r.height()));
+    for (std::size_t i = 0; i < texels.size(); ++i) image.pixels[i] = texels[i].color;
+    return image;
+}
+
+ImageRgb imageFromVec4(const gpu::Context& ctx, InteractiveRenderer& r, const gpu::Buffer& buffer) {
+    auto texels = gpu::downloadBuffer<Vec4>(ctx, r.commands(), buffer, std::size_t(r.width()) * r.height());
+    ImageRgb image(int(r.width()), int(r.height()));
+    for (std::size_t i = 0; i < texels.size(); ++i) image.pixels[i] = {texels[i].x, texels[i].y, texels[i].z};
+    return image;
+}
+
+// Frames from a fresh history with a still camera until their GPU time reaches the budget, then
+// the raw running mean and the denoised image against the reference.
+void measureEqualTimeError(const gpu::Context& ctx, InteractiveRenderer& renderer, const Camera& camera,
+                           const ViewerBenchOptions& o, ViewerBenchResult& result) {
+    if (!o.reference->sameSize(ImageRgb(int(o.width), int(o.height))))
+        throw UsageError("the reference image is " + std::to_string(o.reference->width) + "x" +
+                         std::to_string(o.reference->height) + ", the bench renders " + std::to_string(o.width) +
+                         "x" + std::to_string(o.height) + "; render the reference at the bench's size");
+    renderer.resetHistory();
+    double spent = 0;
+    int frames = 0;
+    while (spent < o.budgetMs || frames == 0) {
+        renderFrame(renderer, camera, o.view);
+        spent += renderer.stats().passMilliseconds[std::size_t(ViewerPass::Frame)];
+        ++frames;
+        if (frames > 1000000) break;  // a device without timestamps reports -1 ms
+    }
+    result.budgetFrames = frames;
+    result.relMseRaw = relativeMse(imageFromHistory(ctx, renderer), *o.reference);
+    if (renderer.denoised()) result.relMseDenoised = relativeMse(imageFromVec4(ctx, renderer, *renderer.denoised()), *o.reference);
+}
+
+}  // namespace
+
+CameraMotion parseCameraMotion(const std::string& name) {
+    if (name == "static") return CameraMotion::Static;
+    if (name == "orbit") return CameraMotion::Orbit;
+    if (name == "walk") return CameraMotion::Walk;
+    throw UsageError("--camera-motion must be static, orbit or walk, not '" + name + "'");
+}
+
+const char* cameraMotionName(CameraMotion motion) {
+    switch (motion) {
+        case CameraMotion::Orbit: return "orbit";
+        case CameraMotion::Walk: return "walk";
+        default: return "static";
+    }
+}
+
+Camera cameraInMotion(const Camera& start, CameraMotion motion, double seconds) {
+    Camera c = start;
+    const Vec3 up = normalize(start.up);
+    if (motion == CameraMotion::Orbit) {
+        c.position = start.lookAt + rotateAbout(start.position - start.lookAt, up, 2 * kPi * seconds / 12.0);
+    } else if (motion == CameraMotion::Walk) {
+        const Vec3 view = start.lookAt - start.position;
+        Vec3 ahead = view - up * dot(view, up);
+        ahead = length(ahead) > 0 ? normalize(ahead) : normalize(view);
+        c.position = start.position + ahead * float(1.4 * seconds);
+        const Vec3 look = rotateAbout(view, up, 0.15 * std::sin(2 * kPi * seconds / 4.0));
+        c.lookAt = c.position + look;
+    }
+    return c;
+}
+
+double relativeMse(const ImageRgb& image, const ImageRgb& reference) {
+    if (!image.sameSize(reference)) throw Error("relative MSE of images of different sizes");
+    double sum = 0;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            const double r = reference.pixels[i][k], d = double(image.pixels[i][k]) - r;
+            sum += d * d / (r * r + 0.01);
+        }
+    return image.pixels.empty() ? 0.0 : sum / (3.0 * double(image.pixels.size()));
+}
+
+ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight,
+                                 const ViewerBenchOptions& o) {
+    if (o.frames < 1 || o.frames > 100000) throw UsageError("--frames must be between 1 and 100000");
+    InteractiveRenderer renderer(ctx, scene, torchIsLastLight);
+    renderer.resize(o.width, o.height);
+    double scriptTime = 0;
+    auto nextCamera = [&] {
+        Camera c = cameraInMotion(scene.camera, o.motion, scriptTime);
+        scriptTime += o.frameSeconds;
+        return c;
+    };
+    const auto warmStart = std::chrono::steady_clock::now();
+    for (int k = 0; k < o.warmupFrames ||
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - warmStart).count() < o.warmupSeconds;
+         ++k)
+        renderFrame(renderer, nextCamera(), o.view);
+
+    std::vector<double> frameMs;
+    std::map<std::string, std::vector<double>> passMs;
+    std::vector<double> mrays;
+    double raysPerSample = 0;
+    const double samples = double(o.width) * o.height * o.view.samplesPerFrame;
+    for (int k = 0; k < o.frames; ++k) {
+        renderFrame(renderer, nextCamera(), o.view);
+        const ViewerStats& st = renderer.stats();
+        for (std::uint32_t p = 0; p < std::uint32_t(ViewerPass::Count); ++p) {
+            if (st.passMilliseconds[p] <= 0) continue;
+            if (ViewerPass(p) == ViewerPass::Frame) frameMs.push_back(st.passMilliseconds[p]);
+            else passMs[viewerPassName(ViewerPass(p))].push_back(st.passMilliseconds[p]);
+        }
+        mrays.push_back(st.raysPerSecond * 1e-6);
+        raysPerSample += double(st.rays) / samples;
+    }
+    ViewerBenchResult result;
+    result.kernelFeatures = kernelFeatureNames(renderer.kernelFeatures());
+    result.traceStatistics = renderer.tracePipeline().statistics();
+    result.frames = o.frames;
+    result.frameMs = median(frameMs);
+    for (auto& [name, values] : passMs) result.passMs[name] = median(values);
+    result.mraysPerSecond = median(mrays);
+    result.raysPerPixelPerSample = raysPerSample / o.frames;
+    if (o.reference) measureEqualTimeError(ctx, renderer, scene.camera, o, result);
+    return result;
+}
+
+}  // namespace penumbra

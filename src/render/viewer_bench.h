@@ -1,0 +1,59 @@
+// The viewer's whole frame, headless: InteractiveRenderer driven frame after frame with a
+// scripted camera, timed with GPU timestamps per pass (`penumbra bench --viewer`).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+
+#include "image/image.h"
+#include "render/interactive_renderer.h"
+
+namespace penumbra {
+
+enum class CameraMotion { Static, Orbit, Walk };
+CameraMotion parseCameraMotion(const std::string& name);  // "static" | "orbit" | "walk"; UsageError otherwise
+const char* cameraMotionName(CameraMotion motion);
+
+// The camera `seconds` into a scripted motion that starts at `start`:
+//   orbit: circles the look-at point at the starting distance, one turn every 12 s;
+//   walk:  walks along the view direction at 1.4 m/s with a gentle side-to-side look (a
+//          person walking through a level; it may pass through walls, which is fine for timing).
+Camera cameraInMotion(const Camera& start, CameraMotion motion, double seconds);
+
+struct ViewerBenchOptions {
+    std::uint32_t width = 1280, height = 800;
+    ViewSettings view;  // spp, bounces, temporal, denoiser, torch
+    CameraMotion motion = CameraMotion::Static;
+    double frameSeconds = 1.0 / 60.0;  // scripted time per frame (the motion does not depend on speed)
+    int frames = 200;                  // timed frames (medians over these)
+    int warmupFrames = 30;             // at least this many untimed frames ...
+    double warmupSeconds = 1.5;        // ... and at least this long, so clocks settle
+    // Equal-time error: when set, frames run (after the warm-up, from a fresh history) until their
+    // summed GPU frame time reaches budgetMs, and the images are compared with the reference.
+    std::optional<ImageRgb> reference;
+    double budgetMs = 0;
+};
+
+struct ViewerBenchResult {
+    double frameMs = 0;                    // median of the whole frame's GPU time
+    std::map<std::string, double> passMs;  // median GPU time per pass that ran
+    double raysPerPixelPerSample = 0;      // mean over the timed frames
+    double mraysPerSecond = 0;             // rays of the median frame over its trace time
+    int frames = 0;
+    // Equal-time error (only with a reference): relative MSE of the raw running mean and of the
+    // denoised image, and how many frames (and samples per pixel) fitted in the budget.
+    std::optional<double> relMseRaw, relMseDenoised;
+    int budgetFrames = 0;
+    // The trace kernel as compiled: what it was specialised for and the driver's statistics.
+    std::string kernelFeatures;
+    std::vector<gpu::PipelineStatistic> traceStatistics;
+};
+
+ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight,
+                                 const ViewerBenchOptions& options);
+
+// Relative MSE (Rousselle et al.): mean over pixels and channels of (x - r)^2 / (r^2 + 0.01).
+double relativeMse(const ImageRgb& image, const ImageRgb& reference);
+
+}  // namespace penumbra

@@ -1,0 +1,60 @@
+// `penumbra bench --viewer`: the viewer's whole frame, headless, with the JSON keys scripts read.
+#include <nlohmann/json.hpp>
+
+#include "cli_fixture.h"
+
+namespace penumbra::test {
+namespace {
+
+using BenchCliTest = CliTest;
+
+const char* kTinyViewer = "bench cornell --viewer --width 64 --height 40 --frames 2 --warmup-frames 0 --warmup-seconds 0 --json";
+
+TEST_F(BenchCliTest, ViewerJsonHasEveryKeyScriptsRead) {
+    RunResult r = run(kTinyViewer);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_GT(j.at("viewer_frame_ms").get<double>(), 0.0);
+    EXPECT_EQ(j.at("spp").get<int>(), 1);
+    EXPECT_EQ(j.at("width").get<int>(), 64);
+    EXPECT_EQ(j.at("height").get<int>(), 40);
+    EXPECT_EQ(j.at("bounces").get<int>(), 4);
+    // At least the camera ray; every path in the closed box also sends shadow rays.
+    EXPECT_GT(j.at("rays_per_pixel_per_sample").get<double>(), 1.0);
+    const auto& passes = j.at("passes");
+    double sum = 0;
+    for (const char* pass : {"trace", "G-buffer", "temporal", "denoise", "tonemap"}) {
+        ASSERT_TRUE(passes.contains(pass)) << pass << " missing in " << r.out;
+        sum += passes.at(pass).get<double>();
+    }
+    // The frame's own interval holds every pass (medians of different frames: allow rounding).
+    EXPECT_GE(j.at("viewer_frame_ms").get<double>() * 1.05, sum * 0.5);
+}
+
+TEST_F(BenchCliTest, ViewerCameraMotionsRunAndBadOnesAreUsageErrors) {
+    for (const char* motion : {"orbit", "walk"}) {
+        RunResult r = run(std::string(kTinyViewer) + " --camera-motion " + motion);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_EQ(nlohmann::json::parse(r.out).at("camera_motion").get<std::string>(), motion);
+    }
+    expectOneLineError(run(std::string(kTinyViewer) + " --camera-motion spin"), 2, "static, orbit or walk");
+    expectOneLineError(run(std::string(kTinyViewer) + " --denoise 9"), 2, "--denoise");
+}
+
+TEST_F(BenchCliTest, EqualTimeErrorAgainstAReference) {
+    ASSERT_EQ(run("render cornell --width 64 --height 40 --spp 64 --quiet -o ref.exr").exitCode, 0);
+    RunResult r = run(std::string(kTinyViewer) + " --reference ref.exr --budget-ms 1");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_GE(j.at("budget_frames").get<int>(), 1);
+    const double raw = j.at("rel_mse_raw").get<double>(), denoised = j.at("rel_mse_denoised").get<double>();
+    EXPECT_GT(raw, 0.0);
+    EXPECT_LT(raw, 10.0);  // one noisy frame of the same image, not a different image
+    // The denoiser's whole point: much less error than the raw frame it filtered.
+    EXPECT_LT(denoised, raw);
+    ASSERT_EQ(run("render cornell --width 32 --height 40 --spp 1 --quiet -o small.exr").exitCode, 0);
+    expectOneLineError(run(std::string(kTinyViewer) + " --reference small.exr"), 2, "reference");
+}
+
+}  // namespace
+}  // namespace penumbra::test
