@@ -26,7 +26,7 @@ struct ViewSettings {
     std::uint32_t samplesPerFrame = 1;
     std::uint32_t maxBounces = 8;
     // Russian roulette may end paths from this bounce on. Earlier starts make frames faster but
-    // noisier per unit of time on most scenes (docs/PERFORMANCE.md, "Russian roulette"); a scene
+    // noisier per unit of time on most scenes (docs/PERFORMANCE.md, "Equal-time error"); a scene
     // may ask for another start (Scene::viewerRouletteStart: Doom levels use 2).
     std::uint32_t rouletteStart = 3;
     float resolutionScale = 1.0f;  // render at this fraction of the window, upscaled to it
