@@ -79,6 +79,17 @@ TEST_F(CliTest, ZeroOrAbsurdSizesAreRefusedBeforeAnyWork) {
     EXPECT_TRUE(filesIn(dir).empty());
 }
 
+// A mesh with nothing renderable is one line and exit 1, never a black image: a NaN corner
+// (refused by the parser) and finite corners whose triangle overflows float arithmetic.
+TEST_F(CliTest, MeshWithoutARenderableFaceIsAnError) {
+    std::ofstream(dir / "nan.obj") << "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n";
+    std::ofstream(dir / "huge.obj") << "v 0 0 0\nv 1 0 0\nv 3e38 3e38 0\nf 1 2 3\n";
+    expectOneLineError(run("render nan.obj --width 8 --height 8 --spp 1 -o nan.png"), 1, "not a finite number");
+    expectOneLineError(run("render huge.obj --width 8 --height 8 --spp 1 -o huge.png"), 1, "no face can be rendered");
+    EXPECT_FALSE(fs::exists(dir / "nan.png"));
+    EXPECT_FALSE(fs::exists(dir / "huge.png"));
+}
+
 TEST_F(CliTest, UnwritableOutputFailsCleanlyAndKeepsTheOldFile) {
     expectOneLineError(run("render --spp 1 -o missing-dir/a.png"), 1, "missing-dir");
     fs::create_directory(dir / "adir");

@@ -20,6 +20,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "scene/face_check.h"
 #include "scene/io/normals.h"
 #include "scene/io/texture_io.h"
 
@@ -286,8 +287,11 @@ public:
         scene_.name = name_;
         for (std::size_t i = 0; i < model_.materials.size(); ++i) scene_.materials.push_back(material(int(i)));
         traverse();
+        if (scene_.meshes.empty() && skipped_.total() > 0)
+            throw Error(name_ + ": no face can be rendered: the file has " + skipped_.describe());
         if (scene_.meshes.empty())
             throw Error(name_ + ": the glTF scene has no triangles (no mesh with TRIANGLES primitives is reachable)");
+        skipped_.warn(name_);
         if (scene_.materials.empty()) defaultMaterial();
         if (!cameraSet_) scene_.camera = cameraFittingBounds(scene_.bounds());
         scene_.validate();
@@ -793,11 +797,13 @@ private:
         m.indices = local->indices;
         if (det < 0)  // mirrored: keep counter-clockwise front faces
             for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) std::swap(m.indices[t + 1], m.indices[t + 2]);
-        scene_.meshes.push_back(std::move(m));
+        dropBadTriangles(m, skipped_);
+        if (!m.indices.empty()) scene_.meshes.push_back(std::move(m));
     }
 
     const Model& model_;
     std::string name_;
+    SkippedFaces skipped_;
     Scene scene_;
     int defaultMaterial_ = -1;
     bool cameraSet_ = false;

@@ -19,6 +19,7 @@
 #include "core/big_buffer.h"
 #include "core/log.h"
 #include "core/mapped_file.h"
+#include "scene/face_check.h"
 #include "scene/io/normals.h"
 #include "scene/io/obj_parse.h"
 #include "scene/io/texture_io.h"
@@ -148,9 +149,11 @@ public:
         scene_.name = name_;
         convertMaterials(materials);
         collectFaces(parsed, materialIds(parsed, materialIndex), materials.size());
-        if (degenerate_ > 0)
-            logWarning(name_ + ": skipped " + std::to_string(degenerate_) + " degenerate face" +
-                       (degenerate_ == 1 ? "" : "s"));
+        const bool anyFace = std::any_of(builders_.begin(), builders_.end(),
+                                         [](const Builder& b) { return !b.mesh.indices.empty(); });
+        if (!anyFace && skipped_.total() > 0)
+            throw Error(name_ + ": no face can be rendered: the file has " + skipped_.describe());
+        skipped_.warn(name_);
 
         for (Builder& b : builders_) {
             if (b.mesh.indices.empty()) continue;
@@ -442,7 +445,7 @@ private:
             const obj::Corner* idx = &a.corners[a.faceStart[f]];
             const std::size_t count = a.faceStart[f + 1] - a.faceStart[f];
             if (count < 3) {
-                ++degenerate_;
+                skipped_.add(FaceDefect::Degenerate);
                 continue;
             }
             corners.clear();
@@ -454,9 +457,11 @@ private:
             const std::uint32_t builder = builderFor(materialId, materialCount);
             for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
                 const std::uint32_t i0 = tris[t], i1 = tris[t + 1], i2 = tris[t + 2];
-                const Vec3 e = cross(corners[i1] - corners[i0], corners[i2] - corners[i0]);
-                if (!(dot(e, e) > 0) || idx[i0].v == idx[i1].v || idx[i1].v == idx[i2].v || idx[i0].v == idx[i2].v) {
-                    ++degenerate_;
+                const FaceDefect d = idx[i0].v == idx[i1].v || idx[i1].v == idx[i2].v || idx[i0].v == idx[i2].v
+                                         ? FaceDefect::Degenerate
+                                         : faceDefect(corners[i0], corners[i1], corners[i2]);
+                if (d != FaceDefect::None) {
+                    skipped_.add(d);
                     continue;
                 }
                 for (std::uint32_t k : {i0, i1, i2})
@@ -477,7 +482,7 @@ private:
     std::vector<std::uint32_t> chainHead_;
     std::vector<VertexKey> keys_;
     std::map<std::string, int> textureCache_;
-    std::size_t degenerate_ = 0;
+    SkippedFaces skipped_;
 };
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "core/log.h"
 #include "core/mapped_file.h"
 #include "core/parallel.h"
+#include "scene/face_check.h"
 #include "scene/io/gzip.h"
 #include "scene/io/normals.h"
 #include "scene/io/ply_body.h"
@@ -220,7 +221,7 @@ private:
                            ")");
                 if (n < 3) {
                     r.skipMany(p.type, std::uint64_t(n));
-                    ++degenerate_;
+                    skipped_.add(FaceDefect::Degenerate);
                     continue;
                 }
                 corners.clear();
@@ -281,34 +282,15 @@ private:
         }
     }
 
-    // Drops triangles that repeat a vertex or have no area, in place.
-    void dropDegenerateTriangles() {
-        std::vector<std::uint32_t>& idx = mesh_.indices;
-        std::size_t kept = 0;
-        for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
-            const std::uint32_t a = idx[t], b = idx[t + 1], c = idx[t + 2];
-            const Vec3 n = cross(mesh_.positions[b] - mesh_.positions[a],
-                                 mesh_.positions[c] - mesh_.positions[a]);
-            if (a == b || b == c || a == c || !(dot(n, n) > 0)) {
-                ++degenerate_;
-                continue;
-            }
-            idx[kept++] = a;
-            idx[kept++] = b;
-            idx[kept++] = c;
-        }
-        idx.resize(kept);
-    }
-
     Scene finish() {
         if (!facesSeen_)
             throw Error(name_ +
                         ": the file has no 'face' element (point clouds are not supported)");
-        dropDegenerateTriangles();
-        if (degenerate_ > 0)
-            logWarning(name_ + ": skipped " + std::to_string(degenerate_) + " degenerate face" +
-                       (degenerate_ == 1 ? "" : "s"));
-        if (mesh_.indices.empty()) throw Error(name_ + ": the file has no faces with an area");
+        dropBadTriangles(mesh_, skipped_);
+        if (mesh_.indices.empty())
+            throw Error(name_ + ": no face can be rendered: the file has " +
+                        (skipped_.total() > 0 ? skipped_.describe() : std::string("no faces")));
+        skipped_.warn(name_);
         bool goodNormals = layout_.normals;
         for (Vec3& n : mesh_.normals) {
             n = normalize(n);
@@ -340,7 +322,7 @@ private:
     VertexLayout layout_;
     std::uint64_t vertexCount_ = 0;
     bool facesSeen_ = false;
-    std::size_t degenerate_ = 0;
+    SkippedFaces skipped_;
     ColourSum colour_;
     Mesh mesh_;
 };

@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
 
 #include "core/error.h"
 #include "io_test_util.h"
+#include "scene/face_check.h"
 #include "scene/io/obj.h"
 
 namespace penumbra {
@@ -177,6 +179,37 @@ TEST(ObjLoader, DegenerateFacesAreSkipped) {
     std::string err = testing::internal::GetCapturedStderr();
     EXPECT_EQ(s.triangleCount(), 1u);
     EXPECT_NE(err.find("degenerate"), std::string::npos) << err;
+}
+
+TEST(FaceCheck, NonFiniteAndOverflowingFacesAreToldApart) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(faceDefect({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), FaceDefect::None);
+    EXPECT_EQ(faceDefect({0, 0, 0}, {1, 0, 0}, {2, 0, 0}), FaceDefect::Degenerate);
+    EXPECT_EQ(faceDefect({0, 0, 0}, {1, 0, 0}, {nan, 1, 0}), FaceDefect::NotFinite);
+    EXPECT_EQ(faceDefect({-3e38f, 0, 0}, {3e38f, 0, 0}, {0, 1, 0}), FaceDefect::NotFinite);  // an edge overflows
+    EXPECT_EQ(faceDefect({0, 0, 0}, {1, 0, 0}, {3e38f, 3e38f, 0}), FaceDefect::NotFinite);  // |normal|^2 overflows
+}
+
+// Finite corners whose triangle overflows float arithmetic: the renderer would get NaN normals
+// and a black image, so the face is skipped and said to be.
+TEST(ObjLoader, OverflowingFacesAreSkippedWithAWarning) {
+    testing::internal::CaptureStderr();
+    Scene s = loadObjFromMemory("v 0 0 0\nv 1 0 0\nv 3e38 3e38 0\nf 1 2 3\nv 0 0 1\nv 1 0 1\nv 0 1 1\nf 4 5 6\n", "",
+                                ".", "big.obj");
+    std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(s.triangleCount(), 1u);
+    EXPECT_NE(err.find("big.obj: skipped 1 face with coordinates that are not finite"), std::string::npos) << err;
+}
+
+TEST(ObjLoader, NoRenderableFaceLeftIsAnError) {
+    testing::internal::CaptureStderr();
+    std::string e = errorOf([] { loadObjFromMemory("v 0 0 0\nv 1 0 0\nv 3e38 3e38 0\nf 1 2 3\n", "", ".", "big.obj"); });
+    std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_NE(e.find("big.obj: no face can be rendered"), std::string::npos) << e;
+    EXPECT_NE(e.find("not finite"), std::string::npos) << e;
+    EXPECT_EQ(err, "") << "the error alone says what is wrong";
+    e = errorOf([] { loadObjFromMemory("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", "", ".", "flat.obj"); });
+    EXPECT_NE(e.find("flat.obj: no face can be rendered: the file has 1 face without area"), std::string::npos) << e;
 }
 
 TEST(ObjLoader, MtlFromMemoryAndMaterialHints) {

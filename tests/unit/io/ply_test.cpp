@@ -141,7 +141,10 @@ TEST(PlyLoader, MalformedFilesGiveOneLineErrors) {
          "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
          "property float z\nend_header\n0 0 0\n",
          "no 'face' element"},
-        {"only degenerate", asciiCube("0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n"), "no faces with an area"},
+        {"only degenerate", asciiCube("0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n"),
+         "t.ply: no face can be rendered: the file has 1 face without area"},
+        {"only overflowing", asciiCube("0 0 0\n1 0 0\n3e38 3e38 0\n3 0 1 2\n"),
+         "t.ply: no face can be rendered: the file has 1 face with coordinates that are not finite"},
         {"corrupt gzip", std::string("\x1f\x8b\x08\x00garbage", 11), "t.ply: "},
     };
     for (const Malformed& c : cases) {
