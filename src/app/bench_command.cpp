@@ -184,7 +184,7 @@ void runBench(const BenchArgs& args) {
 void registerBench(CLI::App& app, Action& action) {
     auto args = std::make_shared<BenchArgs>();
     CLI::App* cmd = app.add_subcommand("bench", "measure BVH build, rays per second and frame time on the GPU");
-    cmd->add_option("scene", args->scene, "built-in scene or scene file");
+    cmd->add_option("scene", args->scene, sceneArgumentHelp());
     cmd->add_option("--map", args->map, "level of a .wad file");
     cmd->add_option("--width", args->width, "frame width (default 1920)");
     cmd->add_option("--height", args->height, "frame height (default 1080)");

@@ -10,6 +10,10 @@
 
 namespace penumbra::app {
 
+std::string sceneArgumentHelp() {
+    return "built-in scene (" + presetList() + ") or a " + sceneFileExtensions() + " file (default cornell)";
+}
+
 void addDeviceOption(CLI::App& cmd, std::string& device) {
     cmd.add_option("--device", device,
                    "Vulkan device: index from 'penumbra info' or part of its name (default: best; env PENUMBRA_DEVICE)");

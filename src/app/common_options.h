@@ -26,6 +26,10 @@ struct CameraOverrides {
     std::string focusPoint;                        // "x,y,z": focus at its depth along the view
 };
 
+// Help for a command's scene argument: every built-in scene and file format, from where they are
+// registered (presets/registry.cpp, io/load.cpp).
+std::string sceneArgumentHelp();
+
 void addDeviceOption(CLI::App& cmd, std::string& device);
 // --no-bvh-cache on a command; configureBvhCache() (main, before the action) reads it.
 void addBvhCacheOption(CLI::App& cmd);

@@ -89,8 +89,7 @@ void runRender(const RenderArgs& args, const CLI::App& cmd) {
 void registerRender(CLI::App& app, Action& action) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "render a scene to a PNG (tone mapped) or EXR (linear HDR) file");
-    cmd->add_option("scene", args->scene,
-                    "built-in scene (cornell, furnace) or a .obj, .gltf, .glb, .wad or .json file (default cornell)");
+    cmd->add_option("scene", args->scene, sceneArgumentHelp());
     cmd->add_option("--map", args->map, "level of a .wad file, e.g. E1M1 or MAP01 (default: the first)");
     cmd->add_option("-o,--output", args->output, "output file, .png or .exr (default out/SCENE.png)");
     cmd->add_option("--spp", args->settings.samplesPerPixel, "samples per pixel");

@@ -51,7 +51,7 @@ void runView(ViewArgs args) {
 void registerView(CLI::App& app, Action& action) {
     auto args = std::make_shared<ViewArgs>();
     CLI::App* cmd = app.add_subcommand("view", "open a window and explore a scene interactively (starts paused)");
-    cmd->add_option("scene", args->scene, "built-in scene or a scene file, as for 'render' (default cornell)");
+    cmd->add_option("scene", args->scene, sceneArgumentHelp());
     cmd->add_option("--map", args->map, "level of a .wad file, e.g. E1M1 or MAP01 (default: the first)");
     cmd->add_option("--width", args->options.width, "window width (default 1280)");
     cmd->add_option("--height", args->options.height, "window height (default 720)");

@@ -9,6 +9,8 @@
 
 #include "cli_fixture.h"
 #include "image/write.h"
+#include "scene/io/load.h"
+#include "scene/presets/presets.h"
 
 namespace penumbra::test {
 namespace {
@@ -56,6 +58,16 @@ TEST_F(CliTest, TorchColourAndRangeShapeTheCameraLight) {
     EXPECT_LT(std::abs(faded.x - plain.x), 0.2f * (red.x - plain.x));
     expectOneLineError(run("render --torch-color 2,0,0"), 2, "--torch-color");
     expectOneLineError(run("render --torch-range -1"), 2, "--torch-range");
+}
+
+// The help names every built-in scene and file format there is, not a list written by hand.
+TEST_F(CliTest, RenderHelpNamesEveryBuiltInSceneAndFormat) {
+    const RunResult r = run("render --help");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    for (const std::string& name : presetNames()) EXPECT_NE(r.out.find(name), std::string::npos) << name << " in:\n" << r.out;
+    EXPECT_NE(r.out.find(sceneFileExtensions()), std::string::npos) << r.out;
+    for (const char* ext : {".obj", ".ply", ".gltf", ".glb", ".wad", ".json"})
+        EXPECT_NE(r.out.find(ext), std::string::npos) << ext;
 }
 
 TEST_F(CliTest, UnknownSceneIsAUsageError) { expectOneLineError(run("render nosuchscene"), 2, "cornell"); }

@@ -34,6 +34,8 @@ std::string head(const std::filesystem::path& path, std::size_t n) {
 
 }  // namespace
 
+std::string sceneFileExtensions() { return ".obj, .ply, .ply.gz, .gltf, .glb, .wad or .json"; }
+
 std::string readFileBytes(const std::filesystem::path& path, std::size_t maxBytes) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
@@ -76,8 +78,8 @@ Scene loadSceneFile(const std::filesystem::path& path, const LoadOptions& option
         return loadPly(path);
     }
     if (ext == ".json") return loadSceneJson(path);
-    throw UsageError("cannot tell the format of '" + path.string() +
-                     "': use a built-in scene name or a .obj, .ply, .ply.gz, .gltf, .glb, .wad or .json file");
+    throw UsageError("cannot tell the format of '" + path.string() + "': use a built-in scene name or a " +
+                     sceneFileExtensions() + " file");
 }
 
 Scene loadSceneByName(const std::string& nameOrPath, const LoadOptions& options) {

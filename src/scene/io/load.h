@@ -12,6 +12,9 @@ struct LoadOptions {
     std::string map;  // WAD: E1M1, MAP01, ...; empty picks the first map in the file
 };
 
+// The scene file formats loadSceneFile reads, for messages and help: ".obj, .ply, ..., or .json".
+std::string sceneFileExtensions();
+
 // Loads .obj, .ply (.ply.gz), .gltf, .glb, .wad or .json. Throws Error naming the file and the problem.
 Scene loadSceneFile(const std::filesystem::path& path, const LoadOptions& options = {});
 

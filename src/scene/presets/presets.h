@@ -32,6 +32,8 @@ Scene makeMaterialSpheres();
 Scene makeBvhLesson();
 
 std::vector<std::string> presetNames();
+// The names, comma-separated, for messages and help.
+std::string presetList();
 bool isPreset(const std::string& name);
 // Throws UsageError listing the built-in names when `name` is not one.
 Scene makePreset(const std::string& name);

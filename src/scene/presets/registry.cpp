@@ -2,25 +2,45 @@
 #include "scene/presets/presets.h"
 
 namespace penumbra {
+namespace {
 
-std::vector<std::string> presetNames() { return {"cornell", "furnace", "caffeine", "bunny-room", "materials", "bvh-lesson"}; }
+struct Preset {
+    const char* name;
+    Scene (*make)();
+};
+
+Scene makeDefaultFurnace() { return makeFurnace(0.5f, Vec3{1.0f}); }
+
+// Every built-in scene, once: names, lookups, errors and the command-line help all read this.
+constexpr Preset kPresets[] = {
+    {"cornell", makeCornellBox}, {"furnace", makeDefaultFurnace},      {"caffeine", makeCaffeine},
+    {"bunny-room", makeBunnyRoom}, {"materials", makeMaterialSpheres}, {"bvh-lesson", makeBvhLesson},
+};
+
+}  // namespace
+
+std::vector<std::string> presetNames() {
+    std::vector<std::string> names;
+    for (const Preset& p : kPresets) names.push_back(p.name);
+    return names;
+}
+
+std::string presetList() {
+    std::string list;
+    for (const Preset& p : kPresets) list += (list.empty() ? "" : ", ") + std::string(p.name);
+    return list;
+}
 
 bool isPreset(const std::string& name) {
-    for (const std::string& n : presetNames())
-        if (n == name) return true;
+    for (const Preset& p : kPresets)
+        if (name == p.name) return true;
     return false;
 }
 
 Scene makePreset(const std::string& name) {
-    if (name == "cornell") return makeCornellBox();
-    if (name == "furnace") return makeFurnace(0.5f, Vec3{1.0f});
-    if (name == "caffeine") return makeCaffeine();
-    if (name == "bunny-room") return makeBunnyRoom();
-    if (name == "materials") return makeMaterialSpheres();
-    if (name == "bvh-lesson") return makeBvhLesson();
-    std::string list;
-    for (const std::string& n : presetNames()) list += (list.empty() ? "" : ", ") + n;
-    throw UsageError("unknown scene '" + name + "'; built-in scenes are: " + list);
+    for (const Preset& p : kPresets)
+        if (name == p.name) return p.make();
+    throw UsageError("unknown scene '" + name + "'; built-in scenes are: " + presetList());
 }
 
 }  // namespace penumbra
