@@ -38,7 +38,7 @@ void runView(ViewArgs args) {
     if (args.fixedDt && !(*args.fixedDt > 0 && *args.fixedDt <= 1))
         throw UsageError("--fixed-dt must be a time step in seconds, above 0 and at most 1");
     args.options.fixedDt = args.fixedDt;
-    // Read before any window opens, so a bad script is one line and exit code 2.
+    // Read before any window opens, so a bad script is one line and exit code 1.
     if (!args.script.empty()) args.options.script = viewer::loadInputScript(args.script);
     args.options.vsync = !args.noVsync;
     args.options.debug = viewer::parseDebugView(args.debug);

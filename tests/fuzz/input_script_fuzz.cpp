@@ -1,5 +1,5 @@
 // libFuzzer target for the viewer's input script (--script): any input must parse or throw
-// penumbra::UsageError, and a parsed script must play through the controls.
+// penumbra::Error, and a parsed script must play through the controls.
 #include <cstdint>
 #include <string_view>
 
@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             (void)penumbra::viewer::cameraInputFrom(input);
             penumbra::viewer::endInputFrame(input);
         }
-    } catch (const penumbra::UsageError&) {
+    } catch (const penumbra::Error&) {
     }
     return 0;
 }

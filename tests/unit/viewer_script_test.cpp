@@ -12,7 +12,7 @@ namespace {
 std::string errorOf(const std::string& text) {
     try {
         parseInputScript(text, "walk.txt");
-    } catch (const UsageError& e) {
+    } catch (const Error& e) {
         return e.what();
     }
     return "(no error)";
@@ -71,8 +71,8 @@ TEST(ViewerScript, EveryMalformedLineIsOneErrorNamingItsLine) {
     }
 }
 
-TEST(ViewerScript, AMissingFileIsAUsageError) {
-    EXPECT_THROW(loadInputScript("/nonexistent/walk.txt"), UsageError);
+TEST(ViewerScript, AMissingFileIsAnInputError) {
+    EXPECT_THROW(loadInputScript("/nonexistent/walk.txt"), Error);
 }
 
 TEST(ViewerScript, ThePlayerAppliesEventsWhenTheirTimeComesThroughTheControls) {

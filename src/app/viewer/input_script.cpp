@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <utility>
 
@@ -134,7 +135,7 @@ std::vector<ScriptEvent> parseInputScript(std::string_view text, const std::stri
             if (events.size() >= kMaxScriptEvents) throw BadLine{"more than a million events"};
             events.push_back(parseEvent(w, events.empty() ? 0.0 : events.back().time));
         } catch (const BadLine& bad) {
-            throw UsageError(name + ":" + std::to_string(lineNumber) + ": " + bad.what +
+            throw Error(name + ":" + std::to_string(lineNumber) + ": " + bad.what +
                              " (expected 'SECONDS key NAME down|up' or 'SECONDS mouse DX DY')");
         }
     }
@@ -142,14 +143,17 @@ std::vector<ScriptEvent> parseInputScript(std::string_view text, const std::stri
 }
 
 std::vector<ScriptEvent> loadInputScript(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw Error("--script: cannot read " + path + ": it is not a regular file");
     std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) throw UsageError("--script: cannot read " + path);
+    if (!in) throw Error("--script: cannot read " + path);
     const std::streamoff size = in.tellg();
     if (size < 0 || size > kMaxScriptBytes)
-        throw UsageError("--script: " + path + " is larger than 16 MiB");
+        throw Error("--script: " + path + " is larger than 16 MiB");
     std::string text(std::size_t(size), '\0');
     in.seekg(0);
-    if (!in.read(text.data(), size)) throw UsageError("--script: cannot read " + path);
+    if (!in.read(text.data(), size)) throw Error("--script: cannot read " + path);
     return parseInputScript(text, path);
 }
 

@@ -26,9 +26,9 @@ struct ScriptEvent {
 constexpr std::size_t kMaxScriptEvents = 1'000'000;
 constexpr double kMaxScriptSeconds = 1e6;
 
-// Throws UsageError "NAME:LINE: what is wrong" on the first malformed line.
+// Throws Error "NAME:LINE: what is wrong" on the first malformed line.
 std::vector<ScriptEvent> parseInputScript(std::string_view text, const std::string& name);
-// Reads and parses a file (UsageError when it cannot be read or is larger than 16 MiB).
+// Reads and parses a file (Error when it cannot be read or is larger than 16 MiB).
 std::vector<ScriptEvent> loadInputScript(const std::string& path);
 
 // The GLFW key code of a key name (case-insensitive, without GLFW_KEY_), or -1.

@@ -857,7 +857,9 @@ Scene loadGltfFromMemory(std::string_view bytes, const std::filesystem::path& ba
 
 Scene loadGltf(const std::filesystem::path& path) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw Error("cannot open glTF file '" + path.string() + "': no such file");
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw Error("cannot open glTF file '" + path.string() + "': " +
+                    (std::filesystem::exists(path, ec) ? "it is not a regular file" : "no such file"));
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (ec) throw Error("cannot read '" + path.string() + "': " + ec.message());
     if (size > kMaxFileBytes) throw Error("'" + path.string() + "' is larger than 2 GiB");

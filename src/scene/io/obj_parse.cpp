@@ -155,9 +155,12 @@ std::int32_t resolve(std::string_view text, std::uint64_t defined, std::uint64_t
         throw LineError{std::string("face refers to a ") + what +
                         " before the first (relative index " + std::to_string(k) + ")"};
     if (std::uint64_t(index) >= total)
-        throw LineError{std::string("face refers to ") + what + " " + indexText(index + 1) +
-                        ", but " + std::to_string(total) + " " + what +
-                        (total == 1 ? " is" : "s are") + " defined"};
+        throw LineError{std::string("face refers to ") + what + " " + indexText(index + 1) + ", but " +
+                        std::to_string(total) + " " +
+                        (total == 1 ? std::string(what) + " is"
+                                    : (std::string_view(what) == "vertex" ? "vertices" : std::string(what) + "s") +
+                                          " are") +
+                        " defined"};
     return std::int32_t(index);
 }
 
