@@ -171,6 +171,9 @@ std::vector<Case> corpus() {
         {"truncated.json", R"({"meshes": [{"name": "t", "positions": [0, 0)", kRender},
         {"array.json", "[1, 2, 3]", kRender},
         {"inf.json", R"({"meshes":[{"name":"t","positions":[0,0,0, 1e999,0,0, 0,1,0],"indices":[0,1,2]}]})", kRender},
+        {"overflow.json",
+         R"({"materials":[{"name":"m"}],"meshes":[{"name":"t","material":"m","positions":[0,0,0,1e30,0,0,0,1e30,0],)"
+         R"("indices":[0,1,2]}]})", kRender},
         {"self.json", R"({"assets":[{"file":"self.json"}]})", kRender},
         {"cycle_a.json", R"({"assets":[{"file":"cycle_b.json"}]})", kRender,
          [](const fs::path& p) { std::ofstream(p.parent_path() / "cycle_b.json") << R"({"assets":[{"file":"cycle_a.json"}]})"; }},

@@ -184,3 +184,25 @@ TEST(SceneJson, AFileThatIncludesItselfIsAnErrorNotAHang) {
 
 }  // namespace
 }  // namespace penumbra
+
+namespace penumbra::test {
+namespace {
+
+// Inline faces whose arithmetic overflows floats are dropped and said to be; with nothing left,
+// the file is refused in one line rather than rendered black.
+TEST(SceneJson, FacesThatOverflowAreSkippedAndNoneLeftIsAnError) {
+    const std::string big = R"({"materials":[{"name":"m"}],"meshes":[{"name":"big","material":"m",)"
+                            R"("positions":[0,0,0,1e30,0,0,0,1e30,0],"indices":[0,1,2]})";
+    const std::string good = R"({"name":"good","material":"m","positions":[0,0,0,1,0,0,0,1,0],"indices":[0,1,2]})";
+    testing::internal::CaptureStderr();
+    const Scene s = parseSceneText(big + "," + good + "]}");
+    const std::string warning = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(s.triangleCount(), 1u);
+    EXPECT_NE(warning.find("test.json: skipped 1 face with coordinates that are not finite"), std::string::npos)
+        << warning;
+    const std::string e = sceneTextError(big + "]}");
+    EXPECT_NE(e.find("test.json: no face can be rendered"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace penumbra::test

@@ -2,12 +2,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "core/error.h"
 #include "core/log.h"
 #include "core/transform.h"
+#include "scene/face_check.h"
 #include "scene/io/env_spec.h"
 #include "scene/io/load.h"
 #include "scene/merge.h"
@@ -394,6 +396,14 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
     }
     if (scene.meshes.empty() && scene.spheres.empty())
         r.fail("top level", "the scene has no geometry (add \"assets\", \"meshes\", \"quads\" or \"spheres\")");
+    // Inline meshes, and assets scaled up, can hold faces the renderer cannot use.
+    SkippedFaces skipped;
+    for (Mesh& m : scene.meshes) dropBadTriangles(m, skipped);
+    const bool anyFace = std::any_of(scene.meshes.begin(), scene.meshes.end(),
+                                     [](const Mesh& m) { return !m.indices.empty(); });
+    if (!anyFace && scene.spheres.empty() && skipped.total() > 0)
+        throw Error(name + ": no face can be rendered: the scene has " + skipped.describe());
+    skipped.warn(name);
     scene.validate();
     if (doc.contains("materials")) warnUnusedMaterials(name, doc["materials"], scene);
     try {
