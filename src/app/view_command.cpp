@@ -19,6 +19,7 @@ struct ViewArgs {
     bool noVsync = false;
     std::string debug = "none";
     EnvironmentSpec env;
+    WadOptions wad;
 };
 
 void runView(ViewArgs args) {
@@ -34,7 +35,7 @@ void runView(ViewArgs args) {
     }
     args.options.vsync = !args.noVsync;
     args.options.debug = viewer::parseDebugView(args.debug);
-    Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env);
+    Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env, args.wad);
     viewer::runViewer(std::move(scene), args.options);
 }
 
@@ -56,6 +57,7 @@ void registerView(CLI::App& app, Action& action) {
     addDeviceOption(*cmd, args->options.device);
     addCameraOptions(*cmd, args->camera);
     addEnvironmentOptions(*cmd, args->env);
+    addWadOptions(*cmd, args->wad);
     cmd->callback([args, &action] { action = [args] { runView(*args); }; });
 }
 

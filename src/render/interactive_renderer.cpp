@@ -1,5 +1,6 @@
 #include "render/interactive_renderer.h"
 
+#include <algorithm>
 #include <cstring>
 #include <utility>
 
@@ -177,6 +178,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     rs.samplesPerPass = s.samplesPerFrame;
     rs.maxBounces = s.maxBounces;
     rs.seed = seed_;
+    rs.time = s.time;
     Camera lens = camera;
     lens.apertureRadius = s.apertureRadius;
     lens.focusDistance = s.focusDistance;
@@ -187,7 +189,11 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     const bool boxes = s.debug == DebugView::BvhBoxes;
     const DebugView shown = boxes ? DebugView::None : s.debug;
     f.debugMode = std::uint32_t(shown);
-    const bool moved = previousFrame_ && !sameCamera(*previousFrame_, f);
+    // Animated textures change the image as time runs: blend history as for a moving camera.
+    const bool animating = previousFrame_ && previousFrame_->time != f.time &&
+                           std::any_of(arrays_.textures.begin(), arrays_.textures.end(),
+                                       [](const shader::TextureInfo& t) { return t.frameCount > 1; });
+    const bool moved = previousFrame_ && (!sameCamera(*previousFrame_, f) || animating);
     const shader::FrameUniforms& prev = previousFrame_ ? *previousFrame_ : f;
 
     shader::ViewerUniforms v{};

@@ -47,6 +47,7 @@ struct ViewSettings {
     Vec3 torchColor{1.0f, 0.85f, 0.6f};
     float torchIntensity = 80.0f;  // candela
     float torchRange = 0.0f;       // 0: unlimited
+    float time = 0.0f;             // seconds: the moment animated textures show (advanced while playing)
 };
 
 }  // namespace penumbra

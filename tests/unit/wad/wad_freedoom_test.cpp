@@ -218,3 +218,33 @@ TEST(WadFreedoom, LoadFromFile) {
 
 }  // namespace
 }  // namespace penumbra
+
+namespace penumbra {
+namespace {
+
+// What E1M1 of Freedoom brings besides geometry: glowing textures and flats, sector light, the
+// sky and its portals, animated flats and sprites, counted (the counts are this importer's on
+// freedoom1.wad 0.12; a change in them means a change in what is lit or drawn).
+TEST(WadFreedoom, E1M1GlowsSectorLightSkyAndSprites) {
+    REQUIRE_WAD(bytes, "freedoom1.wad");
+    Scene scene = loadWadFromMemory(bytes, "E1M1", "freedoom1.wad");
+    std::size_t glowing = 0, sectorLit = 0, sky = 0;
+    std::map<std::string, std::size_t> glowingByMaterial;
+    for (const Mesh& m : scene.meshes) {
+        const Material& mat = scene.materials[m.material];
+        if (mat.skyPortal) sky += m.triangleCount();
+        else if (mat.emissionHiddenFromCamera) sectorLit += m.triangleCount();
+        else if (mat.isEmissive()) glowing += m.triangleCount(), glowingByMaterial[mat.name] += m.triangleCount();
+    }
+    std::size_t animated = 0, eightViews = 0;
+    for (const Texture& t : scene.textures) animated += t.animation.frames > 1;
+    for (const Sprite& s : scene.sprites) eightViews += s.rotations == 8;
+    std::printf("E1M1: %zu glowing, %zu sector-lit, %zu sky triangles; %zu animated textures; %zu sprites (%zu with 8 views)\n",
+                glowing, sectorLit, sky, animated, scene.sprites.size(), eightViews);
+    for (const auto& [name, count] : glowingByMaterial) std::printf("  %s: %zu\n", name.c_str(), count);
+    ASSERT_TRUE(scene.environment.map.has_value());
+    EXPECT_EQ(scene.environment.map->name, "SKY1");
+}
+
+}  // namespace
+}  // namespace penumbra
