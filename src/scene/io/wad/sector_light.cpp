@@ -16,6 +16,9 @@ float doomBrightness(int level) {
     return 1.0f - float(colormap) / float(kColormaps);
 }
 
-float sectorRadiance(int level) { return shader::srgbToLinear(doomBrightness(level)); }
+float sectorRadiance(int level) {
+    constexpr float kInverseViewFactor = 2.0f;
+    return kInverseViewFactor * shader::srgbToLinear(doomBrightness(level));
+}
 
 }  // namespace penumbra::wad

@@ -108,20 +108,20 @@ private:
         return glowTextures_.at(texture);
     }
 
-    // A non-sky ceiling: lit by its sector's light level unless it glows itself (the lamps in it
-    // light the sector then) or the sector is closed (a shut door lights nothing).
-    std::uint32_t ceilingMaterial(const Sector& sec) {
-        const int texture = textures_.flat(sec.ceilingFlat);
+    // A floor or non-sky ceiling: it gives off its sector's fill light (sector_light.h) unless it
+    // glows itself (its own light fills the sector then) or the sector is closed (a shut door).
+    std::uint32_t flatMaterial(const Sector& sec, const std::string& flatName) {
+        const int texture = textures_.flat(flatName);
         const float radiance = sectorRadiance(sec.lightLevel) * options_.sectorLight;
-        const bool glows = options_.glow > 0 && glowOf(sec.ceilingFlat, true).kind != GlowKind::None;
+        const bool glows = options_.glow > 0 && glowOf(flatName, true).kind != GlowKind::None;
         if (glows || !(radiance > 0) || sec.ceilingHeight <= sec.floorHeight)
-            return material("flat " + sec.ceilingFlat, sec.ceilingFlat, true, texture, false);
+            return material("flat " + flatName, flatName, true, texture, false);
         const int level = std::clamp<int>(sec.lightLevel, 0, 255);
-        const std::string key = "flat " + sec.ceilingFlat + " light " + std::to_string(level);
+        const std::string key = "flat " + flatName + " light " + std::to_string(level);
         return add(key, [&] {
             Material m = surface(key, texture, false);
             m.emission = Vec3(radiance);
-            m.emissionHiddenFromCamera = true;  // the room looks lit, its ceiling does not glow
+            m.emissionHiddenFromCamera = true;  // the room looks lit; its floor and ceiling do not glow
             return m;
         });
     }
@@ -272,9 +272,8 @@ private:
             }
             if (tris.empty()) continue;
             const Sector& sec = map_.sectors[s];
-            std::uint32_t floorMat =
-                material("flat " + sec.floorFlat, sec.floorFlat, true, textures_.flat(sec.floorFlat), false);
-            std::uint32_t ceilMat = isSky(sec.ceilingFlat) ? skyMaterial(sec) : ceilingMaterial(sec);
+            std::uint32_t floorMat = flatMaterial(sec, sec.floorFlat);
+            std::uint32_t ceilMat = isSky(sec.ceilingFlat) ? skyMaterial(sec) : flatMaterial(sec, sec.ceilingFlat);
             Mesh& floor = mesh(int(s), "floor", floorMat);
             for (const Triangle2& t : tris) flatTriangle(floor, t, sec.floorHeight, Vec3(0, 1, 0));
             Mesh& ceiling = mesh(int(s), "ceiling", ceilMat);
