@@ -40,13 +40,9 @@ void addWadOptions(CLI::App& cmd, WadOptions& wad) {
     cmd.add_option("--wad-sector-light", wad.sectorLight,
                    "Doom levels: scales the light that sector light levels give their rooms (0: none)");
     cmd.add_option_function<std::string>(
-        "--wad-filter",
-        [&wad](const std::string& name) {
-            if (name != "nearest" && name != "bilinear")
-                throw UsageError("--wad-filter must be nearest (Doom's crisp texels) or bilinear (got '" + name + "')");
-            wad.filter = name == "nearest" ? Filter::Nearest : Filter::Linear;
-        },
-        "Doom levels: texture lookup, nearest (default) or bilinear");
+           "--wad-filter", [&wad](const std::string& name) { wad.filter = name == "bilinear" ? Filter::Linear : Filter::Nearest; },
+           "Doom levels: texture lookup, nearest (default: Doom's crisp texels) or bilinear")
+        ->check(CLI::IsMember({"nearest", "bilinear"}));
 }
 
 Vec3 parseVec3(const std::string& text, const std::string& flag) {
