@@ -223,8 +223,9 @@ namespace penumbra {
 namespace {
 
 // What E1M1 of Freedoom brings besides geometry: glowing textures and flats, sector light, the
-// sky and its portals, animated flats and sprites, counted (the counts are this importer's on
-// freedoom1.wad 0.12; a change in them means a change in what is lit or drawn).
+// sky and its portals, animated textures and sprites, counted. The counts are this importer's on
+// Debian 12's freedoom1.wad (0.12.1): a change in them is a change in what is lit or drawn (or
+// another Freedoom).
 TEST(WadFreedoom, E1M1GlowsSectorLightSkyAndSprites) {
     REQUIRE_WAD(bytes, "freedoom1.wad");
     Scene scene = loadWadFromMemory(bytes, "E1M1", "freedoom1.wad");
@@ -242,8 +243,18 @@ TEST(WadFreedoom, E1M1GlowsSectorLightSkyAndSprites) {
     std::printf("E1M1: %zu glowing, %zu sector-lit, %zu sky triangles; %zu animated textures; %zu sprites (%zu with 8 views)\n",
                 glowing, sectorLit, sky, animated, scene.sprites.size(), eightViews);
     for (const auto& [name, count] : glowingByMaterial) std::printf("  %s: %zu\n", name.c_str(), count);
+    EXPECT_EQ(glowing, 420u);
+    EXPECT_EQ(glowingByMaterial["wall LITE5"], 28u);
+    EXPECT_EQ(glowingByMaterial["flat NUKAGE1"], 128u);
+    EXPECT_EQ(sectorLit, 1906u);
+    EXPECT_EQ(sky, 248u);
+    EXPECT_EQ(animated, 15u);  // NUKAGE1-3, FWATER1-4, SFALL1-4, WFALL1-4
+    EXPECT_EQ(scene.sprites.size(), 169u);
+    EXPECT_EQ(eightViews, 25u);
+    EXPECT_EQ(scene.lights.size(), 7u);
     ASSERT_TRUE(scene.environment.map.has_value());
     EXPECT_EQ(scene.environment.map->name, "SKY1");
+    EXPECT_NO_THROW(scene.validate());
 }
 
 }  // namespace
