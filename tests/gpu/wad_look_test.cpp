@@ -28,13 +28,15 @@ Vec3 paletteLinear(int i) {
 }
 
 std::string solid(int width, int height, int index, int left = 0, int top = 0) {
-    return testing::picture(width, height, [index](int, int) { return index; }, left, top);
+    return testing::picture(
+        width, height, [index](int, int) { return index; }, left, top);
 }
 
 // A square room of `size` units (x and y from 0), walls WALL1 except the north one, floor and
 // ceiling flats as given.
 void room(MapBuilder& m, int x0, int size, int sector, const std::string& north) {
-    const int a = m.vertex(x0, 0), b = m.vertex(x0, size), c = m.vertex(x0 + size, size), d = m.vertex(x0 + size, 0);
+    const int a = m.vertex(x0, 0), b = m.vertex(x0, size), c = m.vertex(x0 + size, size),
+              d = m.vertex(x0 + size, 0);
     m.line(a, b, m.side(sector, "-", "-", "WALL1"));
     m.line(b, c, m.side(sector, "-", "-", north));  // y = size: north, our -z
     m.line(c, d, m.side(sector, "-", "-", "WALL1"));
@@ -97,9 +99,13 @@ TEST_F(GpuTest, GlowingWallTextureLightsTheFloorWithItsLitTexelsOnly) {
     ImageRgb wall = render(*ctx, scene, testSettings(24, 8, 1, 0));
     int litPixels = 0, darkPixels = 0;
     for (const Vec3& p : wall.pixels) {
-        if (near(p, lit, 1e-4f)) ++litPixels;
-        else if (near(p, Vec3{0}, 1e-6f)) ++darkPixels;
-        else ADD_FAILURE() << "pixel " << p.x << "," << p.y << "," << p.z << " is neither a lit texel nor dark";
+        if (near(p, lit, 1e-4f))
+            ++litPixels;
+        else if (near(p, Vec3{0}, 1e-6f))
+            ++darkPixels;
+        else
+            ADD_FAILURE() << "pixel " << p.x << "," << p.y << "," << p.z
+                          << " is neither a lit texel nor dark";
     }
     EXPECT_GT(litPixels, 24 * 8 / 5);
     EXPECT_GT(darkPixels, 24 * 8 / 5);
@@ -140,7 +146,8 @@ TEST_F(GpuTest, SectorLightLevelsOrderIdenticalRoomsByBrightness) {
     EXPECT_GT(means[0].mean, means[1].mean);
     const double expected = wad::sectorRadiance(255) / wad::sectorRadiance(144);
     const double ratio = means[0].mean / means[1].mean;
-    const double sigma = ratio * std::hypot(means[0].stderr / means[0].mean, means[1].stderr / means[1].mean);
+    const double sigma =
+        ratio * std::hypot(means[0].stderr / means[0].mean, means[1].stderr / means[1].mean);
     EXPECT_NEAR(ratio, expected, 5 * sigma) << "sigma " << sigma;
 }
 
@@ -149,7 +156,8 @@ TEST_F(GpuTest, SectorLightLevelsOrderIdenticalRoomsByBrightness) {
 // light, and the sky alone lights the yard.
 std::string skyWad() {
     Graphics g = plainGraphics();
-    g.texture("SKY1", testing::picture(256, 128, [](int x, int y) { return y < 8 ? 90 : 20 + x / 64 * 40; }));
+    g.texture("SKY1", testing::picture(256, 128,
+                                       [](int x, int y) { return y < 8 ? 90 : 20 + x / 64 * 40; }));
     MapBuilder m;
     room(m, 0, 2048, m.sector(0, 512, "FLOOR1", "F_SKY1", 200), "WALL1");
     m.thing(1024, 1024, 90, 1);
@@ -162,13 +170,15 @@ TEST_F(GpuTest, SkyTextureShowsThroughSkyCeilingAndLightsTheFloor) {
     aim(scene, {32, 1.5f, -32}, {32.5f, 10, -32.2f}, 20);
     ImageRgb up = render(*ctx, scene, testSettings(8, 8, 1, 0));
     const Vec3 sky = paletteLinear(90);
-    for (const Vec3& p : up.pixels) EXPECT_TRUE(near(p, sky, 1e-4f)) << p.x << "," << p.y << "," << p.z;
+    for (const Vec3& p : up.pixels)
+        EXPECT_TRUE(near(p, sky, 1e-4f)) << p.x << "," << p.y << "," << p.z;
 
     WadOptions skyOnly;
     skyOnly.sectorLight = 0;
     Scene yard = loadWadFromMemory(skyWad(), "E1M1", "sky.wad", skyOnly);
     aim(yard, {32, 1.5f, -32}, {33, 0, -33}, 30);
-    EXPECT_GT(luminance(render(*ctx, yard, testSettings(8, 8, 8, 1)).mean()), 1e-3f) << "the sky lights nothing";
+    EXPECT_GT(luminance(render(*ctx, yard, testSettings(8, 8, 8, 1)).mean()), 1e-3f)
+        << "the sky lights nothing";
 }
 
 // A floor of NUKAGE1-3 (hot liquid: emission 4 x its own colours) seen from above, emission only.
@@ -195,8 +205,10 @@ TEST_F(GpuTest, NearestLookupReturnsExactTexelColours) {
         int exact = 0;
         const ImageRgb img = render(*ctx, scene, testSettings(16, 16, 1, 0));
         for (const Vec3& p : img.pixels) exact += near(p, a, 1e-4f) || near(p, b, 1e-4f);
-        if (filter == Filter::Nearest) EXPECT_EQ(exact, 16 * 16);
-        else EXPECT_LT(exact, 16 * 16 / 4);
+        if (filter == Filter::Nearest)
+            EXPECT_EQ(exact, 16 * 16);
+        else
+            EXPECT_LT(exact, 16 * 16 / 4);
     }
 }
 
@@ -204,13 +216,17 @@ TEST_F(GpuTest, AnimatedFlatChangesWithTime) {
     Scene scene = loadWadFromMemory(nukageWad(30, 30), "E1M1", "nukage.wad");
     aim(scene, {4, 1, -4}, {4, 0, -4.05f}, 20);
     // 8 tics of 1/35 s per frame: NUKAGE1 until 0.229 s, then NUKAGE2, then NUKAGE3, then again.
-    const struct { float time; int index; } moments[] = {{0.0f, 30}, {0.3f, 70}, {0.5f, 110}, {0.7f, 30}};
+    const struct {
+        float time;
+        int index;
+    } moments[] = {{0.0f, 30}, {0.3f, 70}, {0.5f, 110}, {0.7f, 30}};
     for (const auto& m : moments) {
         RenderSettings settings = testSettings(4, 4, 1, 0);
         settings.time = m.time;
         const ImageRgb img = render(*ctx, scene, settings);
         for (const Vec3& p : img.pixels)
-            EXPECT_TRUE(near(p, paletteLinear(m.index) * 4.0f, 1e-4f)) << "time " << m.time << ": " << p.x;
+            EXPECT_TRUE(near(p, paletteLinear(m.index) * 4.0f, 1e-4f))
+                << "time " << m.time << ": " << p.x;
     }
 }
 
@@ -220,8 +236,10 @@ TEST_F(GpuTest, AnimatedFlatChangesWithTime) {
 std::string spriteWad() {
     Graphics g = plainGraphics();
     g.texture("FIREBLU1", solid(8, 8, 60));
-    g.sprites = {{"COLUA0", testing::picture(32, 32, [](int x, int) { return x < 16 ? -1 : 200; }, 16, 32)}};
-    for (int v = 1; v <= 8; ++v) g.sprites.push_back({"SKULA" + std::to_string(v), solid(16, 16, 20 + 20 * v, 8, 16)});
+    g.sprites = {{"COLUA0", testing::picture(
+                                32, 32, [](int x, int) { return x < 16 ? -1 : 200; }, 16, 32)}};
+    for (int v = 1; v <= 8; ++v)
+        g.sprites.push_back({"SKULA" + std::to_string(v), solid(16, 16, 20 + 20 * v, 8, 16)});
     MapBuilder m;
     room(m, 0, 256, m.sector(0, 128, "FLOOR1", "FLOOR1", 160), "FIREBLU1");
     room(m, 1024, 256, m.sector(0, 128, "FLOOR1", "FLOOR1", 160), "WALL1");
@@ -241,8 +259,10 @@ TEST_F(GpuTest, SpriteTransparentTexelsLetRaysThrough) {
     aim(scene, {4, 0.5f, -1.25f}, {4, 0.5f, -8}, 30);
     const ImageRgb img = render(*ctx, scene, testSettings(32, 32, 1, 0));
     const Vec3 fire = paletteLinear(60) * 4.0f, lamp = paletteLinear(200);
-    for (int x : {9, 11, 13}) EXPECT_TRUE(near(img.at(x, 16), fire, 1e-4f)) << "x " << x << ": the hole hides the wall";
-    for (int x : {19, 21, 23}) EXPECT_TRUE(near(img.at(x, 16), lamp, 1e-4f)) << "x " << x << ": the lamp is not drawn";
+    for (int x : {9, 11, 13})
+        EXPECT_TRUE(near(img.at(x, 16), fire, 1e-4f)) << "x " << x << ": the hole hides the wall";
+    for (int x : {19, 21, 23})
+        EXPECT_TRUE(near(img.at(x, 16), lamp, 1e-4f)) << "x " << x << ": the lamp is not drawn";
     EXPECT_TRUE(near(img.at(16, 3), fire, 1e-4f)) << "above the lamp";
 }
 
@@ -251,12 +271,15 @@ TEST_F(GpuTest, SpriteShowsTheViewOfTheCamerasSide) {
     // The soul stands at (1152, 128) facing east (+x); Doom's rule gives view 1 from the east,
     // 3 from the north (our -z), 5 from the west and 7 from the south.
     const Vec3 soul{36, 0.25f, -4};
-    const struct { Vec3 offset; int view; } sides[] = {
-        {{2, 0, 0}, 1}, {{0, 0, -2}, 3}, {{-2, 0, 0}, 5}, {{0, 0, 2}, 7}};
+    const struct {
+        Vec3 offset;
+        int view;
+    } sides[] = {{{2, 0, 0}, 1}, {{0, 0, -2}, 3}, {{-2, 0, 0}, 5}, {{0, 0, 2}, 7}};
     for (const auto& side : sides) {
         aim(scene, soul + side.offset, soul, 10);
         const ImageRgb img = render(*ctx, scene, testSettings(4, 4, 1, 0));
-        EXPECT_TRUE(near(img.at(2, 2), paletteLinear(20 + 20 * side.view), 1e-4f)) << "view " << side.view;
+        EXPECT_TRUE(near(img.at(2, 2), paletteLinear(20 + 20 * side.view), 1e-4f))
+            << "view " << side.view;
     }
 }
 

@@ -25,10 +25,12 @@ using wad::GlowKind;
 
 TEST(WadGlow, TableNamesWhatGlowsAndHow) {
     EXPECT_EQ(wad::glowOf("NUKAGE2", true).kind, GlowKind::Whole);
-    EXPECT_EQ(wad::glowOf("NUKAGE2", false).kind, GlowKind::None) << "flat names do not make textures glow";
+    EXPECT_EQ(wad::glowOf("NUKAGE2", false).kind, GlowKind::None)
+        << "flat names do not make textures glow";
     EXPECT_EQ(wad::glowOf("LITE3", false).kind, GlowKind::Bright);
     EXPECT_EQ(wad::glowOf("LITEBLU4", false).kind, GlowKind::Bright);
-    EXPECT_EQ(wad::glowOf("LITEYEL2", false).kind, GlowKind::Panel) << "Freedoom's panels come before LITE*";
+    EXPECT_EQ(wad::glowOf("LITEYEL2", false).kind, GlowKind::Panel)
+        << "Freedoom's panels come before LITE*";
     EXPECT_EQ(wad::glowOf("AQLITE18", false).kind, GlowKind::Panel);
     EXPECT_EQ(wad::glowOf("AQF066", true).kind, GlowKind::Panel);
     EXPECT_EQ(wad::glowOf("AQF067", true).kind, GlowKind::None);
@@ -37,7 +39,8 @@ TEST(WadGlow, TableNamesWhatGlowsAndHow) {
     EXPECT_EQ(wad::glowOf("COMPUTE2", false).kind, GlowKind::Screen);
     EXPECT_EQ(wad::glowOf("FIREBLU1", false).kind, GlowKind::Whole);
     EXPECT_EQ(wad::glowOf("STARTAN3", false).kind, GlowKind::None);
-    EXPECT_EQ(wad::glowOf("SLIME13", true).kind, GlowKind::None) << "only the animated SLIME01-12 are liquids";
+    EXPECT_EQ(wad::glowOf("SLIME13", true).kind, GlowKind::None)
+        << "only the animated SLIME01-12 are liquids";
     EXPECT_GT(wad::glowOf("SLIME09", true).strength, wad::glowOf("SLIME01", true).strength)
         << "red-hot sludge outshines brown";
     EXPECT_GT(wad::glowOf("LAVA1", true).strength, wad::glowOf("FWATER1", true).strength);
@@ -48,9 +51,9 @@ TEST(WadGlow, WeightsPickTheLitTexels) {
     EXPECT_EQ(wad::glowWeight(GlowKind::Whole, 10, 20, 5), 1.0f);
     EXPECT_EQ(wad::glowWeight(GlowKind::None, 255, 255, 255), 0.0f);
     EXPECT_EQ(wad::glowWeight(GlowKind::Bright, 255, 255, 255), 1.0f);
-    EXPECT_EQ(wad::glowWeight(GlowKind::Bright, 0, 0, 255), 1.0f);   // LITEBLU's blue
-    EXPECT_EQ(wad::glowWeight(GlowKind::Bright, 255, 0, 0), 1.0f);   // a lit switch light
-    EXPECT_EQ(wad::glowWeight(GlowKind::Bright, 131, 31, 31), 0.0f); // an unlit one
+    EXPECT_EQ(wad::glowWeight(GlowKind::Bright, 0, 0, 255), 1.0f);    // LITEBLU's blue
+    EXPECT_EQ(wad::glowWeight(GlowKind::Bright, 255, 0, 0), 1.0f);    // a lit switch light
+    EXPECT_EQ(wad::glowWeight(GlowKind::Bright, 131, 31, 31), 0.0f);  // an unlit one
     EXPECT_EQ(wad::glowWeight(GlowKind::Bright, 150, 150, 150), 0.0f);
     // Panels: Freedoom's mid-bright green plate glows, its black grid does not.
     EXPECT_GT(wad::glowWeight(GlowKind::Panel, 83, 175, 71), 0.99f);
@@ -65,7 +68,8 @@ TEST(WadGlow, WeightsPickTheLitTexels) {
     for (GlowKind kind : {GlowKind::Bright, GlowKind::Panel, GlowKind::Screen})
         for (int v = 1; v < 256; ++v)
             EXPECT_GE(wad::glowWeight(kind, std::uint8_t(v), std::uint8_t(v), std::uint8_t(v)),
-                      wad::glowWeight(kind, std::uint8_t(v - 1), std::uint8_t(v - 1), std::uint8_t(v - 1)));
+                      wad::glowWeight(kind, std::uint8_t(v - 1), std::uint8_t(v - 1),
+                                      std::uint8_t(v - 1)));
 }
 
 TEST(WadGlow, GlowTextureScalesLinearLightByTheWeight) {
@@ -79,8 +83,10 @@ TEST(WadGlow, GlowTextureScalesLinearLightByTheWeight) {
     EXPECT_EQ(g.name, "LAMP glow");
     EXPECT_EQ(g.animation.frames, 3);
     EXPECT_EQ(g.animation.frame, 1);
-    EXPECT_EQ(std::vector<std::uint8_t>(g.rgba.begin(), g.rgba.begin() + 4), std::vector<std::uint8_t>(4, 255));
-    EXPECT_EQ(std::vector<std::uint8_t>(g.rgba.begin() + 4, g.rgba.begin() + 8), (std::vector<std::uint8_t>{0, 0, 0, 255}));
+    EXPECT_EQ(std::vector<std::uint8_t>(g.rgba.begin(), g.rgba.begin() + 4),
+              std::vector<std::uint8_t>(4, 255));
+    EXPECT_EQ(std::vector<std::uint8_t>(g.rgba.begin() + 4, g.rgba.begin() + 8),
+              (std::vector<std::uint8_t>{0, 0, 0, 255}));
     // A partial weight scales linear light, then re-encodes: 200 at weight w becomes
     // 255 * srgb(w * linear(200 / 255)).
     const float w = wad::glowWeight(GlowKind::Bright, 200, 10, 10);
@@ -100,8 +106,10 @@ TEST(WadSectorLight, CurveFollowsDoomsColormapsAtFourMetres) {
     EXPECT_FLOAT_EQ(wad::doomBrightness(0), 1.0f / 32);
     EXPECT_FLOAT_EQ(wad::doomBrightness(-5), 1.0f / 32);
     EXPECT_FLOAT_EQ(wad::doomBrightness(400), 1.0f);
-    for (int level = 1; level < 256; ++level) EXPECT_GE(wad::doomBrightness(level), wad::doomBrightness(level - 1));
-    EXPECT_FLOAT_EQ(wad::sectorRadiance(160), 2.0f * shader::srgbToLinear(wad::doomBrightness(160)));
+    for (int level = 1; level < 256; ++level)
+        EXPECT_GE(wad::doomBrightness(level), wad::doomBrightness(level - 1));
+    EXPECT_FLOAT_EQ(wad::sectorRadiance(160),
+                    2.0f * shader::srgbToLinear(wad::doomBrightness(160)));
 }
 
 TEST(WadSky, TextureByEpisodeAndMap) {
@@ -137,14 +145,18 @@ std::pair<int, int> shownTexel(const EnvironmentMap& map, Vec3 direction) {
     Environment env;
     env.map = map;
     const Vec3 c = environmentRadiance(env, Vec3{0}, direction) / 2.0f;  // brightness 2
-    auto decode = [](float linear) { return int(std::lround(shader::linearToSrgb(linear) * 255.0f)); };
+    auto decode = [](float linear) {
+        return int(std::lround(shader::linearToSrgb(linear) * 255.0f));
+    };
     return {decode(c.x), decode(c.y)};
 }
 
 Vec3 doomDirection(double angleDegrees, double elevationDegrees) {
-    const double a = angleDegrees * 3.14159265358979 / 180, e = elevationDegrees * 3.14159265358979 / 180;
+    const double a = angleDegrees * 3.14159265358979 / 180,
+                 e = elevationDegrees * 3.14159265358979 / 180;
     // Doom (x, y) is our (x, -z).
-    return Vec3{float(std::cos(e) * std::cos(a)), float(std::sin(e)), float(-std::cos(e) * std::sin(a))};
+    return Vec3{float(std::cos(e) * std::cos(a)), float(std::sin(e)),
+                float(-std::cos(e) * std::sin(a))};
 }
 
 TEST(WadSky, MapWrapsTheSkyFourTimesWithRowHundredOnTheHorizon) {
@@ -160,7 +172,8 @@ TEST(WadSky, MapWrapsTheSkyFourTimesWithRowHundredOnTheHorizon) {
     // Row: 100 - 160 tan(elevation), so just above the horizon row 99, and 20 degrees up row 41.
     EXPECT_EQ(shownTexel(map, doomDirection(10, 0.2)).second, 99);
     const int row20 = int(std::floor(100 - 160 * std::tan(20 * 3.14159265358979 / 180)));
-    EXPECT_NEAR(shownTexel(map, doomDirection(10, 20)).second, row20, 1);  // the map's rows are 0.35 degrees
+    EXPECT_NEAR(shownTexel(map, doomDirection(10, 20)).second, row20,
+                1);  // the map's rows are 0.35 degrees
     const int rowBelow = int(std::floor(100 + 160 * std::tan(5 * 3.14159265358979 / 180)));
     EXPECT_NEAR(shownTexel(map, doomDirection(10, -5)).second, rowBelow, 1);
     // Straight up: the mean of the top 4 rows (rows 0-3: green 1.5 on average, decoded first).
@@ -179,7 +192,8 @@ TEST(WadSky, MapWrapsTheSkyFourTimesWithRowHundredOnTheHorizon) {
 
 TEST(WadAnimation, CyclesRunFromFirstToLastInWadOrder) {
     // A frame added between the ends belongs to the cycle; a backwards cycle is none.
-    const std::vector<std::string> flats = {"FLOOR1", "NUKAGE1", "EXTRA", "NUKAGE2", "NUKAGE3", "FWATER4", "FWATER1"};
+    const std::vector<std::string> flats = {"FLOOR1",  "NUKAGE1", "EXTRA",  "NUKAGE2",
+                                            "NUKAGE3", "FWATER4", "FWATER1"};
     const auto cycles = wad::findCycles(flats, false);
     ASSERT_EQ(cycles.size(), 1u);
     EXPECT_EQ(cycles[0], (std::vector<std::string>{"NUKAGE1", "EXTRA", "NUKAGE2", "NUKAGE3"}));
@@ -192,7 +206,8 @@ std::string animatedWad() {
     Graphics g;
     g.texture("FIREBLU1", testing::picture(8, 8, [](int, int) { return 200; }));
     g.texture("FIREBLU2", testing::picture(8, 8, [](int, int) { return 210; }));
-    for (int k = 1; k <= 3; ++k) g.flat("NUKAGE" + std::to_string(k), [k](int, int) { return 10 * k; });
+    for (int k = 1; k <= 3; ++k)
+        g.flat("NUKAGE" + std::to_string(k), [k](int, int) { return 10 * k; });
     MapBuilder m;
     int s = m.sector(0, 128, "NUKAGE2", "NUKAGE2", 160);
     m.loop({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, s, "FIREBLU1");
@@ -232,7 +247,8 @@ TEST(WadAnimation, ACycleBringsItsFramesConsecutively) {
         }
     WadOptions bilinear;
     bilinear.filter = Filter::Linear;
-    for (const Material& m : loadWadFromMemory(animatedWad(), "E1M1", "anim.wad", bilinear).materials)
+    for (const Material& m :
+         loadWadFromMemory(animatedWad(), "E1M1", "anim.wad", bilinear).materials)
         if (m.albedoTexture.present()) EXPECT_EQ(m.albedoTexture.filter, Filter::Linear) << m.name;
 }
 
@@ -252,11 +268,17 @@ std::string spriteWad() {
     g.texture("WALL1", testing::picture(8, 8, [](int, int) { return 128; }));
     g.flat("FLOOR1", [](int, int) { return 128; });
     auto view = [](int v) {
-        return testing::picture(4, 6, [v](int x, int) { return x == 0 ? 100 : 20 + v; }, 2, 6);
+        return testing::picture(
+            4, 6, [v](int x, int) { return x == 0 ? 100 : 20 + v; }, 2, 6);
     };
-    g.sprites = {{"TROOA1", view(1)}, {"TROOA2A8", view(2)}, {"TROOA3A7", view(3)},
-                 {"TROOA4A6", view(4)}, {"TROOA5", view(5)},
-                 {"BAR1A0", testing::picture(3, 5, [](int x, int y) { return (x == 1 && y == 2) ? -1 : 50; }, 1, 5)}};
+    g.sprites = {
+        {"TROOA1", view(1)},
+        {"TROOA2A8", view(2)},
+        {"TROOA3A7", view(3)},
+        {"TROOA4A6", view(4)},
+        {"TROOA5", view(5)},
+        {"BAR1A0", testing::picture(
+                       3, 5, [](int x, int y) { return (x == 1 && y == 2) ? -1 : 50; }, 1, 5)}};
     MapBuilder m;
     int s = m.sector(16, 128, "FLOOR1", "FLOOR1", 160);
     m.loop({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, s, "WALL1");
@@ -306,7 +328,8 @@ TEST(WadSprites, ThingsBecomeSpritesWithTheirViews) {
         EXPECT_EQ(alpha(cell + 2, 0), 0) << "top border, view " << v;
     }
     // The barrel's hole stays transparent.
-    const Texture& bar = scene.textures[std::size_t(scene.materials[barrel.material].albedoTexture.texture)];
+    const Texture& bar =
+        scene.textures[std::size_t(scene.materials[barrel.material].albedoTexture.texture)];
     EXPECT_EQ(bar.width, 5);
     EXPECT_EQ(bar.rgba[std::size_t(3 * 5 + 2) * 4 + 3], 0);
     EXPECT_EQ(bar.rgba[std::size_t(3 * 5 + 1) * 4 + 3], 255);

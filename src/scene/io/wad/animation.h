@@ -12,7 +12,8 @@ namespace penumbra::wad {
 constexpr float kSecondsPerTic = 1.0f / 35.0f;
 constexpr int kTicsPerAnimationFrame = 8;
 constexpr float kSecondsPerAnimationFrame = kTicsPerAnimationFrame * kSecondsPerTic;
-constexpr std::size_t kMaxAnimationFrames = 64;  // longer "cycles" in a hostile WAD are not animated
+constexpr std::size_t kMaxAnimationFrames =
+    64;  // longer "cycles" in a hostile WAD are not animated
 
 struct AnimationDef {
     bool texture;  // wall texture (true) or flat
@@ -26,6 +27,7 @@ const std::vector<AnimationDef>& animationDefs();
 // The cycles of `defs` found in `orderedNames` (the WAD's flats or textures in order, each name
 // once): the names from first to last inclusive. Cycles whose first or last name is missing, that
 // run backwards, have fewer than 2 or more than kMaxAnimationFrames frames are left out.
-std::vector<std::vector<std::string>> findCycles(const std::vector<std::string>& orderedNames, bool textures);
+std::vector<std::vector<std::string>> findCycles(const std::vector<std::string>& orderedNames,
+                                                 bool textures);
 
 }  // namespace penumbra::wad

@@ -14,7 +14,8 @@ namespace {
 constexpr float kLampGlow = 6.0f;
 constexpr float kPanelGlow = 4.0f;
 constexpr float kHotLiquidGlow = 4.0f;  // nukage, lava, molten rock, fire
-constexpr float kDullLiquidGlow = 1.0f; // water and blood: their palette colour, as Doom shows a lit pool
+constexpr float kDullLiquidGlow =
+    1.0f;  // water and blood: their palette colour, as Doom shows a lit pool
 constexpr float kScreenGlow = 2.0f;
 
 struct GlowEntry {
@@ -122,7 +123,8 @@ constexpr GlowEntry kGlows[] = {
 
 bool matches(const char* pattern, const std::string& name) {
     const std::string p(pattern);
-    if (!p.empty() && p.back() == '*') return name.compare(0, p.size() - 1, p, 0, p.size() - 1) == 0;
+    if (!p.empty() && p.back() == '*')
+        return name.compare(0, p.size() - 1, p, 0, p.size() - 1) == 0;
     return name == p;
 }
 
@@ -134,9 +136,12 @@ float smoothstep(float lo, float hi, float x) {
 // Hue in degrees [0, 360) of an RGB colour with max > min.
 float hueDegrees(float r, float g, float b, float max, float chroma) {
     float h;
-    if (max == r) h = std::fmod((g - b) / chroma, 6.0f);
-    else if (max == g) h = (b - r) / chroma + 2.0f;
-    else h = (r - g) / chroma + 4.0f;
+    if (max == r)
+        h = std::fmod((g - b) / chroma, 6.0f);
+    else if (max == g)
+        h = (b - r) / chroma + 2.0f;
+    else
+        h = (r - g) / chroma + 4.0f;
     h *= 60.0f;
     return h < 0 ? h + 360.0f : h;
 }
@@ -157,10 +162,14 @@ float glowWeight(GlowKind kind, std::uint8_t r8, std::uint8_t g8, std::uint8_t b
     // by this weight Doom's LITE3-5 are 28-37% lit, its switch plates under 3%.
     const float bright = smoothstep(0.66f, 0.86f, value);
     switch (kind) {
-        case GlowKind::None: return 0.0f;
-        case GlowKind::Whole: return 1.0f;
-        case GlowKind::Bright: return bright;
-        case GlowKind::Panel: return smoothstep(0.30f, 0.45f, value);  // the black grid is below 0.16
+        case GlowKind::None:
+            return 0.0f;
+        case GlowKind::Whole:
+            return 1.0f;
+        case GlowKind::Bright:
+            return bright;
+        case GlowKind::Panel:
+            return smoothstep(0.30f, 0.45f, value);  // the black grid is below 0.16
         case GlowKind::Screen: {
             // Screen content is saturated (green text, blue and red displays) or white; the
             // machinery around it is grey, or wood, rust and hazard paint in orange to yellow hues.
@@ -168,7 +177,8 @@ float glowWeight(GlowKind kind, std::uint8_t r8, std::uint8_t g8, std::uint8_t b
                 const float hue = hueDegrees(r, g, b, value, chroma);
                 if (hue >= 15.0f && hue <= 65.0f) return 0.0f;
             }
-            return std::max(smoothstep(0.2f, 0.4f, chroma) * smoothstep(0.25f, 0.45f, value), bright);
+            return std::max(smoothstep(0.2f, 0.4f, chroma) * smoothstep(0.25f, 0.45f, value),
+                            bright);
         }
     }
     return 0.0f;

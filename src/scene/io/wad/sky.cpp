@@ -33,10 +33,11 @@ Vec3 meanOfRows(const Texture& t, int firstRow, int rows) {
 }  // namespace
 
 std::string skyTextureName(const std::string& mapName) {
-    if (mapName.size() == 4 && mapName[0] == 'E' && mapName[2] == 'M' && mapName[1] >= '1' && mapName[1] <= '4')
+    if (mapName.size() == 4 && mapName[0] == 'E' && mapName[2] == 'M' && mapName[1] >= '1' &&
+        mapName[1] <= '4')
         return std::string("SKY") + mapName[1];
-    if (mapName.size() == 5 && mapName.compare(0, 3, "MAP") == 0 && std::isdigit((unsigned char)mapName[3]) &&
-        std::isdigit((unsigned char)mapName[4])) {
+    if (mapName.size() == 5 && mapName.compare(0, 3, "MAP") == 0 &&
+        std::isdigit((unsigned char)mapName[3]) && std::isdigit((unsigned char)mapName[4])) {
         const int map = (mapName[3] - '0') * 10 + (mapName[4] - '0');
         return map < 12 ? "SKY1" : map < 21 ? "SKY2" : "SKY3";
     }
@@ -49,7 +50,9 @@ EnvironmentMap skyEnvironment(const Texture& sky, float brightness) {
     map.width = kSkyMapWidth;
     map.height = kSkyMapHeight;
     map.radiance.assign(std::size_t(map.width) * std::size_t(map.height), Vec3{0});
-    if (sky.width <= 0 || sky.height <= 0 || sky.rgba.size() < std::size_t(sky.width) * sky.height * 4) return map;
+    if (sky.width <= 0 || sky.height <= 0 ||
+        sky.rgba.size() < std::size_t(sky.width) * sky.height * 4)
+        return map;
     const Vec3 capTop = meanOfRows(sky, 0, 4), capBottom = meanOfRows(sky, sky.height - 4, 4);
     for (int y = 0; y < map.height; ++y) {
         // Texel centres; environmentDirection gives the map-local direction (+y up).

@@ -8,11 +8,13 @@
 
 namespace penumbra::wad {
 
-SpriteLibrary::SpriteLibrary(const WadFile& wad, TextureLibrary& textures) : wad_(wad), textures_(textures) {
+SpriteLibrary::SpriteLibrary(const WadFile& wad, TextureLibrary& textures)
+    : wad_(wad), textures_(textures) {
     for (auto [begin, end] : wad.markerRanges("S_START", "S_END", "SS_START", "SS_END"))
         for (std::size_t i = begin; i < end; ++i) {
             const std::string& name = wad.lumps()[i].name;
-            if (name.size() == 6 || name.size() == 8) lumpsBySprite_[name.substr(0, 4)].push_back(i);
+            if (name.size() == 6 || name.size() == 8)
+                lumpsBySprite_[name.substr(0, 4)].push_back(i);
         }
 }
 
@@ -26,17 +28,21 @@ std::optional<SpriteViews> SpriteLibrary::views(const std::string& sprite, char 
             const std::string& name = wad_.lumps()[lump].name;
             for (std::size_t pair = 4; pair + 1 < name.size(); pair += 2) {
                 const int view = name[pair + 1] - '0';
-                if (name[pair] == frame && view >= 0 && view <= 8) found[std::size_t(view)] = {long(lump), pair == 6};
+                if (name[pair] == frame && view >= 0 && view <= 8)
+                    found[std::size_t(view)] = {long(lump), pair == 6};
             }
         }
     std::vector<View> views;
     if (std::any_of(found.begin() + 1, found.end(), [](const View& v) { return v.lump >= 0; })) {
-        const View any = *std::find_if(found.begin() + 1, found.end(), [](const View& v) { return v.lump >= 0; });
-        for (int r = 1; r <= 8; ++r) views.push_back(found[std::size_t(r)].lump >= 0 ? found[std::size_t(r)] : any);
+        const View any = *std::find_if(found.begin() + 1, found.end(),
+                                       [](const View& v) { return v.lump >= 0; });
+        for (int r = 1; r <= 8; ++r)
+            views.push_back(found[std::size_t(r)].lump >= 0 ? found[std::size_t(r)] : any);
     } else if (found[0].lump >= 0) {
         views.push_back(found[0]);
     } else {
-        logWarning(wad_.fileName() + ": " + label + " is not in the WAD; the thing is drawn without it");
+        logWarning(wad_.fileName() + ": " + label +
+                   " is not in the WAD; the thing is drawn without it");
         return std::nullopt;
     }
 
@@ -61,7 +67,8 @@ std::optional<SpriteViews> SpriteLibrary::views(const std::string& sprite, char 
     const long cellWidth = long(out.right) - out.left, cellHeight = long(out.top) - out.bottom;
     if (cellWidth * out.rotations > kMaxTextureSize || cellHeight > kMaxTextureSize ||
         !textures_.spendTexels(std::int64_t(cellWidth) * out.rotations * cellHeight)) {
-        logWarning(wad_.fileName() + ": " + label + "'s views do not fit one texture (or the texture budget); " +
+        logWarning(wad_.fileName() + ": " + label +
+                   "'s views do not fit one texture (or the texture budget); " +
                    "the thing is drawn without it");
         return std::nullopt;
     }
@@ -77,8 +84,11 @@ std::optional<SpriteViews> SpriteLibrary::views(const std::string& sprite, char 
         for (int y = 0; y < pic.height; ++y)
             for (int x = 0; x < pic.width; ++x) {
                 const int sx = views[std::size_t(k)].mirrored ? pic.width - 1 - x : x;
-                const std::uint8_t* s = &pic.rgba[(std::size_t(y) * std::size_t(pic.width) + std::size_t(sx)) * 4];
-                std::uint8_t* d = &atlas.rgba[(std::size_t(y0 + y) * std::size_t(atlas.width) + std::size_t(x0 + x)) * 4];
+                const std::uint8_t* s =
+                    &pic.rgba[(std::size_t(y) * std::size_t(pic.width) + std::size_t(sx)) * 4];
+                std::uint8_t* d = &atlas.rgba[(std::size_t(y0 + y) * std::size_t(atlas.width) +
+                                               std::size_t(x0 + x)) *
+                                              4];
                 std::copy(s, s + 4, d);
             }
     }

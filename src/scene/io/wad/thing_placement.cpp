@@ -56,23 +56,30 @@ struct SpriteFrame {
 
 class ThingPlacer {
 public:
-    ThingPlacer(const WadFile& wad, const MapData& map, TextureLibrary& textures, const WadOptions& options,
-                Scene& scene)
-        : wad_(wad), map_(map), textures_(textures), sprites_(wad, textures), options_(options), scene_(scene) {}
+    ThingPlacer(const WadFile& wad, const MapData& map, TextureLibrary& textures,
+                const WadOptions& options, Scene& scene)
+        : wad_(wad),
+          map_(map),
+          textures_(textures),
+          sprites_(wad, textures),
+          options_(options),
+          scene_(scene) {}
 
     void place() {
         for (const Thing& t : map_.things) {
             if (!inSinglePlayerMedium(t.flags)) continue;
             const int sector = sectorAt(map_, t.x, t.y);
             const double floor = sector >= 0 ? map_.sectors[std::size_t(sector)].floorHeight : 0.0;
-            const double ceiling = sector >= 0 ? map_.sectors[std::size_t(sector)].ceilingHeight : 0.0;
-            if (const ThingType* type = thingType(t.type)) addSprite(t, *type, type->hangHeight > 0 ? ceiling - type->hangHeight : floor);
+            const double ceiling =
+                sector >= 0 ? map_.sectors[std::size_t(sector)].ceilingHeight : 0.0;
+            if (const ThingType* type = thingType(t.type))
+                addSprite(t, *type, type->hangHeight > 0 ? ceiling - type->hangHeight : floor);
             if (const LampType* lamp = lampType(t.type)) addLamp(t, *lamp, floor);
         }
         const std::string where = wad_.fileName() + ": map " + map_.name;
         if (skippedSprites_ > 0)
-            logWarning(where + " has more than " + std::to_string(kMaxSprites) + " things to draw; " +
-                       std::to_string(skippedSprites_) + " are left out");
+            logWarning(where + " has more than " + std::to_string(kMaxSprites) +
+                       " things to draw; " + std::to_string(skippedSprites_) + " are left out");
         if (skippedLights_ > 0)
             logWarning(where + " has more than " + std::to_string(kMaxLights) + " lamps; " +
                        std::to_string(skippedLights_) + " are left out");
@@ -99,8 +106,11 @@ private:
         }
         const auto material = std::uint32_t(scene_.materials.size());
         scene_.materials.push_back(std::move(m));
-        it->second = SpriteFrame{material, std::uint32_t(views->rotations), views->left / kUnitsPerMetre,
-                                 views->right / kUnitsPerMetre, views->bottom / kUnitsPerMetre,
+        it->second = SpriteFrame{material,
+                                 std::uint32_t(views->rotations),
+                                 views->left / kUnitsPerMetre,
+                                 views->right / kUnitsPerMetre,
+                                 views->bottom / kUnitsPerMetre,
                                  views->top / kUnitsPerMetre};
         return &*it->second;
     }
@@ -150,8 +160,8 @@ private:
 
 }  // namespace
 
-void placeThings(const WadFile& wad, const MapData& map, TextureLibrary& textures, const WadOptions& options,
-                 Scene& scene) {
+void placeThings(const WadFile& wad, const MapData& map, TextureLibrary& textures,
+                 const WadOptions& options, Scene& scene) {
     ThingPlacer(wad, map, textures, options, scene).place();
 }
 

@@ -13,7 +13,7 @@ namespace penumbra::wad {
 // Adds a sprite (Scene::sprites, with a material per sprite frame) for every thing with a picture
 // and a point light for every lamp, for the single-player game at medium skill. Textures are
 // appended to `textures`, whose list becomes the scene's.
-void placeThings(const WadFile& wad, const MapData& map, TextureLibrary& textures, const WadOptions& options,
-                 Scene& scene);
+void placeThings(const WadFile& wad, const MapData& map, TextureLibrary& textures,
+                 const WadOptions& options, Scene& scene);
 
 }  // namespace penumbra::wad
