@@ -23,10 +23,10 @@ vec4 texelAt(TextureInfo info, int x, int y) {
     return c;
 }
 
-// The texture a lookup of `index` shows at frame.time: itself, or for a frame of an animation the
-// cycle's frame on show, this texture's offset in the cycle kept (as Doom animates every frame).
-uint animatedTexture(uint index) {
-    TextureInfo info = textures[index];
+// The texture a lookup of texture `index` (described by `info`) shows at frame.time: itself, or
+// for a frame of an animation the cycle's frame on show, this texture's offset in the cycle kept
+// (as Doom animates every frame of a cycle).
+uint animatedTexture(uint index, TextureInfo info) {
     if (info.frameCount <= 1u || !(info.secondsPerFrame > 0.0) || !(frame.time >= 0.0)) return index;
     uint step = uint(floor(frame.time / info.secondsPerFrame)) % info.frameCount;
     return index - info.frame + (step + info.frame) % info.frameCount;
@@ -35,7 +35,8 @@ uint animatedTexture(uint index) {
 // Linear RGBA at uv (v = 0 is the top row, as glTF and our Texture store it); `wrap` is the
 // material's sampler word (PN_WRAP_* per axis, PN_SAMPLER_NEAREST).
 vec4 sampleTexture(uint index, vec2 uv, uint wrap) {
-    TextureInfo info = textures[animatedTexture(index)];
+    TextureInfo info = textures[index];
+    if (info.frameCount > 1u) info = textures[animatedTexture(index, info)];
     int w = int(info.width), h = int(info.height);
     uint wrapU = wrap & 0xffu, wrapV = (wrap >> 8) & 0xffu;
     if ((wrap & PN_SAMPLER_NEAREST) != 0u) {
