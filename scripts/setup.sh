@@ -7,8 +7,9 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libvulkan-dev glslc spirv-tools
   mesa-vulkan-drivers vulkan-validationlayers   # lavapipe (CPU Vulkan) + validation for tests
+  vulkan-validationlayers-dev                   # vk_enum_string_helper.h (string_VkResult)
   libstb-dev libtinyexr-dev libcli11-dev
-  libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev
+  libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev zlib1g-dev   # zlib: .ply.gz
   libgtest-dev libbenchmark-dev
   libglfw3-dev libimgui-dev xvfb xauth         # the viewer (penumbra view) and its test under Xvfb
   clang libclang-rt-14-dev                      # libFuzzer targets (tests/fuzz)

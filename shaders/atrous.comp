@@ -14,21 +14,24 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 
 layout(push_constant) uniform PushBlock { PassPush push; };
 layout(std430, set = 0, binding = PN_BINDING_GBUFFER) readonly buffer GBufferIn { GBufferTexel gbuffer[]; };
+layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) readonly buffer GuideIn { uvec2 guide[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) readonly buffer FilterIn { vec4 src[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_OUT) writeonly buffer FilterOut { vec4 dst[]; };
 
 const float kB3[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
 
-float depthAt(ivec2 q, float fallback) { return insideImage(q) ? gbuffer[pixelIndex(q)].depth : fallback; }
+float depthAt(ivec2 q, float fallback) { return insideImage(q) ? uintBitsToFloat(guide[pixelIndex(q)].y) : fallback; }
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (!insideImage(p)) return;
     uint i = pixelIndex(p);
-    GBufferTexel g = gbuffer[i];
+    uvec2 centreGuide = guide[i];
+    float depth = uintBitsToFloat(centreGuide.y);
+    vec3 normal = octDecode(unpackSnorm2x16(centreGuide.x));
     vec4 centre = src[i];
     vec4 result = centre;
-    if (g.surfaceId != 0u) {
+    if (depth > 0.0) {
         // Local noise: 3x3 Gaussian of the variance (a single pixel's estimate is itself noisy).
         float variance = 0.0, kernelSum = 0.0;
         for (int dy = -1; dy <= 1; ++dy)
@@ -41,8 +44,8 @@ void main() {
             }
         float lumScale = viewer.sigmaLuminance * sqrt(max(variance / kernelSum, 0.0)) + 1e-6;
         // Screen-space depth gradient, so slanted surfaces are not cut into strips.
-        vec2 gradient = 0.5 * vec2(depthAt(p + ivec2(1, 0), g.depth) - depthAt(p - ivec2(1, 0), g.depth),
-                                   depthAt(p + ivec2(0, 1), g.depth) - depthAt(p - ivec2(0, 1), g.depth));
+        vec2 gradient = 0.5 * vec2(depthAt(p + ivec2(1, 0), depth) - depthAt(p - ivec2(1, 0), depth),
+                                   depthAt(p + ivec2(0, 1), depth) - depthAt(p - ivec2(0, 1), depth));
         int step = int(push.passIndex);
         float centreLum = luminance(centre.rgb);
         vec3 colorSum = vec3(0.0);
@@ -53,12 +56,13 @@ void main() {
                 ivec2 q = p + offset;
                 if (!insideImage(q)) continue;
                 uint qi = pixelIndex(q);
-                GBufferTexel gq = gbuffer[qi];
-                if (gq.surfaceId == 0u) continue;
+                uvec2 tapGuide = guide[qi];
+                float tapDepth = uintBitsToFloat(tapGuide.y);
+                if (!(tapDepth > 0.0)) continue;
                 vec4 s = src[qi];
-                float wNormal = pow(max(dot(g.normal, gq.normal), 0.0), viewer.sigmaNormal);
-                float depthScale = viewer.sigmaDepth * abs(dot(gradient, vec2(offset))) + 1e-3 * g.depth;
-                float wDepth = exp(-abs(g.depth - gq.depth) / depthScale);
+                float wNormal = pow(max(dot(normal, octDecode(unpackSnorm2x16(tapGuide.x))), 0.0), viewer.sigmaNormal);
+                float depthScale = viewer.sigmaDepth * abs(dot(gradient, vec2(offset))) + 1e-3 * depth;
+                float wDepth = exp(-abs(depth - tapDepth) / depthScale);
                 float wLum = exp(-abs(centreLum - luminance(s.rgb)) / lumScale);
                 float w = kB3[abs(dx)] * kB3[abs(dy)] * wNormal * wDepth * wLum;
                 colorSum += w * s.rgb;
@@ -68,6 +72,6 @@ void main() {
         // The centre tap always has weight kB3[0]^2 > 0.
         result = vec4(colorSum / weightSum, varianceSum / (weightSum * weightSum));
     }
-    if ((push.mode & PN_ATROUS_LAST) != 0u) result.rgb *= demodulationAlbedo(g);
+    if ((push.mode & PN_ATROUS_LAST) != 0u) result.rgb *= demodulationAlbedo(gbuffer[i]);
     dst[i] = result;
 }

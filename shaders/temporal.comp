@@ -19,6 +19,7 @@ layout(std430, set = 0, binding = PN_BINDING_GBUFFER_PREV) readonly buffer GBuff
 layout(std430, set = 0, binding = PN_BINDING_HISTORY) readonly buffer HistoryIn { HistoryTexel history[]; };
 layout(std430, set = 0, binding = PN_BINDING_HISTORY_OUT) writeonly buffer HistoryOut { HistoryTexel historyOut[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) writeonly buffer FilterIn { vec4 filterIn[]; };
+layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) writeonly buffer GuideOut { uvec2 guide[]; };
 
 // This frame's mean radiance at a pixel.
 vec3 currentRadiance(uint i) { return accum[i].rgb / float(viewer.samplesPerFrame); }
@@ -126,4 +127,5 @@ void main() {
     vec3 albedo = demodulationAlbedo(g);
     float albedoLuminance = max(luminance(albedo), 1e-3);
     filterIn[i] = vec4(o.color / albedo, variance / (albedoLuminance * albedoLuminance));
+    guide[i] = packDenoiseGuide(g.normal, g.surfaceId != 0u ? g.depth : 0.0);
 }

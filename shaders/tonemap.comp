@@ -1,6 +1,7 @@
 #version 460
-// Display: exposure, a tone curve and sRGB encoding of the temporal (or denoised) radiance, or a
-// debug view, packed as RGBA8 for the copy to the window. Must match src/image/tonemap.cpp.
+// Display: exposure, a tone curve and sRGB encoding of the temporal (or denoised) radiance, and a
+// debug view blended over it (over the whole image or in a small window), packed as RGBA8 for the
+// copy to the window. Must match src/image/tonemap.cpp.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/types.h"
@@ -51,18 +52,34 @@ vec3 debugColor(uint i) {
     return vec3(1.0, 0.0, 1.0);
 }
 
+// The tone-mapped image in display-linear light.
+vec3 imageColor(uint i) {
+    vec3 radiance = (viewer.denoise != 0u ? filtered[i].rgb : history[i].color) * exp2(viewer.exposure);
+    return viewer.toneMapper == PN_TONEMAP_ACES
+               ? vec3(acesFilmic(radiance.r), acesFilmic(radiance.g), acesFilmic(radiance.b))
+               : vec3(reinhard(radiance.r), reinhard(radiance.g), reinhard(radiance.b));
+}
+
+// The debug view over the image at pixel p: over all of it, or scaled down into the small
+// window at the bottom right (nearest pixel), framed by a one-pixel white line.
+vec3 withDebugView(ivec2 p, vec3 image) {
+    if (viewer.debugInset == 0u) return mix(image, debugColor(pixelIndex(p)), viewer.debugOpacity);
+    ivec2 size = ivec2(frame.width, frame.height);
+    ivec2 inset = max(size / int(PN_DEBUG_INSET_DIVISOR), ivec2(1));
+    ivec2 q = p - (size - int(PN_DEBUG_INSET_MARGIN) - inset);  // p in the window's pixels
+    if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, inset))) {
+        ivec2 source = min(ivec2((vec2(q) + 0.5) * vec2(size) / vec2(inset)), size - 1);
+        return mix(image, debugColor(pixelIndex(source)), viewer.debugOpacity);
+    }
+    bool frameLine = all(greaterThanEqual(q, ivec2(-1))) && all(lessThanEqual(q, inset));
+    return frameLine ? vec3(1.0) : image;
+}
+
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (!insideImage(p)) return;
     uint i = pixelIndex(p);
-    vec3 rgb;
-    if (viewer.debugMode != PN_DEBUG_NONE) {
-        rgb = debugColor(i);
-    } else {
-        vec3 radiance = (viewer.denoise != 0u ? filtered[i].rgb : history[i].color) * exp2(viewer.exposure);
-        rgb = viewer.toneMapper == PN_TONEMAP_ACES
-                  ? vec3(acesFilmic(radiance.r), acesFilmic(radiance.g), acesFilmic(radiance.b))
-                  : vec3(reinhard(radiance.r), reinhard(radiance.g), reinhard(radiance.b));
-    }
+    vec3 rgb = imageColor(i);
+    if (viewer.debugMode != PN_DEBUG_NONE) rgb = withDebugView(p, rgb);
     display[i] = toSrgb8(rgb.r) | (toSrgb8(rgb.g) << 8) | (toSrgb8(rgb.b) << 16) | (255u << 24);
 }

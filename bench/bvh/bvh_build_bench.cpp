@@ -3,13 +3,17 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "bvh/builder.h"
 #include "bvh/stats.h"
 #include "bvh/traverse_cpu.h"
 #include "core/parallel.h"
+#include "scene/io/load.h"
 
 namespace penumbra::bvh {
 namespace {
@@ -51,6 +55,34 @@ BENCHMARK(BM_BuildRandomSoup)
     ->Arg(1'000'000)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// A real mesh: any scene file the loaders read (the Stanford bunny by default; point
+// PENUMBRA_BENCH_MESH at a bigger one, e.g. the dragon PLY). Skipped when the file is missing.
+void BM_BuildMesh(benchmark::State& state) {
+    const char* env = std::getenv("PENUMBRA_BENCH_MESH");
+    const std::string path = env ? env : "/usr/share/glmark2/models/bunny.obj";
+    std::vector<Triangle> tris;
+    try {
+        tris = trianglesOf(flattenTriangles(loadSceneFile(path)));
+    } catch (const std::exception& e) {
+        state.SkipWithError(e.what());
+        return;
+    }
+    BuildOptions options;
+    Bvh bvh;
+    for (auto _ : state) {
+        bvh = buildTriangles(tris, options);
+        benchmark::DoNotOptimize(bvh.nodes.data());
+    }
+    BvhStats s = computeStats(bvh, options);
+    state.SetLabel(std::filesystem::path(path).filename().string());
+    state.counters["tris"] = double(tris.size());
+    state.counters["tris/s"] =
+        benchmark::Counter(double(tris.size()), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["sah"] = s.sahCost;
+    state.counters["threads"] = hardwareThreads();
+}
+BENCHMARK(BM_BuildMesh)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // One thread, primary-like rays from outside the cube at random points inside it.
 void BM_ClosestHitCpu(benchmark::State& state) {

@@ -29,31 +29,29 @@ float sinSubClamped(float sinA, float cosA, float sinB, float cosB) { return cos
 
 float sinFromCos(float c) { return sqrt(max(0.0, 1.0 - c * c)); }
 
-// Cosine of the half-angle of the cone from p that holds the box (through its bounding sphere);
-// -1 when p is inside that sphere (every direction).
-float boxConeCos(vec3 lo, vec3 hi, vec3 p) {
-    vec3 c = 0.5 * (lo + hi);
-    float r2 = 0.25 * dot(hi - lo, hi - lo);
-    float d2 = dot(p - c, p - c);
-    return d2 <= r2 ? -1.0 : sqrt(max(0.0, 1.0 - r2 / d2));
-}
 
 // How much the lights under `node` could bring to a surface at p with normal n (n = 0: no
 // surface): zero only where they cannot light p at all.
 float lightNodeImportance(LightNode node, vec3 p, vec3 n) {
-    vec3 toP = p - 0.5 * (node.boundsMin + node.boundsMax);
+    vec3 halfDiagonal = 0.5 * (node.boundsMax - node.boundsMin);
+    vec3 toP = p - (node.boundsMin + halfDiagonal);
     float dist2 = dot(toP, toP);
     // Within the bounds the squared distance says little; pbrt-v4 floors it at half the diagonal.
-    float d2 = max(dist2, 0.5 * length(node.boundsMax - node.boundsMin));
+    float d2 = max(dist2, node.minDistance2);
     vec3 wi = dist2 > 0.0 ? toP * inversesqrt(dist2) : node.axis;
     float cosW = dot(node.axis, wi);
     if (node.twoSided != 0u) cosW = abs(cosW);
-    float cosB = boxConeCos(node.boundsMin, node.boundsMax, p);
-    float sinB = sinFromCos(cosB);
+    float sinW = sinFromCos(cosW);
+    // The cone from p that holds the box (through its bounding sphere); every direction from
+    // inside that sphere.
+    float r2 = dot(halfDiagonal, halfDiagonal);
+    float sin2B = dist2 > r2 ? r2 / dist2 : 1.0;
+    float cosB = dist2 > r2 ? sqrt(1.0 - sin2B) : -1.0;
+    float sinB = dist2 > r2 ? sqrt(sin2B) : 0.0;
     // The smallest angle between an emitting normal and a direction toward p, then the emission
     // spread beyond it.
-    float cosX = cosSubClamped(sinFromCos(cosW), cosW, sinFromCos(node.cosThetaO), node.cosThetaO);
-    float sinX = sinSubClamped(sinFromCos(cosW), cosW, sinFromCos(node.cosThetaO), node.cosThetaO);
+    float cosX = cosSubClamped(sinW, cosW, node.sinThetaO, node.cosThetaO);
+    float sinX = sinSubClamped(sinW, cosW, node.sinThetaO, node.cosThetaO);
     float cosP = cosSubClamped(sinX, cosX, sinB, cosB);
     if (cosP <= node.cosThetaE) return 0.0;
     float importance = node.phi * cosP / d2;
@@ -103,25 +101,29 @@ struct LightPick {
     float pmf;  // probability of this pick at p
 };
 
-LightPick pickLight(vec3 p, vec3 n, inout uint rng) {
+// Picks with one number u in [0, 1), rescaled at every choice (the part of u within the chosen
+// interval, stretched back to [0, 1)), so stratified u values stay stratified down the tree.
+LightPick pickLight(vec3 p, vec3 n, float u) {
+    const float belowOne = 1.0 - 1.0 / 16777216.0;
     if (frame.lightPickUniform != 0u) {
         if (frame.lightRefCount == 0u) return LightPick(PN_NO_LIGHT, 0.0);
-        uint k = min(uint(rngNext(rng) * float(frame.lightRefCount)), frame.lightRefCount - 1u);
+        uint k = min(uint(u * float(frame.lightRefCount)), frame.lightRefCount - 1u);
         return LightPick(k, 1.0 / float(frame.lightRefCount));
     }
     float tree = treeImportance(p, n);
     float total = totalLightImportance(p, n);
     if (!(total > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
-    float u = rngNext(rng) * total;
+    float x = u * total;
     LightPick pick = LightPick(PN_NO_LIGHT, 0.0);
     for (uint k = 0u; k < frame.topLightCount; ++k) {
         float w = topLightImportance(k, p, n);
         if (!(w > 0.0)) continue;
         pick = LightPick(k, w / total);
-        if (u < w) return pick;
-        u -= w;
+        if (x < w) return pick;
+        x -= w;
     }
-    if (!(tree > 0.0)) return pick;  // rounding carried u past the last top-level light
+    if (!(tree > 0.0)) return pick;  // rounding carried x past the last top-level light
+    u = min(x / tree, belowOne);
     pick = LightPick(PN_NO_LIGHT, tree / total);
     uint node = frame.topLightCount;
     for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
@@ -129,12 +131,14 @@ LightPick pickLight(vec3 p, vec3 n, inout uint rng) {
         if ((child & PN_LIGHT_NODE_LEAF) != 0u) return LightPick(child & ~PN_LIGHT_NODE_LEAF, pick.pmf);
         float first = firstChildProbability(node, p, n);
         if (first < 0.0) break;
-        if (rngNext(rng) < first) {
+        if (u < first) {
             node = node + 1u;
             pick.pmf *= first;
+            u = min(u / first, belowOne);
         } else {
             node = child;
             pick.pmf *= 1.0 - first;
+            u = min((u - first) / (1.0 - first), belowOne);
         }
     }
     return LightPick(PN_NO_LIGHT, 0.0);

@@ -50,6 +50,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_ENV_TEXELS 24     // environment radiance, one vec4 (rgb, unused) per texel
 #define PN_BINDING_OVERLAY_BOXES 25  // BvhNode per box the viewer's box overlay outlines (bounds only)
 #define PN_BINDING_LIGHT_NODES 26    // LightNode per node of the light BVH (depth-first, root first)
+#define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
 
 // ---- kernel features: specialization constant 0 of the tracing kernels, a bit set. A pipeline
 // made for a scene leaves out what the scene does not use (render/kernel_features.h); the
@@ -64,7 +65,7 @@ using namespace penumbra::gpu_types;
 #define PN_FEATURE_BRUTE_FORCE 128u // --accel brute
 #define PN_FEATURE_SPRITES 256u     // sprites (PN_TRI_SPRITE) among the primitives
 #define PN_FEATURE_SKY_PORTALS 512u // materials that show the environment (PN_MATERIAL_SKY_PORTAL)
-#define PN_FEATURE_ALL 0xffffffffu
+#define PN_FEATURE_ALL 0x3ffu    // every feature above
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic
@@ -242,8 +243,8 @@ PN_STRUCT(LightNode) {
     float cosThetaE;    // emission spreads at most thetaE beyond the normals (pi/2: Lambertian)
     uint childOrLight;
     uint twoSided;      // nonzero: emits on both sides of its normals
-    uint pad0;
-    uint pad1;
+    float sinThetaO;    // precomputed for the importance bound
+    float minDistance2; // half the bounds' diagonal: pbrt-v4's floor on the squared distance
 };
 
 // A point, spot or directional light, 64 bytes. Delta lights: reached only by light sampling.
@@ -333,8 +334,16 @@ PN_STRUCT(FrameUniforms) {
 #define PN_DEBUG_HEAT_TRIS 7u    // triangles tested by the primary ray
 #define PN_DEBUG_BVH_BOXES 8u    // the image with the BVH's boxes at one depth outlined (boxes.comp)
 #define PN_MAX_OVERLAY_BOXES 4096u  // boxes the overlay draws at most (each pixel tests every one)
+// The debug view's small window (picture-in-picture): 1/PN_DEBUG_INSET_DIVISOR of the image's
+// width and height, PN_DEBUG_INSET_MARGIN pixels from its bottom right corner, in a one-pixel frame.
+#define PN_DEBUG_INSET_DIVISOR 4u
+#define PN_DEBUG_INSET_MARGIN 8u
 #define PN_OVERLAY_COLOR 0xff00ffffu  // RGBA8 of an outlined pixel: opaque yellow
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
+// The denoiser's per-pixel guide, written by temporal.comp: x = the shading normal, octahedral,
+// packSnorm2x16; y = the linear depth's float bits (0: the primary ray missed). 8 bytes instead of
+// a 48-byte GBufferTexel per tap keeps the 25-tap filter in cache.
+#define PN_DENOISE_GUIDE_BYTES 8u
 
 // What the primary ray saw at a pixel's centre, 48 bytes.
 PN_STRUCT(GBufferTexel) {
@@ -389,9 +398,9 @@ PN_STRUCT(ViewerUniforms) {
     float sigmaDepth;      // relative depth difference per pixel of step
     float heatMax;         // heat-map count shown as the hottest colour
     uint denoise;          // nonzero: the tonemap input is the denoiser's output
+    float debugOpacity;    // the debug view blended over the image: 1 shows only the view, 0 only the image
+    uint debugInset;       // nonzero: the debug view in a small window over the image (PN_DEBUG_INSET_*)
     uint pad0;
-    uint pad1;
-    uint pad2;
 };
 
 // Largest traversal counts of a heat-map frame (for the legend), 16 bytes.
@@ -482,7 +491,8 @@ static_assert(sizeof(LightRef) == 16 && offsetof(LightRef, index) == 4 && offset
 static_assert(sizeof(LightNode) == 64 && offsetof(LightNode, phi) == 12 && offsetof(LightNode, boundsMax) == 16 &&
               offsetof(LightNode, cosThetaO) == 28 && offsetof(LightNode, axis) == 32 &&
               offsetof(LightNode, cosThetaE) == 44 && offsetof(LightNode, childOrLight) == 48 &&
-              offsetof(LightNode, twoSided) == 52);
+              offsetof(LightNode, twoSided) == 52 && offsetof(LightNode, sinThetaO) == 56 &&
+              offsetof(LightNode, minDistance2) == 60);
 static_assert(sizeof(EnvAlias) == 16 && offsetof(EnvAlias, alias) == 4 && offsetof(EnvAlias, pdf) == 8);
 static_assert(sizeof(FrameUniforms) == 176 && offsetof(FrameUniforms, topLightCount) == 160 &&
               offsetof(FrameUniforms, envLuminance) == 164 && offsetof(FrameUniforms, lightPickUniform) == 172 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
@@ -527,7 +537,8 @@ static_assert(sizeof(ViewerUniforms) == 128 && offsetof(ViewerUniforms, prevTanH
               offsetof(ViewerUniforms, exposure) == 64 && offsetof(ViewerUniforms, samplesPerFrame) == 76 &&
               offsetof(ViewerUniforms, clampSigma) == 80 && offsetof(ViewerUniforms, maxHistory) == 92 &&
               offsetof(ViewerUniforms, sigmaLuminance) == 96 && offsetof(ViewerUniforms, heatMax) == 108 &&
-              offsetof(ViewerUniforms, denoise) == 112);
+              offsetof(ViewerUniforms, denoise) == 112 && offsetof(ViewerUniforms, debugOpacity) == 116 &&
+              offsetof(ViewerUniforms, debugInset) == 120);
 static_assert(sizeof(HeatCounters) == 16);
 }  // namespace penumbra::shader
 #endif

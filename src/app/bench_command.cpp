@@ -24,7 +24,7 @@ struct BenchArgs {
     CameraOverrides camera;
     // --viewer: the viewer's whole frame
     bool viewer = false;
-    std::uint32_t spp = 1, denoise = 5;
+    std::uint32_t spp = 1, denoise = 5, rouletteStart = ViewSettings{}.rouletteStart;
     bool noTemporal = false;
     std::string motion = "static";
     int frames = 200;
@@ -101,6 +101,7 @@ void runViewerBenchCommand(const BenchArgs& args) {
     o.height = args.height;
     o.view.samplesPerFrame = args.spp;
     o.view.maxBounces = args.bounces;
+    o.view.rouletteStart = args.rouletteStart;
     o.view.temporal = !args.noTemporal;
     o.view.denoise = args.denoise > 0;
     o.view.denoiseIterations = std::max(args.denoise, 1u);
@@ -153,20 +154,20 @@ void runBench(const BenchArgs& args) {
         std::printf(
             "{\n  \"scene\": \"%s\",\n  \"device\": \"%s\",\n  \"accel\": \"%s\",\n  \"width\": %u,\n  \"height\": %u,\n"
             "  \"bounces\": %u,\n  \"repeats\": %d,\n  \"triangles\": %zu,\n  \"bvh_nodes\": %zu,\n  \"bvh_sah_cost\": %.3f,\n"
-            "  \"bvh_build_ms\": %.3f,\n  \"primary_mrays_per_s\": %.1f,\n  \"shadow_mrays_per_s\": %.1f,\n"
+            "  \"bvh_build_ms\": %.3f,\n  \"bvh_from_cache\": %s,\n  \"primary_mrays_per_s\": %.1f,\n  \"shadow_mrays_per_s\": %.1f,\n"
             "  \"diffuse_mrays_per_s\": %.1f,\n  \"primary_ms\": %.4f,\n  \"shadow_ms\": %.4f,\n  \"diffuse_ms\": %.4f,\n"
             "  \"frame_ms\": %.4f,\n  \"frame_rays\": %llu,\n  \"frame_mrays_per_s\": %.1f\n}\n",
             scene.name.c_str(), ctx->info().name.c_str(), accelName(settings.accel), settings.width, settings.height,
             settings.maxBounces, r.repeats, a.triVerts.size(), a.nodes.size(), a.stats.sahCost, a.buildMilliseconds,
-            mrays(r.primaryRays, r.primaryMs), mrays(r.shadowRays, r.shadowMs), mrays(r.diffuseRays, r.diffuseMs),
+            a.bvhFromCache ? "true" : "false", mrays(r.primaryRays, r.primaryMs), mrays(r.shadowRays, r.shadowMs), mrays(r.diffuseRays, r.diffuseMs),
             r.primaryMs, r.shadowMs, r.diffuseMs, r.frameMs, static_cast<unsigned long long>(r.frameRays),
             mrays(r.frameRays, r.frameMs));
         return;
     }
     std::printf("%s on %s, %ux%u, accel %s, medians of %d runs\n", scene.name.c_str(), ctx->info().name.c_str(),
                 settings.width, settings.height, accelName(settings.accel), r.repeats);
-    std::printf("  bvh build        %10.3f ms  (%zu triangles, %zu nodes, SAH cost %.2f)\n", a.buildMilliseconds,
-                a.triVerts.size(), a.nodes.size(), a.stats.sahCost);
+    std::printf("  bvh build        %10.3f ms  (%zu triangles, %zu nodes, SAH cost %.2f%s)\n", a.buildMilliseconds,
+                a.triVerts.size(), a.nodes.size(), a.stats.sahCost, a.bvhFromCache ? ", read from the cache" : "");
     if (!a.env.alias.empty())
         std::printf("  env table build  %10.3f ms  (%ux%u texels)\n", a.envBuildMilliseconds, a.env.width, a.env.height);
     std::printf("  primary rays     %10.1f Mrays/s  (%.3f ms)\n", mrays(r.primaryRays, r.primaryMs), r.primaryMs);
@@ -194,6 +195,7 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--spp", args->spp, "--viewer: samples per pixel per frame (default 1)");
     cmd->add_option("--denoise", args->denoise, "--viewer: a-trous denoiser passes, 0 turns it off (default 5)");
     cmd->add_flag("--no-temporal", args->noTemporal, "--viewer: no temporal accumulation");
+    cmd->add_option("--roulette-start", args->rouletteStart, "--viewer: bounce from which Russian roulette may end paths (default 1, as in the viewer)");
     cmd->add_option("--camera-motion", args->motion, "--viewer: static, orbit or walk (default static)");
     cmd->add_option("--frames", args->frames, "--viewer: timed frames (default 200)");
     cmd->add_option("--warmup-frames", args->warmupFrames, "--viewer: untimed frames first, at least (default 30)");
@@ -202,6 +204,7 @@ void registerBench(CLI::App& app, Action& action) {
                     "--viewer: a converged EXR of the same view and size; reports the error after --budget-ms of frames");
     cmd->add_option("--budget-ms", args->budgetMs, "--viewer: GPU time budget of the equal-time error (default 100)");
     addDeviceOption(*cmd, args->device);
+    addBvhCacheOption(*cmd);
     addEnvironmentOptions(*cmd, args->env);
     addCameraOptions(*cmd, args->camera);
     cmd->callback([args, &action] { action = [args] { runBench(*args); }; });

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "bvh/cache.h"
 #include "core/error.h"
 #include "scene/io/load.h"
 #include "scene/presets/presets.h"
@@ -12,6 +13,23 @@ namespace penumbra::app {
 void addDeviceOption(CLI::App& cmd, std::string& device) {
     cmd.add_option("--device", device,
                    "Vulkan device: index from 'penumbra info' or part of its name (default: best; env PENUMBRA_DEVICE)");
+}
+
+namespace {
+bool noBvhCache = false;
+}  // namespace
+
+void addBvhCacheOption(CLI::App& cmd) {
+    cmd.add_flag("--no-bvh-cache", noBvhCache,
+                 "build the BVH afresh instead of reading or writing the on-disk cache "
+                 "(folder: PENUMBRA_CACHE_DIR, else XDG_CACHE_HOME/penumbra or ~/.cache/penumbra)");
+}
+
+void configureBvhCache() {
+    bvh::CacheSettings settings;
+    settings.directory = bvh::defaultCacheDirectory();
+    settings.enabled = !noBvhCache && !settings.directory.empty();
+    bvh::setCacheSettings(settings);
 }
 
 void addCameraOptions(CLI::App& cmd, CameraOverrides& o) {

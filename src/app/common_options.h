@@ -28,6 +28,11 @@ struct CameraOverrides {
 };
 
 void addDeviceOption(CLI::App& cmd, std::string& device);
+// --no-bvh-cache on a command; configureBvhCache() (main, before the action) reads it.
+void addBvhCacheOption(CLI::App& cmd);
+// Turns the on-disk BVH cache (bvh/cache.h) on in its default folder (PENUMBRA_CACHE_DIR,
+// XDG_CACHE_HOME or ~/.cache, + /penumbra), unless --no-bvh-cache was given.
+void configureBvhCache();
 void addCameraOptions(CLI::App& cmd, CameraOverrides& overrides);
 // --env FILE|sky, --env-intensity X, --env-rotation DEG.
 void addEnvironmentOptions(CLI::App& cmd, EnvironmentSpec& env);

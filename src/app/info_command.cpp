@@ -31,8 +31,9 @@ void printScene(const std::string& name, const std::string& map, const Environme
                 "of %zu nodes), loaded in %.0f ms\n",
                 scene.name.c_str(), tris, scene.materials.size(), arrays.lightRefs.size(), arrays.topLightCount,
                 arrays.lightNodes.size() - arrays.topLightCount, loadMs);
-    std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, built in %.2f ms\n", s.nodes,
-                s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.buildMilliseconds);
+    std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, %s in %.2f ms\n", s.nodes,
+                s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.bvhFromCache ? "read from the cache" : "built",
+                arrays.buildMilliseconds);
     std::printf("  %zu textures, %zu punctual lights, %u spheres (in the triangle count), %zu sphere lights\n",
                 scene.textures.size(), arrays.punctual.size(), arrays.sphereCount, arrays.sphereLights.size());
     if (scene.environment.map)
@@ -74,6 +75,7 @@ void registerInfo(CLI::App& app, Action& action) {
     cmd->add_option("scene", args->scene, "built-in scene or scene file");
     cmd->add_option("--map", args->map, "level of a .wad file");
     addDeviceOption(*cmd, args->device);
+    addBvhCacheOption(*cmd);
     addEnvironmentOptions(*cmd, args->env);
     cmd->callback([args, &action] { action = [args] { runInfo(*args); }; });
 }

@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "core/error.h"
 #include "core/log.h"
 
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
     }
     penumbra::setVerbose(verbose);
     try {
+        penumbra::app::configureBvhCache();
         action();
         return 0;
     } catch (const penumbra::UsageError& e) {

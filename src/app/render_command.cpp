@@ -106,6 +106,7 @@ void registerRender(CLI::App& app, Action& action) {
     cmd->add_option("--time", args->settings.time, "seconds: the moment animated textures show (Doom's liquids; default 0)");
     cmd->add_flag("-q,--quiet", args->quiet, "no progress bar or summary");
     addDeviceOption(*cmd, args->device);
+    addBvhCacheOption(*cmd);
     addCameraOptions(*cmd, args->camera);
     addEnvironmentOptions(*cmd, args->env);
     addWadOptions(*cmd, args->wad);

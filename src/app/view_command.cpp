@@ -1,5 +1,6 @@
 // penumbra view [SCENE]: the interactive viewer (src/app/viewer/).
 #include <memory>
+#include <optional>
 
 #include "app/commands.h"
 #include "app/common_options.h"
@@ -20,6 +21,8 @@ struct ViewArgs {
     std::string debug = "none";
     EnvironmentSpec env;
     WadOptions wad;
+    std::string script;
+    std::optional<double> fixedDt;
 };
 
 void runView(ViewArgs args) {
@@ -33,6 +36,11 @@ void runView(ViewArgs args) {
         if (formatFromPath(args.options.screenshot) != ImageFormat::Png) throw UsageError("--screenshot must be a .png file");
         checkWritable(args.options.screenshot);
     }
+    if (args.fixedDt && !(*args.fixedDt > 0 && *args.fixedDt <= 1))
+        throw UsageError("--fixed-dt must be a time step in seconds, above 0 and at most 1");
+    args.options.fixedDt = args.fixedDt;
+    // Read before any window opens, so a bad script is one line and exit code 2.
+    if (!args.script.empty()) args.options.script = viewer::loadInputScript(args.script);
     args.options.vsync = !args.noVsync;
     args.options.debug = viewer::parseDebugView(args.debug);
     Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env, args.wad);
@@ -52,9 +60,16 @@ void registerView(CLI::App& app, Action& action) {
     cmd->add_flag("--no-vsync", args->noVsync, "present as fast as possible");
     cmd->add_option("--frames", args->options.frames, "automation: play at once, render N frames, then exit");
     cmd->add_option("--screenshot", args->options.screenshot, "automation: with --frames, write frame N to this PNG");
+    cmd->add_option("--script", args->script,
+                    "automation: play timed key and mouse events from this file (see docs/VIEWER.md); starts playing");
+    cmd->add_option("--fixed-dt", args->fixedDt, "each frame advances time by this many seconds (reproducible runs)");
+    cmd->add_flag("--print-camera", args->options.printCamera,
+                  "on exit, print 'camera X,Y,Z direction DX,DY,DZ' (scene units)");
+    cmd->add_flag("--fly", args->options.fly, "start in free flight on Doom levels (F toggles walking)");
     cmd->add_flag("--denoise", args->options.denoise, "start with the a-trous denoiser on");
     cmd->add_option("--debug", args->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles, boxes");
     addDeviceOption(*cmd, args->options.device);
+    addBvhCacheOption(*cmd);
     addCameraOptions(*cmd, args->camera);
     addEnvironmentOptions(*cmd, args->env);
     addWadOptions(*cmd, args->wad);

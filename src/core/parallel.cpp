@@ -50,4 +50,48 @@ void parallelFor(std::size_t count, std::size_t minChunk,
     if (failure) std::rethrow_exception(failure);
 }
 
+void TaskGroup::spawn(Task task) {
+    std::lock_guard lock(mutex_);
+    if (failure_) return;
+    waiting_.push_back(std::move(task));
+    ++unfinished_;
+    changed_.notify_one();
+}
+
+void TaskGroup::work() {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+        changed_.wait(lock, [&] { return !waiting_.empty() || unfinished_ == 0; });
+        if (waiting_.empty()) return;  // everything finished
+        Task task = std::move(waiting_.front());
+        waiting_.pop_front();
+        lock.unlock();
+        try {
+            task();
+        } catch (...) {
+            lock.lock();
+            if (!failure_) failure_ = std::current_exception();
+            unfinished_ -= waiting_.size();
+            waiting_.clear();
+            lock.unlock();
+        }
+        lock.lock();
+        if (--unfinished_ == 0) changed_.notify_all();
+    }
+}
+
+void TaskGroup::run(Task root) {
+    {
+        std::lock_guard lock(mutex_);
+        failure_ = nullptr;
+        waiting_.push_back(std::move(root));
+        unfinished_ = 1;
+    }
+    std::vector<std::thread> helpers;
+    for (unsigned t = 1; t < hardwareThreads(); ++t) helpers.emplace_back([this] { work(); });
+    work();
+    for (auto& h : helpers) h.join();
+    if (failure_) std::rethrow_exception(failure_);
+}
+
 }  // namespace penumbra

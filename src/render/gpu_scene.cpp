@@ -6,6 +6,7 @@
 #include <cstring>
 #include <numeric>
 
+#include "bvh/cache.h"
 #include "bvh/sphere.h"
 #include "bvh/sprite.h"
 #include "bvh/triangle.h"
@@ -152,18 +153,15 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
 
     SceneArrays out;
     auto start = std::chrono::steady_clock::now();
-    bvh::Bvh tree;
-    if (spheres.spheres.empty() && scene.sprites.empty()) {
-        tree = bvh::buildTriangles(geometry, options);
-    } else {
-        // Spheres, then sprites, follow the triangles in the primitive numbering the builder sees.
-        std::vector<Aabb> bounds;
-        bounds.reserve(primCount);
-        for (const bvh::Triangle& t : geometry) bounds.push_back(bvh::bounds(t));
-        for (const Sphere& s : spheres.spheres) bounds.push_back(bvh::sphereBounds(s.center, s.radius));
-        for (const Sprite& s : scene.sprites) bounds.push_back(spriteBounds(s));
-        tree = bvh::build(bounds, options);
-    }
+    // Spheres, then sprites, follow the triangles in the primitive numbering the builder sees.
+    // The build goes through the BVH cache, which the command line turns on (bvh/cache.h).
+    std::vector<Aabb> extraBounds;
+    extraBounds.reserve(spheres.spheres.size() + scene.sprites.size());
+    for (const Sphere& s : spheres.spheres) extraBounds.push_back(bvh::sphereBounds(s.center, s.radius));
+    for (const Sprite& s : scene.sprites) extraBounds.push_back(spriteBounds(s));
+    bvh::CachedBuild built = bvh::buildCached(geometry, extraBounds, options);
+    bvh::Bvh tree = std::move(built.bvh);
+    out.bvhFromCache = built.fromCache;
     out.buildMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     out.stats = bvh::computeStats(tree, options);
     out.nodes = std::move(tree.nodes);

@@ -36,6 +36,7 @@ struct SceneArrays {
     EnvTable env;  // empty without an environment map
     bvh::BvhStats stats{};
     double buildMilliseconds = 0;
+    bool bvhFromCache = false;  // read from the BVH cache (buildMilliseconds then times the read)
     double envBuildMilliseconds = 0;
 };
 

@@ -27,7 +27,8 @@ bool sameCamera(const shader::FrameUniforms& a, const shader::FrameUniforms& b) 
 bool changesTheImage(const ViewSettings& a, const ViewSettings& b) {
     auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
     return a.apertureRadius != b.apertureRadius || a.focusDistance != b.focusDistance ||
-           a.samplesPerFrame != b.samplesPerFrame || a.maxBounces != b.maxBounces || a.torch != b.torch ||
+           a.samplesPerFrame != b.samplesPerFrame || a.maxBounces != b.maxBounces ||
+           a.rouletteStart != b.rouletteStart || a.torch != b.torch ||
            !same(a.torchColor, b.torchColor) || a.torchIntensity != b.torchIntensity || a.torchRange != b.torchRange;
 }
 
@@ -132,12 +133,13 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
     historyB_ = pixelBuffer(sizeof(shader::HistoryTexel));
     filterA_ = pixelBuffer(sizeof(Vec4));
     filterB_ = pixelBuffer(sizeof(Vec4));
+    guide_ = pixelBuffer(PN_DENOISE_GUIDE_BYTES);
     display_ = pixelBuffer(sizeof(std::uint32_t));
     historyIn_ = &historyA_;
     historyOut_ = &historyB_;
     // Everything starts defined, so no pass ever reads uninitialised memory.
     commands_.run([&](VkCommandBuffer cmd) {
-        for (gpu::Buffer* b : {&accumulation_, &gbuffer_, &gbufferPrev_, &historyA_, &historyB_, &filterA_, &filterB_, &display_})
+        for (gpu::Buffer* b : {&accumulation_, &gbuffer_, &gbufferPrev_, &historyA_, &historyB_, &filterA_, &filterB_, &guide_, &display_})
             vkCmdFillBuffer(cmd, b->get(), 0, VK_WHOLE_SIZE, 0);
     });
     createPasses();
@@ -152,11 +154,11 @@ void InteractiveRenderer::createPasses() {
     auto temporal = [&](const gpu::Buffer& in, const gpu::Buffer& out) {
         return std::make_unique<TemporalPass>(
             ctx_, TemporalBuffers{&frameUniforms_, &viewerUniforms_, &accumulation_, &gbuffer_, &gbufferPrev_, &in,
-                                  &out, &filterA_});
+                                  &out, &filterA_, &guide_});
     };
     temporalAB_ = temporal(historyA_, historyB_);
     temporalBA_ = temporal(historyB_, historyA_);
-    denoise_ = std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer_, filterA_, filterB_);
+    denoise_ = std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer_, guide_, filterA_, filterB_);
     tonemapA_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyA_, filterB_, gbuffer_, display_);
     tonemapB_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyB_, filterB_, gbuffer_, display_);
     heatmap_ = std::make_unique<HeatmapPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, filterB_, heatCounters_);
@@ -177,6 +179,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     rs.height = height_;
     rs.samplesPerPass = s.samplesPerFrame;
     rs.maxBounces = s.maxBounces;
+    rs.rouletteStart = s.rouletteStart;
     rs.seed = seed_;
     rs.time = s.time;
     Camera lens = camera;
@@ -220,7 +223,12 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     const auto* heatMax = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());
     v.heatMax = heat ? float(s.debug == DebugView::HeatNodes ? heatMax->maxNodes : heatMax->maxTris)
                      : float(frameIndex_ + 1) * float(s.samplesPerFrame);
-    const bool denoise = s.denoise && s.denoiseIterations > 0 && shown == DebugView::None;
+    v.debugOpacity = std::clamp(s.debugOpacity, 0.0f, 1.0f);
+    v.debugInset = s.debugInset ? 1u : 0u;
+    // The image shows under a see-through or small debug view; the heat counts use the buffer
+    // the denoiser writes, so under a heat map the image is not denoised.
+    const bool imageShown = shown == DebugView::None || v.debugOpacity < 1.0f || s.debugInset;
+    const bool denoise = s.denoise && s.denoiseIterations > 0 && imageShown && !heat;
     v.denoise = denoise ? 1u : 0u;
     std::memcpy(frameUniforms_.mapped(), &f, sizeof(f));
     std::memcpy(viewerUniforms_.mapped(), &v, sizeof(v));

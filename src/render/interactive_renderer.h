@@ -88,7 +88,7 @@ private:
     std::optional<std::uint32_t> torchLight_;
     std::uint32_t seed_;
     gpu::Buffer frameUniforms_, viewerUniforms_, counters_, heatCounters_;
-    gpu::Buffer accumulation_, gbuffer_, gbufferPrev_, historyA_, historyB_, filterA_, filterB_, display_;
+    gpu::Buffer accumulation_, gbuffer_, gbufferPrev_, historyA_, historyB_, filterA_, filterB_, guide_, display_;
     gpu::Buffer* historyIn_ = nullptr;  // last frame's history; the two swap every frame
     gpu::Buffer* historyOut_ = nullptr;
     std::unique_ptr<TracePass> trace_;

@@ -189,6 +189,8 @@ shader::LightNode toLightNode(const LightBounds& b, std::uint32_t childOrLight) 
     n.cosThetaE = b.cosThetaE;
     n.childOrLight = childOrLight;
     n.twoSided = b.twoSided ? 1u : 0u;
+    n.sinThetaO = std::sqrt(std::max(0.0f, 1.0f - b.cosThetaO * b.cosThetaO));
+    n.minDistance2 = 0.5f * length(b.bounds.extent());
     return n;
 }
 

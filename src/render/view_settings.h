@@ -25,6 +25,10 @@ enum class DebugView : std::uint32_t {
 struct ViewSettings {
     std::uint32_t samplesPerFrame = 1;
     std::uint32_t maxBounces = 8;
+    // Russian roulette may end paths from this bounce on. From the first in the viewer: Doom's dark
+    // walls end most paths after one bounce, which halves the frame's rays at no loss in error at
+    // equal time (docs/PERFORMANCE.md); `penumbra render` starts at bounce 3.
+    std::uint32_t rouletteStart = 1;
     float resolutionScale = 1.0f;  // render at this fraction of the window, upscaled to it
     bool temporal = true;
     bool denoise = false;
@@ -37,6 +41,8 @@ struct ViewSettings {
     float exposure = 0.0f;     // stops
     ToneMapper toneMapper = ToneMapper::Reinhard;
     DebugView debug = DebugView::None;
+    float debugOpacity = 1.0f;  // of the debug view over the image: 1 shows only the view, 0 only the image
+    bool debugInset = false;    // the debug view in a small window over the image (picture-in-picture)
     std::uint32_t boxDepth = 0;   // BvhBoxes: the BVH depth whose boxes are outlined (root: 0)
     float boxLineWidth = 1.5f;    // BvhBoxes: pixels
     // Depth of field, overriding the camera's own (a thin lens; radius 0 is a pinhole).
@@ -48,6 +54,8 @@ struct ViewSettings {
     float torchIntensity = 80.0f;  // candela
     float torchRange = 0.0f;       // 0: unlimited
     float time = 0.0f;             // seconds: the moment animated textures show (advanced while playing)
+
+    bool operator==(const ViewSettings&) const = default;
 };
 
 }  // namespace penumbra

@@ -11,6 +11,7 @@
 
 #include "core/aabb.h"
 #include "core/vec.h"
+#include "scene/walk/walk_map.h"
 
 namespace penumbra {
 
@@ -194,6 +195,8 @@ struct Scene {
     Vec3 background{0};  // radiance of rays that leave the scene (when environment has no map)
     Environment environment;
     Torch torch;
+    // Doom levels: the lines walking collides with (map units); none where a format has no levels.
+    std::optional<walk::WalkMap> walkMap;
 
     std::size_t triangleCount() const;
     Aabb bounds() const;  // meshes, spheres and sprites

@@ -12,6 +12,11 @@
 
 #include <gtest/gtest.h>
 
+#include "binary_path.h"
+#include "scene/io/wad/units.h"
+#include "scene/io/wad/wad_loader.h"
+#include "scene/walk/walk_physics.h"
+
 namespace penumbra::test {
 namespace {
 
@@ -19,20 +24,24 @@ namespace fs = std::filesystem;
 
 struct RunResult {
     int exitCode;
-    std::string err;
+    std::string err, out;
 };
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
 
 RunResult runPenumbra(const fs::path& dir, const std::string& args, bool underXvfb) {
     const char* device = std::getenv("PENUMBRA_TEST_DEVICE");
     std::string cmd = "cd '" + dir.string() + "' && env PENUMBRA_VALIDATION=1 PENUMBRA_DEVICE=" +
                       (device ? device : "llvmpipe") + " " +
-                      (underXvfb ? "xvfb-run -a -s '-screen 0 640x480x24' " : "") + PENUMBRA_BINARY_PATH + " " + args +
-                      " 2> stderr.txt";
+                      (underXvfb ? "xvfb-run -a -s '-screen 0 640x480x24' " : "") + penumbraBinary() + " " + args +
+                      " 2> stderr.txt > stdout.txt";
     int status = std::system(cmd.c_str());
-    std::ifstream in(dir / "stderr.txt");
-    std::stringstream err;
-    err << in.rdbuf();
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, err.str()};
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(dir / "stderr.txt"), readText(dir / "stdout.txt")};
 }
 
 class ViewerSmokeTest : public ::testing::Test {
@@ -75,6 +84,74 @@ TEST_F(ViewerSmokeTest, ScreenshotWithoutFramesIsAUsageErrorBeforeAnyWindowOpens
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(r.err.rfind("penumbra: error: --screenshot needs --frames", 0), 0u) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST_F(ViewerSmokeTest, AMalformedScriptIsOneLineNamingItsLineBeforeAnyWindowOpens) {
+    std::ofstream(dir / "bad.txt") << "0 key W down\n\n0.5 key W sideways\n";
+    RunResult r = runPenumbra(dir, "view cornell --script bad.txt", false);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.err.rfind("penumbra: error: bad.txt:3: a key goes 'down' or 'up'", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+// The first impassable line (one-sided or blocking) along a ray in map units, or infinity.
+double wallDistance(const walk::WalkMap& map, Vec3 from, Vec3 dir) {
+    double best = INFINITY;
+    for (const walk::WalkLine& l : map.lines) {
+        const double ex = l.x2 - l.x1, ey = l.y2 - l.y1, den = dir.x * ey - dir.y * ex;
+        if (!l.impassable() || den == 0) continue;
+        const double t = ((l.x1 - from.x) * ey - (l.y1 - from.y) * ex) / den;
+        const double u = ((l.x1 - from.x) * dir.y - (l.y1 - from.y) * dir.x) / den;
+        if (t > 0 && u >= 0 && u <= 1) best = std::min(best, t);
+    }
+    return best;
+}
+
+// A scripted walk on Freedoom's E1M1: turn left a quarter turn with the mouse, walk forward for
+// a second, and read the final camera: it went straight ahead, as far as Doom's walking speed
+// allows but not through the first wall, with the eye 41 units above the floor.
+TEST_F(ViewerSmokeTest, ScriptedWalkOnFreedoomE1M1StopsAtTheWallAtEyeHeight) {
+    const char* wadPath = "/usr/share/games/doom/freedoom1.wad";
+    if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!fs::exists(wadPath)) {
+        if (std::getenv("CI")) FAIL() << wadPath << " is missing (install freedoom)";
+        GTEST_SKIP() << wadPath << " is not installed (apt install freedoom)";
+    }
+    // docs/VIEWER.md: the mouse turns 0.003 radians per pixel; negative DX turns left.
+    std::ofstream(dir / "walk.txt") << "0 mouse -523.59878 0\n0 key W down\n1 key W up\n";
+    // 0.5 s per frame: the first two frames walk (script clock 0 and 0.5), the third sees W up.
+    RunResult r = runPenumbra(dir,
+                              std::string("view ") + wadPath +
+                                  " --map E1M1 --width 64 --height 64 --frames 3 --fixed-dt 0.5 "
+                                  "--script walk.txt --print-camera",
+                              true);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+    Vec3 eye, look;
+    ASSERT_EQ(std::sscanf(r.out.c_str(), "camera %f,%f,%f direction %f,%f,%f", &eye.x, &eye.y, &eye.z, &look.x,
+                          &look.y, &look.z), 6)
+        << r.out;
+
+    const Scene scene = loadWad(wadPath, "E1M1");
+    ASSERT_TRUE(scene.walkMap.has_value());
+    const walk::WalkMap& map = *scene.walkMap;
+    const Vec3 start = wad::sceneToMap(scene.camera.position);
+    const Vec3 startDir = normalize(wad::sceneToMap(scene.camera.lookAt) - start);
+    const Vec3 end = wad::sceneToMap(eye), dir = normalize(wad::sceneToMap(look));
+    // A quarter turn left of the start's heading, level.
+    EXPECT_NEAR(dir.x, -startDir.y, 1e-3);
+    EXPECT_NEAR(dir.y, startDir.x, 1e-3);
+    EXPECT_NEAR(dir.z, 0.0, 1e-3);
+    const Vec3 moved = end - start;
+    const double along = moved.x * dir.x + moved.y * dir.y, across = moved.x * dir.y - moved.y * dir.x;
+    const double wall = wallDistance(map, start, dir);
+    ASSERT_LT(wall, walk::kWalkSpeed) << "a second's walk reaches the wall ahead";
+    EXPECT_LE(along, wall - walk::kPlayerRadius + 0.01) << "did not pass through the wall";
+    EXPECT_GE(along, wall - walk::kPlayerRadius - 1.0) << "walked up to it";
+    EXPECT_NEAR(across, 0.0, 0.5) << "straight ahead";
+    const std::int32_t sector = walk::sectorAt(map, end.x, end.y);
+    ASSERT_GE(sector, 0);
+    EXPECT_NEAR(end.z, map.sectors[std::size_t(sector)].floor + walk::kEyeHeight, 0.01) << "eye height";
 }
 
 }  // namespace

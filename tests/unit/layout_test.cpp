@@ -68,7 +68,7 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
         expectMembers(spv, "LightRef", {0, offsetof(LightRef, index), offsetof(LightRef, trailLo), offsetof(LightRef, trailHi)});
         expectMembers(spv, "LightNode", {0, offsetof(LightNode, phi), offsetof(LightNode, boundsMax), offsetof(LightNode, cosThetaO),
                                          offsetof(LightNode, axis), offsetof(LightNode, cosThetaE), offsetof(LightNode, childOrLight),
-                                         offsetof(LightNode, twoSided), offsetof(LightNode, pad0), offsetof(LightNode, pad1)});
+                                         offsetof(LightNode, twoSided), offsetof(LightNode, sinThetaO), offsetof(LightNode, minDistance2)});
         expectMembers(spv, "FrameUniforms",
                       {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight), offsetof(FrameUniforms, aspect),
                        offsetof(FrameUniforms, cameraUp), offsetof(FrameUniforms, width), offsetof(FrameUniforms, cameraForward),
@@ -134,7 +134,8 @@ TEST(Layout, ViewerStructsMatchInTheViewerShaders) {
                        offsetof(ViewerUniforms, depthTolerance), offsetof(ViewerUniforms, normalTolerance),
                        offsetof(ViewerUniforms, maxHistory), offsetof(ViewerUniforms, sigmaLuminance),
                        offsetof(ViewerUniforms, sigmaNormal), offsetof(ViewerUniforms, sigmaDepth),
-                       offsetof(ViewerUniforms, heatMax), offsetof(ViewerUniforms, denoise)});
+                       offsetof(ViewerUniforms, heatMax), offsetof(ViewerUniforms, denoise),
+                       offsetof(ViewerUniforms, debugOpacity), offsetof(ViewerUniforms, debugInset)});
         expectMembers(spv, "HeatCounters", {0, offsetof(HeatCounters, maxTris)});
         expectMembers(spv, "FrameUniforms", {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight)});
         expectMembers(spv, "PassPush", {0, offsetof(PassPush, mode), offsetof(PassPush, itemCount), offsetof(PassPush, countRays)});

@@ -10,9 +10,9 @@ namespace penumbra::viewer {
 namespace {
 
 void depthOfField(ViewSettings& s, EditState& state) {
-    if (!ImGui::CollapsingHeader("Depth of field", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!ImGui::CollapsingHeader("Depth of field")) return;
     ImGui::SliderFloat("aperture radius (m)", &s.apertureRadius, 0.0f, 0.5f, "%.4f", ImGuiSliderFlags_Logarithmic);
-    ImGui::SliderFloat("focus distance (m, 0: look-at)", &s.focusDistance, 0.0f, 100.0f, "%.3f",
+    ImGui::SliderFloat("focus (m, 0: look-at)", &s.focusDistance, 0.0f, 100.0f, "%.3f",
                        ImGuiSliderFlags_Logarithmic);
     s.apertureRadius = std::max(s.apertureRadius, 0.0f);
     s.focusDistance = std::max(s.focusDistance, 0.0f);
@@ -22,7 +22,7 @@ void depthOfField(ViewSettings& s, EditState& state) {
 void selection(EditState& state, EditRequests& requests) {
     if (!ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) return;
     if (state.object == kNoObject) {
-        ImGui::TextWrapped("Left-click a surface to select its object.");
+        ImGui::TextWrapped("Left-click a surface to select its object (in free flight; walking, a click captures the mouse).");
         return;
     }
     ImGui::Text("%s", state.objectName.c_str());
@@ -45,7 +45,7 @@ void selection(EditState& state, EditRequests& requests) {
 }
 
 void openScene(EditState& state, EditRequests& requests) {
-    if (!ImGui::CollapsingHeader("Scene file", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!ImGui::CollapsingHeader("Scene file")) return;
     std::array<char, 1024> buffer{};
     std::strncpy(buffer.data(), state.openPath.c_str(), buffer.size() - 1);
     const bool entered = ImGui::InputText("path", buffer.data(), buffer.size(), ImGuiInputTextFlags_EnterReturnsTrue);

@@ -94,19 +94,81 @@ void UiLayer::render(VkCommandBuffer cmd) {
     ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
 }
 
-void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& stats, EditState& edit,
-                        EditRequests& requests) {
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
-    ImGui::Begin("Penumbra");
-    ImGui::Text("%s", state.sceneName.c_str());
+namespace {
+
+// Labels sit right of the widgets in this much room, so none is cut off (in font heights).
+constexpr float kLabelEms = 15.5f;
+constexpr float kPanelEms = 36.0f;  // the panel's width
+
+void header(PanelState& state) {
+    ImGui::TextWrapped("%s", state.sceneName.c_str());
     if (ImGui::Button(state.playing ? "Pause (P)" : "Play (P)")) state.playing = !state.playing;
     ImGui::SameLine();
     if (ImGui::Button("Screenshot (F12)")) state.screenshotRequested = true;
     ImGui::SameLine();
     if (ImGui::Button("Reset camera (R)")) state.resetCamera = true;
     ImGui::Checkbox("vsync", &state.vsync);
+    if (!state.playing) ImGui::TextDisabled("paused: showing one frame; Play renders continuously");
+    if (state.walking)
+        ImGui::TextDisabled(state.pointerCaptured ? "walking (F: fly); mouse captured, Esc releases it"
+                                                  : "walking (F: fly); click the image to look with the mouse");
+    else
+        ImGui::TextDisabled(state.canWalk ? "free flight (F: walk)" : "free flight");
     if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
+}
+
+void display(ViewSettings& s, const PanelState& state, const ViewerStats& stats) {
+    if (!ImGui::CollapsingHeader("Display")) return;
+    ImGui::SliderFloat("exposure (stops)", &s.exposure, -8.0f, 8.0f);
+    int curve = s.toneMapper == ToneMapper::Aces ? 1 : 0;
+    if (ImGui::Combo("tone mapper", &curve, "Reinhard\0ACES\0")) s.toneMapper = curve ? ToneMapper::Aces : ToneMapper::Reinhard;
+    int debug = int(s.debug);
+    if (ImGui::Combo("debug view", &debug,
+                     "image\0normals\0albedo\0depth\0motion\0sample count\0BVH nodes visited\0triangles tested\0"
+                     "BVH boxes by depth\0"))
+        s.debug = DebugView(debug);
+    if (s.debug != DebugView::None && s.debug != DebugView::BvhBoxes) {
+        ImGui::SliderFloat("debug opacity", &s.debugOpacity, 0.0f, 1.0f, "%.2f");
+        ImGui::Checkbox("debug view in a small window", &s.debugInset);
+    }
+    if (s.debug == DebugView::HeatNodes) heatLegend("nodes", stats.heatMaxNodes);
+    if (s.debug == DebugView::HeatTriangles) heatLegend("triangles", stats.heatMaxTriangles);
+    if (s.debug == DebugView::BvhBoxes) {
+        int depth = int(s.boxDepth);
+        if (ImGui::SliderInt("box depth (root: 0)", &depth, 0, int(state.bvhDepth)))
+            s.boxDepth = std::uint32_t(std::max(depth, 0));
+        ImGui::SliderFloat("line width (px)", &s.boxLineWidth, 1.0f, 5.0f, "%.1f");
+        ImGui::Text("at most %u boxes are drawn", PN_MAX_OVERLAY_BOXES);
+    }
+}
+
+void statistics(const PanelState& state, const ViewerStats& stats) {
+    if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::Text("%.1f fps, render %ux%u", state.fps, state.renderWidth, state.renderHeight);
+    ImGui::Text("accumulated: %u spp", stats.samplesPerPixel);
+    ImGui::Text("%.2f Mrays/s", stats.raysPerSecond * 1e-6);
+    for (std::uint32_t p = 0; p < std::uint32_t(ViewerPass::Count); ++p)
+        if (stats.passMilliseconds[p] != 0)
+            ImGui::Text("  %-9s %7.2f ms", viewerPassName(ViewerPass(p)), stats.passMilliseconds[p]);
+    ImGui::Text("%zu triangles, %zu BVH nodes", state.triangles, state.bvhNodes);
+    if (state.walking) ImGui::Text("walking at Doom's speed (Shift runs)");
+    else ImGui::Text("flight speed %.2f m/s (scroll)", state.cameraSpeed);
+}
+
+}  // namespace
+
+void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& stats, EditState& edit,
+                        EditRequests& requests) {
+    // As tall as its open sections, but never taller than the window (it scrolls inside then);
+    // collapsible from its title bar, and Tab hides it.
+    const float em = ImGui::GetFontSize();
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(kPanelEms * em, 0),
+                                        ImVec2(kPanelEms * em, std::max(screen.y - 20, 8 * em)));
+    ImGui::Begin("Penumbra (Tab hides this panel)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::PushItemWidth(-kLabelEms * em);
+    header(state);
 
     if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen)) {
         int spp = int(s.samplesPerFrame), bounces = int(s.maxBounces);
@@ -114,10 +176,10 @@ void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& s
         if (ImGui::SliderInt("max bounces", &bounces, 0, 32)) s.maxBounces = std::uint32_t(bounces);
         ImGui::SliderFloat("resolution scale", &s.resolutionScale, 0.25f, 1.0f, "%.2f");
         ImGui::Checkbox("temporal accumulation", &s.temporal);
-        ImGui::SliderFloat("history clamp (sigma, 0: off)", &s.clampSigma, 0.0f, 4.0f);
+        ImGui::SliderFloat("history clamp (0: off)", &s.clampSigma, 0.0f, 4.0f, "%.2f sigma");
         ImGui::SliderFloat("max history (moving)", &s.maxHistory, 1.0f, 256.0f, "%.0f");
     }
-    if (ImGui::CollapsingHeader("Denoiser", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (ImGui::CollapsingHeader("Denoiser")) {
         ImGui::Checkbox("a-trous denoiser", &s.denoise);
         int iterations = int(s.denoiseIterations);
         if (ImGui::SliderInt("iterations", &iterations, 1, 5)) s.denoiseIterations = std::uint32_t(iterations);
@@ -125,42 +187,16 @@ void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& s
         ImGui::SliderFloat("normal weight", &s.sigmaNormal, 1.0f, 256.0f, "%.0f");
         ImGui::SliderFloat("depth weight", &s.sigmaDepth, 0.1f, 8.0f);
     }
-    if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
-        ImGui::SliderFloat("exposure (stops)", &s.exposure, -8.0f, 8.0f);
-        int curve = s.toneMapper == ToneMapper::Aces ? 1 : 0;
-        if (ImGui::Combo("tone mapper", &curve, "Reinhard\0ACES\0")) s.toneMapper = curve ? ToneMapper::Aces : ToneMapper::Reinhard;
-        int debug = int(s.debug);
-        if (ImGui::Combo("debug view", &debug,
-                         "image\0normals\0albedo\0depth\0motion\0sample count\0BVH nodes visited\0triangles tested\0"
-                         "BVH boxes by depth\0"))
-            s.debug = DebugView(debug);
-        if (s.debug == DebugView::HeatNodes) heatLegend("nodes", stats.heatMaxNodes);
-        if (s.debug == DebugView::HeatTriangles) heatLegend("triangles", stats.heatMaxTriangles);
-        if (s.debug == DebugView::BvhBoxes) {
-            int depth = int(s.boxDepth);
-            if (ImGui::SliderInt("box depth (root: 0)", &depth, 0, int(state.bvhDepth)))
-                s.boxDepth = std::uint32_t(std::max(depth, 0));
-            ImGui::SliderFloat("line width (px)", &s.boxLineWidth, 1.0f, 5.0f, "%.1f");
-            ImGui::Text("at most %u boxes are drawn", PN_MAX_OVERLAY_BOXES);
-        }
-    }
-    if (state.hasTorch && ImGui::CollapsingHeader("Torch", ImGuiTreeNodeFlags_DefaultOpen)) {
+    display(s, state, stats);
+    if (state.hasTorch && ImGui::CollapsingHeader("Torch")) {
         ImGui::Checkbox("torch on", &s.torch);
         ImGui::ColorEdit3("colour", &s.torchColor.x);
         ImGui::SliderFloat("intensity (cd)", &s.torchIntensity, 0.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic);
         ImGui::SliderFloat("range (m, 0: none)", &s.torchRange, 0.0f, 100.0f);
     }
     drawEditSections(s, edit, requests);
-    if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
-        ImGui::Text("%.1f fps, render %ux%u", state.fps, state.renderWidth, state.renderHeight);
-        ImGui::Text("accumulated: %u spp", stats.samplesPerPixel);
-        ImGui::Text("%.2f Mrays/s", stats.raysPerSecond * 1e-6);
-        for (std::uint32_t p = 0; p < std::uint32_t(ViewerPass::Count); ++p)
-            if (stats.passMilliseconds[p] != 0)
-                ImGui::Text("  %-9s %7.2f ms", viewerPassName(ViewerPass(p)), stats.passMilliseconds[p]);
-        ImGui::Text("%zu triangles, %zu BVH nodes", state.triangles, state.bvhNodes);
-        ImGui::Text("camera speed %.2f m/s (scroll)", state.cameraSpeed);
-    }
+    statistics(state, stats);
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 

@@ -19,6 +19,7 @@ class Presenter;
 
 // What the panel shows and what its buttons ask for.
 struct PanelState {
+    bool visible = true;  // Tab hides and shows the panel
     bool playing = false;
     bool vsync = true;
     bool screenshotRequested = false;
@@ -30,6 +31,7 @@ struct PanelState {
     std::size_t triangles = 0, bvhNodes = 0;
     std::size_t bvhDepth = 0;  // the slider's range in the box overlay
     bool hasTorch = false;
+    bool walking = false, canWalk = false, pointerCaptured = false;
     std::string message;  // last screenshot path or error
 };
 

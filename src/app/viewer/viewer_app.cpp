@@ -9,9 +9,11 @@
 #include <cstdio>
 #include <ctime>
 #include <memory>
+#include <optional>
 
 #include "app/scene_opener.h"
 #include "app/viewer/camera_controller.h"
+#include "app/viewer/controls.h"
 #include "app/viewer/edit_panel.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/screenshot.h"
@@ -25,21 +27,30 @@
 namespace penumbra::viewer {
 namespace {
 
-// Input state kept between GLFW callbacks and the loop.
-struct InputState {
-    float scroll = 0;
-    bool pauseToggled = false, resetCamera = false, screenshot = false;
+// The pointer between frames: right-button drag, the captured pointer, and left clicks.
+struct PointerState {
     double lastX = 0, lastY = 0;
     bool dragging = false;
+    bool captured = false;  // hidden and locked to the window; its motion looks around
     // Left button: a press and release within a few pixels, away from the panel, is a click.
     bool leftDown = false;
     double leftDownX = 0, leftDownY = 0;
+};
+
+struct Click {
+    double x = 0, y = 0;  // window coordinates
 };
 
 float cameraSpeedFor(const Scene& scene) {
     const Aabb bounds = scene.bounds();
     const float sceneSize = bounds.empty() ? 1.0f : length(bounds.extent());
     return std::max(0.1f, 0.1f * sceneSize);
+}
+
+CameraController makeController(const Scene& scene, bool fly) {
+    CameraController controller(scene.camera, cameraSpeedFor(scene), scene.walkMap);
+    if (fly) controller.setWalking(false);
+    return controller;
 }
 
 void select(const Scene& scene, std::uint32_t object, EditState& edit) {
@@ -81,6 +92,131 @@ std::string defaultScreenshotPath() {
     return name;
 }
 
+// Keys and the wheel go to the controls (controls.h); ImGui's GLFW backend installed its
+// callbacks first, and ours chain to them. A press that ImGui takes (typing in a field) is not
+// a control; releases always pass, so no key stays held.
+void installCallbacks(GLFWwindow* window, InputState& input) {
+    glfwSetWindowUserPointer(window, &input);
+    static GLFWscrollfun imguiScroll = nullptr;
+    static GLFWkeyfun imguiKey = nullptr;
+    imguiScroll = glfwSetScrollCallback(window, [](GLFWwindow* w, double x, double y) {
+        if (imguiScroll) imguiScroll(w, x, y);
+        if (!imguiWantsMouse()) inputOf(w)->scroll += float(y);
+    });
+    imguiKey = glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int scancode, int action, int mods) {
+        if (imguiKey) imguiKey(w, key, scancode, action, mods);
+        if (action == GLFW_PRESS && !imguiWantsKeyboard()) applyKey(*inputOf(w), key, true);
+        if (action == GLFW_RELEASE) applyKey(*inputOf(w), key, false);
+    });
+}
+
+void setCaptured(GLFWwindow* w, PointerState& pointer, bool on) {
+    if (pointer.captured == on) return;
+    pointer.captured = on;
+    glfwSetInputMode(w, GLFW_CURSOR, on ? GLFW_CURSOR_DISABLED : GLFW_CURSOR_NORMAL);
+    if (glfwRawMouseMotionSupported()) glfwSetInputMode(w, GLFW_RAW_MOUSE_MOTION, on ? GLFW_TRUE : GLFW_FALSE);
+    // While captured the hidden pointer must not drive the panel.
+    ImGuiIO& io = ImGui::GetIO();
+    if (on) io.ConfigFlags |= ImGuiConfigFlags_NoMouse;
+    else io.ConfigFlags &= ~ImGuiConfigFlags_NoMouse;
+    glfwGetCursorPos(w, &pointer.lastX, &pointer.lastY);  // no jump on the next frame
+    pointer.dragging = pointer.leftDown = false;
+}
+
+// Pointer motion that looks (captured, or dragging with the right button) and left clicks.
+std::optional<Click> trackPointer(GLFWwindow* w, PointerState& p, InputState& input, bool uiWantsMouse) {
+    double mx = 0, my = 0;
+    glfwGetCursorPos(w, &mx, &my);
+    std::optional<Click> click;
+    if (p.captured) {
+        applyLook(input, float(mx - p.lastX), float(my - p.lastY));
+        if (!glfwGetWindowAttrib(w, GLFW_FOCUSED)) setCaptured(w, p, false);  // focus lost: let go
+    } else {
+        const bool rightHeld = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+        if (rightHeld && p.dragging) applyLook(input, float(mx - p.lastX), float(my - p.lastY));
+        p.dragging = rightHeld && (p.dragging || !uiWantsMouse);
+        const bool leftHeld = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        if (leftHeld && !p.leftDown && !uiWantsMouse) {
+            p.leftDown = true;
+            p.leftDownX = mx;
+            p.leftDownY = my;
+        } else if (!leftHeld && p.leftDown) {
+            p.leftDown = false;
+            if (std::abs(mx - p.leftDownX) + std::abs(my - p.leftDownY) < 4.0) click = Click{mx, my};
+        }
+    }
+    p.lastX = mx;
+    p.lastY = my;
+    return click;
+}
+
+// A click sets the focus (when asked), captures the pointer while walking, or selects.
+void handleClick(GLFWwindow* w, const Click& click, PointerState& pointer, const Scene& scene,
+                 const InteractiveRenderer& renderer, const CameraController& controller, ViewSettings& settings,
+                 EditState& edit) {
+    if (controller.walking() && !edit.focusOnClick) {
+        setCaptured(w, pointer, true);
+        return;
+    }
+    // Window coordinates: the render is the window scaled, so the same ray.
+    int ww = 0, wh = 0;
+    glfwGetWindowSize(w, &ww, &wh);
+    if (ww <= 0 || wh <= 0) return;
+    const Pick pick = pickPixel(renderer.sceneArrays(), controller.camera(), std::uint32_t(ww), std::uint32_t(wh),
+                                float(click.x), float(click.y));
+    if (edit.focusOnClick) {
+        if (pick.depth > 0) settings.focusDistance = pick.depth;
+        edit.focusOnClick = false;
+    } else {
+        select(scene, pick.object, edit);
+    }
+}
+
+void toggleWalking(CameraController& controller, PanelState& panel) {
+    if (controller.walking()) {
+        controller.setWalking(false);
+        panel.message = "free flight (F walks again)";
+    } else if (!controller.canWalk()) {
+        panel.message = "only Doom levels can be walked; this scene is flown";
+    } else if (controller.setWalking(true)) {
+        panel.message = "walking (F flies)";
+    } else {
+        panel.message = "cannot walk here: the player does not fit (inside a wall, outside the map or too low a room)";
+    }
+}
+
+// The keys pressed (and the wheel turned) since the last frame, and the panel's buttons.
+void handlePresses(const InputState& input, GLFWwindow* w, PointerState& pointer, CameraController& controller,
+                   PanelState& panel) {
+    if (input.pauseToggled) panel.playing = !panel.playing;
+    if (input.resetCamera || panel.resetCamera) controller.reset();
+    panel.resetCamera = false;
+    if (input.screenshot) panel.screenshotRequested = true;
+    if (input.walkToggled) toggleWalking(controller, panel);
+    if (input.panelToggled) panel.visible = !panel.visible;
+    if (input.escape) {  // releases the captured mouse first; quits only when it is free
+        if (pointer.captured) setCaptured(w, pointer, false);
+        else glfwSetWindowShouldClose(w, GLFW_TRUE);
+    }
+    if (input.scroll != 0) controller.scaleSpeed(std::pow(1.25f, input.scroll));
+}
+
+bool sameCamera(const Camera& a, const Camera& b) {
+    return a.position == b.position && a.lookAt == b.lookAt && a.up == b.up && a.fovYDegrees == b.fovYDegrees;
+}
+
+// What the last rendered frame showed, so a paused viewer renders again only when it changed.
+struct ShownFrame {
+    bool valid = false;
+    Camera camera;
+    ViewSettings settings;
+    std::uint32_t width = 0, height = 0;
+
+    bool matches(const Camera& c, const ViewSettings& s, std::uint32_t w, std::uint32_t h) const {
+        return valid && sameCamera(camera, c) && settings == s && width == w && height == h;
+    }
+};
+
 }  // namespace
 
 DebugView parseDebugView(const std::string& name) {
@@ -92,6 +228,14 @@ DebugView parseDebugView(const std::string& name) {
         if (name == n) return v;
     throw UsageError("--debug must be one of none, normals, albedo, depth, motion, samples, nodes, triangles, boxes (got '" +
                      name + "')");
+}
+
+std::string cameraLine(const Camera& camera) {
+    const Vec3 p = camera.position, d = normalize(camera.lookAt - camera.position);
+    char line[256];
+    std::snprintf(line, sizeof line, "camera %.6g,%.6g,%.6g direction %.6g,%.6g,%.6g", double(p.x), double(p.y),
+                  double(p.z), double(d.x), double(d.y), double(d.z));
+    return line;
 }
 
 void runViewer(Scene scene, const ViewerOptions& options) {
@@ -116,39 +260,25 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     Presenter presenter(ctx, window, options.vsync);
     UiLayer ui(ctx, window.get(), presenter);
 
-    CameraController controller(scene.camera, cameraSpeedFor(scene));
-
+    CameraController controller = makeController(scene, options.fly);
     InputState input;
-    glfwSetWindowUserPointer(window.get(), &input);
-    // ImGui's GLFW backend installed its callbacks (and chains to previously set ones); ours are
-    // set after, so they chain to ImGui's.
-    static GLFWscrollfun imguiScroll = nullptr;
-    static GLFWkeyfun imguiKey = nullptr;
-    imguiScroll = glfwSetScrollCallback(window.get(), [](GLFWwindow* w, double x, double y) {
-        if (imguiScroll) imguiScroll(w, x, y);
-        if (!imguiWantsMouse()) inputOf(w)->scroll += float(y);
-    });
-    imguiKey = glfwSetKeyCallback(window.get(), [](GLFWwindow* w, int key, int scancode, int action, int mods) {
-        if (imguiKey) imguiKey(w, key, scancode, action, mods);
-        if (action != GLFW_PRESS || imguiWantsKeyboard()) return;
-        InputState* in = inputOf(w);
-        if (key == GLFW_KEY_P) in->pauseToggled = true;
-        if (key == GLFW_KEY_R) in->resetCamera = true;
-        if (key == GLFW_KEY_F12) in->screenshot = true;
-        if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
-    });
+    installCallbacks(window.get(), input);
+    PointerState pointer;
+    std::optional<ScriptPlayer> script;
+    if (options.script) script.emplace(*options.script);
 
     EditState edit;
     PanelState panel;
     panel.sceneName = scene.name;
     panel.vsync = options.vsync;
-    panel.playing = options.frames.has_value();  // automation plays from the start
+    panel.playing = options.frames.has_value() || script.has_value();  // automation plays from the start
     panel.triangles = scene.triangleCount();
     panel.bvhNodes = renderer.sceneArrays().nodes.size();
     panel.bvhDepth = bvh::treeDepth(renderer.sceneArrays().nodes);
     panel.hasTorch = renderer.hasTorch();
 
     bool frameInFlight = false;  // a rendered frame was submitted and not yet finished
+    ShownFrame shown;            // what the display buffer holds
     std::uint32_t framesRendered = 0;
     std::string pendingScreenshot;
     auto last = std::chrono::steady_clock::now();
@@ -161,66 +291,31 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         auto now = std::chrono::steady_clock::now();
         float dt = std::min(std::chrono::duration<float>(now - last).count(), 0.25f);
         last = now;
-
-        if (input.pauseToggled) panel.playing = !panel.playing;
-        if (input.resetCamera || panel.resetCamera) controller.reset();
-        if (input.screenshot) panel.screenshotRequested = true;
-        input.pauseToggled = input.resetCamera = input.screenshot = panel.resetCamera = false;
-        if (input.scroll != 0) controller.scaleSpeed(std::pow(1.25f, input.scroll));
-        input.scroll = 0;
+        const float step = options.fixedDt ? float(*options.fixedDt) : dt;  // simulated seconds this frame
 
         GLFWwindow* w = window.get();
-        CameraInput move;
-        if (!ui.wantsKeyboard()) {
-            auto key = [&](int k) { return glfwGetKey(w, k) == GLFW_PRESS ? 1.0f : 0.0f; };
-            move.forward = key(GLFW_KEY_W) - key(GLFW_KEY_S);
-            move.right = key(GLFW_KEY_D) - key(GLFW_KEY_A);
-            move.up = key(GLFW_KEY_SPACE) - key(GLFW_KEY_C);
-            move.turn = key(GLFW_KEY_Q) - key(GLFW_KEY_E);
-            move.fast = key(GLFW_KEY_LEFT_SHIFT) + key(GLFW_KEY_RIGHT_SHIFT) > 0;
-        }
-        double mx = 0, my = 0;
-        glfwGetCursorPos(w, &mx, &my);
-        const bool rightHeld = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-        if (rightHeld && input.dragging) {
-            move.lookX = float(mx - input.lastX);
-            move.lookY = float(my - input.lastY);
-        }
-        input.dragging = rightHeld && (input.dragging || !ui.wantsMouse());
-        const bool leftHeld = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-        if (leftHeld && !input.leftDown && !ui.wantsMouse()) {
-            input.leftDown = true;
-            input.leftDownX = mx;
-            input.leftDownY = my;
-        } else if (!leftHeld && input.leftDown) {
-            input.leftDown = false;
-            if (std::abs(mx - input.leftDownX) + std::abs(my - input.leftDownY) < 4.0) {
-                // Window coordinates: the render is the window scaled, so the same ray.
-                int ww = 0, wh = 0;
-                glfwGetWindowSize(w, &ww, &wh);
-                if (ww > 0 && wh > 0) {
-                    const Pick pick = pickPixel(renderer.sceneArrays(), controller.camera(), std::uint32_t(ww),
-                                                std::uint32_t(wh), float(mx), float(my));
-                    if (edit.focusOnClick) {
-                        if (pick.depth > 0) settings.focusDistance = pick.depth;
-                        edit.focusOnClick = false;
-                    } else {
-                        select(scene, pick.object, edit);
-                    }
-                }
-            }
-        }
-        input.lastX = mx;
-        input.lastY = my;
-        controller.update(move, dt);
+        // Automation: after the N-th frame nothing moves or renders; its frame finishes, then exit.
+        const bool automationDone = options.frames && framesRendered >= *options.frames;
+        const bool advancing = panel.playing && !automationDone;
+        if (script && advancing) script->playFrame(input, step);
+        handlePresses(input, w, pointer, controller, panel);
+        if (std::optional<Click> click = trackPointer(w, pointer, input, ui.wantsMouse()))
+            handleClick(w, *click, pointer, scene, renderer, controller, settings, edit);
+        // Paused, the camera stays where the shown frame was taken.
+        if (advancing) controller.update(cameraInputFrom(input), step);
+        endInputFrame(input);
 
         ui.newFrame();
         panel.cameraSpeed = controller.speed();
+        panel.walking = controller.walking();
+        panel.canWalk = controller.canWalk();
+        panel.pointerCaptured = pointer.captured;
         if (dt > 0) fpsSmoothed = fpsSmoothed == 0 ? 1.0 / dt : 0.9 * fpsSmoothed + 0.1 / dt;
         panel.fps = fpsSmoothed;
         EditRequests requests;
-        ui.drawPanel(settings, panel, renderer.stats(), edit, requests);
+        if (panel.visible) ui.drawPanel(settings, panel, renderer.stats(), edit, requests);
         applyEdits(scene, renderer, settings, edit, requests, controller, panel);
+        if (requests.materialChanged || requests.moveObject || requests.openScene) shown.valid = false;
         presenter.setVsync(panel.vsync);
 
         if (!presenter.beginFrame()) {
@@ -241,30 +336,33 @@ void runViewer(Scene scene, const ViewerOptions& options) {
                     std::fprintf(stderr, "penumbra: error: %s\n", e.what());
                 }
                 pendingScreenshot.clear();
-                if (options.frames) window.requestClose();
             }
-            if (options.frames && framesRendered >= *options.frames && options.screenshot.empty()) window.requestClose();
         }
+        if (automationDone && !frameInFlight) window.requestClose();
 
         VkCommandBuffer cmd = presenter.commandBuffer();
-        VkExtent2D fb = window.framebufferSize();
-        if (panel.playing) {
-            auto scaled = [&](std::uint32_t side) {
-                return std::max(1u, std::uint32_t(float(side) * std::clamp(settings.resolutionScale, 0.1f, 1.0f)));
-            };
-            renderer.resize(scaled(fb.width), scaled(fb.height));
+        const VkExtent2D fb = window.framebufferSize();
+        auto scaled = [&](std::uint32_t side) {
+            return std::max(1u, std::uint32_t(float(side) * std::clamp(settings.resolutionScale, 0.1f, 1.0f)));
+        };
+        const std::uint32_t rw = scaled(fb.width), rh = scaled(fb.height);
+        const Camera camera = controller.camera();
+        // Playing renders every frame; paused renders one preview frame, again only when the
+        // camera, a setting or the size changed (or for a screenshot), and shows it meanwhile.
+        if (!automationDone && (panel.playing || panel.screenshotRequested || !shown.matches(camera, settings, rw, rh))) {
+            renderer.resize(rw, rh);
             panel.renderWidth = renderer.width();
             panel.renderHeight = renderer.height();
-            renderer.record(cmd, controller.camera(), settings);
+            renderer.record(cmd, camera, settings);
             presenter.blitDisplay(renderer.display(), renderer.width(), renderer.height());
+            shown = ShownFrame{true, camera, settings, rw, rh};
             frameInFlight = true;
-            ++framesRendered;
+            if (panel.playing) ++framesRendered;
             if (panel.screenshotRequested) pendingScreenshot = defaultScreenshotPath();
             if (options.frames && framesRendered == *options.frames && !options.screenshot.empty())
                 pendingScreenshot = options.screenshot;
         } else {
-            presenter.clear(0.08f, 0.08f, 0.09f);
-            if (panel.screenshotRequested) panel.message = "press Play first: nothing is rendered yet";
+            presenter.blitDisplay(renderer.display(), renderer.width(), renderer.height());
         }
         panel.screenshotRequested = false;
         presenter.beginUi();
@@ -272,6 +370,10 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         presenter.endFrame();
     }
     presenter.waitIdle();
+    if (options.printCamera) {
+        std::printf("%s\n", cameraLine(controller.camera()).c_str());
+        std::fflush(stdout);
+    }
 }
 
 }  // namespace penumbra::viewer
@@ -314,7 +416,7 @@ void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& setti
             settings = nextSettings;
             settings.apertureRadius = scene.camera.apertureRadius;
             settings.focusDistance = scene.camera.focusDistance;
-            controller = CameraController(scene.camera, cameraSpeedFor(scene));
+            controller = makeController(scene, false);
             edit.object = kNoObject;
             edit.openMessage.clear();
             panel.sceneName = scene.name;

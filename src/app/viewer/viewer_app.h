@@ -3,7 +3,9 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "app/viewer/input_script.h"
 #include "render/view_settings.h"
 #include "scene/scene.h"
 
@@ -20,11 +22,19 @@ struct ViewerOptions {
     std::uint32_t samplesPerFrame = 1;
     bool denoise = false;
     DebugView debug = DebugView::None;
+    // Scripted input (--script): played from the first frame, which then starts playing.
+    std::optional<std::vector<ScriptEvent>> script;
+    std::optional<double> fixedDt;  // seconds each frame advances time by, instead of the clock
+    bool printCamera = false;       // print the final camera on exit
+    bool fly = false;               // start in free flight on levels one can walk
 };
 
 // "normals", "albedo", "depth", "motion", "samples", "nodes", "triangles" or "none"; UsageError otherwise.
 DebugView parseDebugView(const std::string& name);
 
 void runViewer(Scene scene, const ViewerOptions& options);
+
+// `camera X,Y,Z direction DX,DY,DZ`: the line --print-camera writes.
+std::string cameraLine(const Camera& camera);
 
 }  // namespace penumbra::viewer

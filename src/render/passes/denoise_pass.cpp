@@ -8,12 +8,14 @@
 namespace penumbra {
 
 DenoisePass::DenoisePass(const gpu::Context& ctx, const gpu::Buffer& frameUniforms, const gpu::Buffer& viewerUniforms,
-                         const gpu::Buffer& gbuffer, const gpu::Buffer& a, const gpu::Buffer& b)
+                         const gpu::Buffer& gbuffer, const gpu::Buffer& guide, const gpu::Buffer& a,
+                         const gpu::Buffer& b)
     : a_(a), b_(b) {
     auto make = [&](const gpu::Buffer& in, const gpu::Buffer& out) {
         return makeImagePipeline(ctx, "atrous", frameUniforms,
                                  {{PN_BINDING_VIEWER, &viewerUniforms},
                                   {PN_BINDING_GBUFFER, &gbuffer},
+                                  {PN_BINDING_DENOISE_GUIDE, &guide},
                                   {PN_BINDING_FILTER_IN, &in},
                                   {PN_BINDING_FILTER_OUT, &out}},
                                  sizeof(shader::PassPush));

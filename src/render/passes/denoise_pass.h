@@ -12,7 +12,7 @@ class DenoisePass {
 public:
     // a holds temporal.comp's output (illumination, variance); b is scratch of the same size.
     DenoisePass(const gpu::Context& ctx, const gpu::Buffer& frameUniforms, const gpu::Buffer& viewerUniforms,
-                const gpu::Buffer& gbuffer, const gpu::Buffer& a, const gpu::Buffer& b);
+                const gpu::Buffer& gbuffer, const gpu::Buffer& guide, const gpu::Buffer& a, const gpu::Buffer& b);
 
     // iterations >= 1. Returns the buffer that holds the result (radiance, variance).
     const gpu::Buffer& record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height,

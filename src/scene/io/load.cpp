@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "scene/io/gltf.h"
 #include "scene/io/obj.h"
+#include "scene/io/ply.h"
 #include "scene/io/scene_json.h"
 #include "scene/io/wad/wad_loader.h"
 #include "scene/presets/presets.h"
@@ -14,9 +15,11 @@
 namespace penumbra {
 namespace {
 
+// ".ply" for "x.PLY"; compressed files keep both parts: ".ply.gz".
 std::string lowerExtension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext == ".gz") return lowerExtension(path.stem()) + ext;
     return ext;
 }
 
@@ -66,9 +69,15 @@ Scene loadSceneFile(const std::filesystem::path& path, const LoadOptions& option
     }
     if (ext == ".gltf") return loadGltf(path);
     if (ext == ".obj") return loadObj(path);
+    if (ext == ".ply" || ext == ".ply.gz") {
+        const bool gzip = magic.size() >= 2 && magic[0] == '\x1f' && magic[1] == '\x8b';
+        if (ext == ".ply.gz" && !gzip) mismatch("a gzip-compressed file (no gzip header)");
+        if (ext == ".ply" && !gzip && magic.substr(0, 3) != "ply") mismatch("a PLY file (no 'ply' line)");
+        return loadPly(path);
+    }
     if (ext == ".json") return loadSceneJson(path);
     throw UsageError("cannot tell the format of '" + path.string() +
-                     "': use a built-in scene name or a .obj, .gltf, .glb, .wad or .json file");
+                     "': use a built-in scene name or a .obj, .ply, .ply.gz, .gltf, .glb, .wad or .json file");
 }
 
 Scene loadSceneByName(const std::string& nameOrPath, const LoadOptions& options) {

@@ -14,7 +14,7 @@ struct LoadOptions {
     WadOptions wad;   // WAD: glow, sector light and filtering
 };
 
-// Loads .obj, .gltf, .glb, .wad or .json. Throws Error naming the file and the problem.
+// Loads .obj, .ply (.ply.gz), .gltf, .glb, .wad or .json. Throws Error naming the file and the problem.
 Scene loadSceneFile(const std::filesystem::path& path, const LoadOptions& options = {});
 
 // A built-in preset name, or a path to a file.

@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
-#include <tuple>
+
+#include "core/big_buffer.h"
+#include "core/parallel.h"
 
 namespace penumbra {
 namespace {
@@ -16,12 +18,58 @@ namespace {
 constexpr std::size_t kMaxFan = 256;
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
+// acos to within 7e-5 radians (Abramowitz & Stegun 4.4.45), several times cheaper than the
+// library's: three of these per triangle are most of the arithmetic for a big mesh, and normals
+// weighted by angles that far off are indistinguishable.
+float fastAcos(float x) {
+    const float a = std::fabs(x);
+    const float r = std::sqrt(1.0f - a) * (1.5707288f + a * (-0.2121144f + a * (0.0742610f - 0.0187293f * a)));
+    return x < 0 ? 3.14159265f - r : r;
+}
+
 // Angle at vertex `a` of the triangle a-b-c, in radians; 0 for degenerate corners.
 float cornerAngle(Vec3 a, Vec3 b, Vec3 c) {
     Vec3 u = normalize(b - a), v = normalize(c - a);
     float d = std::clamp(dot(u, v), -1.0f, 1.0f);
-    float angle = std::acos(d);
+    float angle = fastAcos(d);
     return std::isfinite(angle) ? angle : 0.0f;
+}
+
+}  // namespace
+
+namespace {
+
+// Welds vertices with bit-identical positions: posId[v] numbers the distinct positions in order
+// of first appearance. An open-addressing hash table, linear in the vertex count.
+std::uint32_t weldPositions(const std::vector<Vec3>& positions, std::vector<std::uint32_t>& posId) {
+    const std::size_t n = positions.size();
+    std::size_t slots = 16;
+    while (slots < 2 * n) slots *= 2;
+    std::vector<std::uint32_t> table = hugeVector<std::uint32_t>(slots, kNone);  // vertex whose position owns the slot
+    posId = hugeVector<std::uint32_t>(n);
+    std::uint32_t ids = 0;
+    for (std::size_t v = 0; v < n; ++v) {
+        const Vec3& p = positions[v];
+        const std::uint64_t bx = std::bit_cast<std::uint32_t>(p.x), by = std::bit_cast<std::uint32_t>(p.y),
+                            bz = std::bit_cast<std::uint32_t>(p.z);
+        std::uint64_t h = (bx * 0x9E3779B97F4A7C15ull) ^ (by * 0xC2B2AE3D27D4EB4Full) ^ (bz * 0x165667B19E3779F9ull);
+        h ^= h >> 29;
+        for (std::size_t s = h & (slots - 1);; s = (s + 1) & (slots - 1)) {
+            const std::uint32_t owner = table[s];
+            if (owner == kNone) {
+                table[s] = std::uint32_t(v);
+                posId[v] = ids++;
+                break;
+            }
+            const Vec3& q = positions[owner];
+            if (std::bit_cast<std::uint32_t>(q.x) == bx && std::bit_cast<std::uint32_t>(q.y) == by &&
+                std::bit_cast<std::uint32_t>(q.z) == bz) {
+                posId[v] = posId[owner];
+                break;
+            }
+        }
+    }
+    return ids;
 }
 
 }  // namespace
@@ -36,41 +84,30 @@ void generateCreaseNormals(Mesh& mesh, float creaseDegrees) {
     const float cosCrease = std::cos(creaseDegrees * 3.14159265f / 180.0f);
 
     // 1. Weld: vertices with bit-identical positions share a position id.
-    std::vector<std::uint32_t> order(vertexCount);
-    std::iota(order.begin(), order.end(), 0u);
-    auto key = [&](std::uint32_t i) {
-        const Vec3& p = mesh.positions[i];
-        return std::make_tuple(std::bit_cast<std::uint32_t>(p.x), std::bit_cast<std::uint32_t>(p.y),
-                               std::bit_cast<std::uint32_t>(p.z));
-    };
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
-    std::vector<std::uint32_t> posId(vertexCount);
-    std::uint32_t ids = 0;
-    for (std::size_t i = 0; i < vertexCount; ++i) {
-        if (i > 0 && key(order[i]) != key(order[i - 1])) ++ids;
-        posId[order[i]] = ids;
-    }
-    const std::size_t idCount = std::size_t(ids) + 1;
+    std::vector<std::uint32_t> posId;
+    const std::size_t idCount = weldPositions(mesh.positions, posId);
 
     // 2. Unit face normals and corner angles.
-    std::vector<Vec3> faceNormal(triCount);
-    std::vector<float> angle(triCount * 3);
-    for (std::size_t t = 0; t < triCount; ++t) {
-        const Vec3 p0 = mesh.positions[mesh.indices[3 * t]];
-        const Vec3 p1 = mesh.positions[mesh.indices[3 * t + 1]];
-        const Vec3 p2 = mesh.positions[mesh.indices[3 * t + 2]];
-        Vec3 n = normalize(cross(p1 - p0, p2 - p0));
-        faceNormal[t] = isFinite(n) ? n : Vec3{};
-        angle[3 * t] = cornerAngle(p0, p1, p2);
-        angle[3 * t + 1] = cornerAngle(p1, p2, p0);
-        angle[3 * t + 2] = cornerAngle(p2, p0, p1);
-    }
+    std::vector<Vec3> faceNormal = hugeVector<Vec3>(triCount);
+    std::vector<float> angle = hugeVector<float>(triCount * 3);
+    parallelFor(triCount, 16 * 1024, [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t t = lo; t < hi; ++t) {
+            const Vec3 p0 = mesh.positions[mesh.indices[3 * t]];
+            const Vec3 p1 = mesh.positions[mesh.indices[3 * t + 1]];
+            const Vec3 p2 = mesh.positions[mesh.indices[3 * t + 2]];
+            Vec3 n = normalize(cross(p1 - p0, p2 - p0));
+            faceNormal[t] = isFinite(n) ? n : Vec3{};
+            angle[3 * t] = cornerAngle(p0, p1, p2);
+            angle[3 * t + 1] = cornerAngle(p1, p2, p0);
+            angle[3 * t + 2] = cornerAngle(p2, p0, p1);
+        }
+    });
 
     // 3. Corners around each position id (compressed rows).
-    std::vector<std::uint32_t> start(idCount + 1, 0);
+    std::vector<std::uint32_t> start = hugeVector<std::uint32_t>(idCount + 1, 0);
     for (std::uint32_t v : mesh.indices) ++start[posId[v] + 1];
     std::partial_sum(start.begin(), start.end(), start.begin());
-    std::vector<std::uint32_t> corners(mesh.indices.size());
+    std::vector<std::uint32_t> corners = hugeVector<std::uint32_t>(mesh.indices.size());
     {
         std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
         for (std::size_t c = 0; c < mesh.indices.size(); ++c)
@@ -78,27 +115,29 @@ void generateCreaseNormals(Mesh& mesh, float creaseDegrees) {
     }
 
     // 4. One normal per corner: the angle-weighted sum of the faces around it within the crease.
-    std::vector<Vec3> cornerNormal(mesh.indices.size());
-    for (std::size_t id = 0; id < idCount; ++id) {
-        const std::uint32_t* begin = corners.data() + start[id];
-        const std::uint32_t* end = corners.data() + start[id + 1];
-        const bool tooMany = std::size_t(end - begin) > kMaxFan;
-        for (const std::uint32_t* c = begin; c != end; ++c) {
-            const Vec3 fn = faceNormal[*c / 3];
-            Vec3 sum{};
-            if (!tooMany && dot(fn, fn) > 0) {
-                // Same iteration order for every corner, so corners with the same set of
-                // faces get bit-identical sums and share a vertex below.
-                for (const std::uint32_t* o = begin; o != end; ++o) {
-                    const Vec3 on = faceNormal[*o / 3];
-                    if (dot(fn, on) >= cosCrease) sum += on * angle[*o];
+    std::vector<Vec3> cornerNormal = hugeVector<Vec3>(mesh.indices.size());
+    parallelFor(idCount, 16 * 1024, [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t id = lo; id < hi; ++id) {
+            const std::uint32_t* begin = corners.data() + start[id];
+            const std::uint32_t* end = corners.data() + start[id + 1];
+            const bool tooMany = std::size_t(end - begin) > kMaxFan;
+            for (const std::uint32_t* c = begin; c != end; ++c) {
+                const Vec3 fn = faceNormal[*c / 3];
+                Vec3 sum{};
+                if (!tooMany && dot(fn, fn) > 0) {
+                    // Same iteration order for every corner, so corners with the same set of
+                    // faces get bit-identical sums and share a vertex below.
+                    for (const std::uint32_t* o = begin; o != end; ++o) {
+                        const Vec3 on = faceNormal[*o / 3];
+                        if (dot(fn, on) >= cosCrease) sum += on * angle[*o];
+                    }
                 }
+                Vec3 n = normalize(sum);
+                if (dot(n, n) == 0) n = dot(fn, fn) > 0 ? fn : Vec3{0, 1, 0};
+                cornerNormal[*c] = n;
             }
-            Vec3 n = normalize(sum);
-            if (dot(n, n) == 0) n = dot(fn, fn) > 0 ? fn : Vec3{0, 1, 0};
-            cornerNormal[*c] = n;
         }
-    }
+    });
 
     // 5. Split vertices whose corners ended up with different normals.
     struct Entry {
@@ -106,15 +145,16 @@ void generateCreaseNormals(Mesh& mesh, float creaseDegrees) {
         std::uint32_t index;
         std::uint32_t next;
     };
-    std::vector<std::uint32_t> head(vertexCount, kNone);
+    std::vector<std::uint32_t> head = hugeVector<std::uint32_t>(vertexCount, kNone);
     std::vector<Entry> entries;
-    entries.reserve(vertexCount + vertexCount / 2);
+    reserveHuge(entries, vertexCount + vertexCount / 2);
     std::vector<Vec3> positions;
     std::vector<Vec2> uvs;
     std::vector<Vec3> normals;
-    positions.reserve(vertexCount);
-    normals.reserve(vertexCount);
+    reserveHuge(positions, vertexCount);
+    reserveHuge(normals, vertexCount);
     const bool hasUvs = !mesh.uvs.empty();
+    if (hasUvs) reserveHuge(uvs, vertexCount);
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
         const std::uint32_t v = mesh.indices[c];
         const Vec3 n = cornerNormal[c];

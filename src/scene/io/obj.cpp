@@ -1,7 +1,7 @@
-// Wavefront OBJ + MTL through tinyobjloader. tinyobjloader parses (without triangulating, so
-// that no unchecked index reaches its triangulator); everything it returns is validated here
-// before use: counts, every index, finite coordinates. Polygons are triangulated here, faces are
-// grouped into one Mesh per material, and missing normals are generated with a crease angle.
+// Wavefront OBJ + MTL. The OBJ text is parsed on every thread (obj_parse.cpp), which checks
+// every number and index as it reads them; MTL libraries go through tinyobjloader's MTL
+// reader. Polygons are triangulated here, faces are grouped into one Mesh per material, and
+// missing normals are generated with a crease angle.
 #include "scene/io/obj.h"
 
 #include <tiny_obj_loader.h>
@@ -16,8 +16,11 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/big_buffer.h"
 #include "core/log.h"
+#include "core/mapped_file.h"
 #include "scene/io/normals.h"
+#include "scene/io/obj_parse.h"
 #include "scene/io/texture_io.h"
 
 namespace penumbra {
@@ -95,34 +98,6 @@ private:
     std::vector<std::string> missing_;
 };
 
-// 1-based line of the `ordinal`-th statement of `kind` ("v" or "f"), counting faces the way
-// tinyobjloader keeps them (at least three corners); 0 when not found.
-std::size_t lineOf(std::string_view text, std::string_view kind, std::size_t ordinal) {
-    std::size_t line = 0, seen = 0, pos = 0;
-    while (pos < text.size()) {
-        std::size_t end = text.find('\n', pos);
-        if (end == std::string_view::npos) end = text.size();
-        std::string_view l = text.substr(pos, end - pos);
-        ++line;
-        pos = end + 1;
-        std::size_t s = l.find_first_not_of(" \t");
-        if (s == std::string_view::npos) continue;
-        l.remove_prefix(s);
-        if (l.size() <= kind.size() || l.substr(0, kind.size()) != kind ||
-            (l[kind.size()] != ' ' && l[kind.size()] != '\t'))
-            continue;
-        if (kind == "f") {
-            std::istringstream words{std::string(l.substr(1))};
-            std::string w;
-            int corners = 0;
-            while (words >> w) ++corners;
-            if (corners < 3) continue;
-        }
-        if (seen++ == ordinal) return line;
-    }
-    return 0;
-}
-
 std::string clampName(std::string s) {
     if (s.size() > 80) s = s.substr(0, 77) + "...";
     for (char& c : s)
@@ -160,34 +135,19 @@ public:
         : text_(text), baseDir_(std::move(baseDir)), name_(std::move(name)) {}
 
     Scene run(MtlReader& mtl) {
-        tinyobj::attrib_t attrib;
-        std::vector<tinyobj::shape_t> shapes;
+        const obj::Parsed parsed = obj::parse(text_, name_);
         std::vector<tinyobj::material_t> materials;
-        std::string warn, err;
-        bool ok = false;
-        try {
-            MemoryBuf buf(text_.data(), text_.size());
-            std::istream in(&buf);
-            ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl,
-                                  /*triangulate=*/false, /*default_vcols_fallback=*/false);
-        } catch (const Error&) {
-            throw;
-        } catch (const std::exception& e) {
-            throw Error(name_ + ": cannot parse OBJ: " + e.what());
-        }
-        if (!ok || !err.empty()) {
-            std::string first = err.substr(0, err.find('\n'));
-            throw Error(name_ + ": " + (first.empty() ? "cannot parse OBJ" : clampName(first)));
-        }
+        std::map<std::string, int> materialIndex;
+        std::string warn;
+        loadLibraries(parsed.libraries, mtl, materials, materialIndex, warn);
         forwardWarnings(name_, warn);
         for (const std::string& lib : mtl.missing())
             logWarning(name_ + ": material library '" + clampName(lib) +
                        "' not found; its materials are replaced by grey (0.8)");
 
-        checkAttributes(attrib);
         scene_.name = name_;
         convertMaterials(materials);
-        collectFaces(attrib, shapes, materials.size());
+        collectFaces(parsed, materialIds(parsed, materialIndex), materials.size());
         if (degenerate_ > 0)
             logWarning(name_ + ": skipped " + std::to_string(degenerate_) + " degenerate face" +
                        (degenerate_ == 1 ? "" : "s"));
@@ -224,19 +184,36 @@ private:
         return m;
     }
 
-    std::string at(std::string_view kind, std::size_t ordinal) const {
-        std::size_t line = lineOf(text_, kind, ordinal);
-        return line ? name_ + ":" + std::to_string(line) : name_;
+    // Each library once, in the order the file names them; tinyobjloader's MTL reader keeps the
+    // first material of each name.
+    static void loadLibraries(const std::vector<std::string>& libraries, MtlReader& mtl,
+                              std::vector<tinyobj::material_t>& materials, std::map<std::string, int>& index,
+                              std::string& warn) {
+        std::vector<std::string> done;
+        for (const std::string& lib : libraries) {
+            if (std::find(done.begin(), done.end(), lib) != done.end()) continue;
+            done.push_back(lib);
+            std::string err;
+            mtl(lib, &materials, &index, &warn, &err);
+            if (!err.empty()) warn += err;
+        }
     }
 
-    void checkAttributes(const tinyobj::attrib_t& a) {
-        if (a.vertices.size() % 3 || a.normals.size() % 3 || a.texcoords.size() % 2)
-            throw Error(name_ + ": inconsistent vertex attribute arrays");
-        if (a.vertices.size() / 3 >= kNone) throw Error(name_ + ": too many vertices");
-        for (std::size_t i = 0; i < a.vertices.size(); ++i)
-            if (!std::isfinite(a.vertices[i]))
-                throw Error(at("v", i / 3) + ": vertex " + std::to_string(i / 3 + 1) +
-                            " has a coordinate that is not a finite number");
+    // The material of each `usemtl` run: an index into the MTL materials, or -1 (grey) for a
+    // name no library defines (warned about once per name).
+    std::vector<int> materialIds(const obj::Parsed& parsed, const std::map<std::string, int>& index) {
+        std::vector<int> ids;
+        std::vector<std::string> unknown;
+        for (const obj::MaterialUse& use : parsed.materials) {
+            auto it = index.find(use.name);
+            ids.push_back(it == index.end() ? -1 : it->second);
+            if (it == index.end() && !use.name.empty() &&
+                std::find(unknown.begin(), unknown.end(), use.name) == unknown.end()) {
+                unknown.push_back(use.name);
+                logWarning(name_ + ": material '" + clampName(use.name) + "' is not defined; using grey (0.8)");
+            }
+        }
+        return ids;
     }
 
     TextureRef texture(const std::string& file, const tinyobj::texture_option_t& opt, bool srgb) {
@@ -321,38 +298,71 @@ private:
             Builder b;
             b.mesh.name = scene_.materials[material].name;
             b.mesh.material = material;
+            reserveFor(b.mesh, material);
             builders_.push_back(std::move(b));
         }
         return builderOfMaterial_[material];
     }
 
-    std::uint32_t vertexFor(std::uint32_t builder, const tinyobj::index_t& idx, const tinyobj::attrib_t& a) {
-        const auto v = static_cast<std::uint32_t>(idx.vertex_index);
+    // Room for a material's mesh before it grows: its share of the file's triangles and of its
+    // positions (a little more, for vertices split by UV seams), so a million-triangle mesh
+    // is not copied a dozen times on the way up.
+    void reserveFor(Mesh& mesh, std::uint32_t material) {
+        const std::size_t tris = material < trianglesOfMaterial_.size() ? trianglesOfMaterial_[material] : 0;
+        if (tris == 0 || totalTriangles_ == 0) return;
+        const double share = double(tris) / double(totalTriangles_);
+        const std::size_t vertices =
+            std::min<std::size_t>(3 * tris, std::size_t(double(positionCount_) * share * 1.25) + 64);
+        reserveHuge(mesh.indices, 3 * tris);
+        reserveHuge(mesh.positions, vertices);
+        reserveHuge(mesh.normals, vertices);
+        reserveHuge(mesh.uvs, vertices);
+    }
+
+    // Triangles per material (before triangulation drops any), for reserveFor.
+    void countTriangles(const obj::Parsed& a, const std::vector<int>& materialIds, std::size_t materialCount) {
+        trianglesOfMaterial_.assign(materialCount + 1, 0);
+        positionCount_ = a.positions.size() / 3;
+        std::size_t use = 0;
+        int materialId = -1;
+        for (std::size_t f = 0; f < a.faceCount(); ++f) {
+            while (use < a.materials.size() && a.materials[use].firstFace <= f) materialId = materialIds[use++];
+            const std::size_t count = a.faceStart[f + 1] - a.faceStart[f];
+            if (count < 3) continue;
+            const std::size_t m = materialId >= 0 && std::size_t(materialId) < materialCount ? std::size_t(materialId)
+                                                                                            : materialCount;
+            trianglesOfMaterial_[m] += count - 2;
+            totalTriangles_ += count - 2;
+        }
+    }
+
+    std::uint32_t vertexFor(std::uint32_t builder, const obj::Corner& idx, const obj::Parsed& a) {
+        const auto v = static_cast<std::uint32_t>(idx.v);
         for (std::uint32_t e = chainHead_[v]; e != kNone; e = keys_[e].next)
-            if (keys_[e].builder == builder && keys_[e].vt == idx.texcoord_index && keys_[e].vn == idx.normal_index)
+            if (keys_[e].builder == builder && keys_[e].vt == idx.vt && keys_[e].vn == idx.vn)
                 return keys_[e].vertex;
         Builder& b = builders_[builder];
         Mesh& m = b.mesh;
         const auto vertex = static_cast<std::uint32_t>(m.positions.size());
         if (vertex == kNone) throw Error(name_ + ": too many vertices in one material");
-        m.positions.push_back({a.vertices[3 * v], a.vertices[3 * v + 1], a.vertices[3 * v + 2]});
+        m.positions.push_back({a.positions[3 * v], a.positions[3 * v + 1], a.positions[3 * v + 2]});
         Vec3 n{};
-        if (idx.normal_index >= 0) {
-            const auto i = std::size_t(idx.normal_index);
+        if (idx.vn >= 0) {
+            const auto i = std::size_t(idx.vn);
             n = {a.normals[3 * i], a.normals[3 * i + 1], a.normals[3 * i + 2]};
         }
         if (!isFinite(n) || dot(n, n) == 0) b.allNormals = false;
         m.normals.push_back(n);
         Vec2 uv{};
-        if (idx.texcoord_index >= 0) {
-            const auto i = std::size_t(idx.texcoord_index);
+        if (idx.vt >= 0) {
+            const auto i = std::size_t(idx.vt);
             // OBJ's v runs up from the bottom row; the scene's (like glTF's) runs down from the top.
             uv = {a.texcoords[2 * i], 1.0f - a.texcoords[2 * i + 1]};
             if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = {};
             b.anyUv = true;
         }
         m.uvs.push_back(uv);
-        keys_.push_back({idx.texcoord_index, idx.normal_index, builder, vertex, chainHead_[v]});
+        keys_.push_back({idx.vt, idx.vn, builder, vertex, chainHead_[v]});
         chainHead_[v] = static_cast<std::uint32_t>(keys_.size() - 1);
         return vertex;
     }
@@ -418,66 +428,41 @@ private:
         for (std::size_t i = 1; i + 1 < ring.size(); ++i) out.insert(out.end(), {ring[0], ring[i], ring[i + 1]});
     }
 
-    void collectFaces(const tinyobj::attrib_t& a, const std::vector<tinyobj::shape_t>& shapes,
-                      std::size_t materialCount) {
-        const std::size_t nv = a.vertices.size() / 3, nn = a.normals.size() / 3, nt = a.texcoords.size() / 2;
-        chainHead_.assign(nv, kNone);
-        std::size_t face = 0;  // ordinal over the whole file, for line numbers
+    void collectFaces(const obj::Parsed& a, const std::vector<int>& materialIds, std::size_t materialCount) {
+        const std::size_t nv = a.positions.size() / 3;
+        countTriangles(a, materialIds, materialCount);
+        chainHead_ = hugeVector<std::uint32_t>(nv, kNone);
+        reserveHuge(keys_, nv + nv / 4);
         std::vector<Vec3> corners;
         std::vector<std::uint32_t> tris;
-        for (const tinyobj::shape_t& shape : shapes) {
-            const tinyobj::mesh_t& m = shape.mesh;
-            if (m.material_ids.size() != m.num_face_vertices.size())
-                throw Error(name_ + ": inconsistent face data in group '" + clampName(shape.name) + "'");
-            std::size_t offset = 0;
-            for (std::size_t f = 0; f < m.num_face_vertices.size(); ++f, ++face) {
-                const std::size_t count = m.num_face_vertices[f];
-                if (count > m.indices.size() - offset)
-                    throw Error(at("f", face) + ": face has more corners than the parser kept (at most 255 are supported)");
-                const tinyobj::index_t* idx = &m.indices[offset];
-                offset += count;
-                if (count < 3) {
+        std::size_t use = 0;  // the `usemtl` run in force
+        int materialId = -1;
+        for (std::size_t f = 0; f < a.faceCount(); ++f) {
+            while (use < a.materials.size() && a.materials[use].firstFace <= f) materialId = materialIds[use++];
+            const obj::Corner* idx = &a.corners[a.faceStart[f]];
+            const std::size_t count = a.faceStart[f + 1] - a.faceStart[f];
+            if (count < 3) {
+                ++degenerate_;
+                continue;
+            }
+            corners.clear();
+            for (std::size_t k = 0; k < count; ++k) {
+                const auto v = std::size_t(idx[k].v);
+                corners.push_back({a.positions[3 * v], a.positions[3 * v + 1], a.positions[3 * v + 2]});
+            }
+            triangulate(corners, tris);
+            const std::uint32_t builder = builderFor(materialId, materialCount);
+            for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
+                const std::uint32_t i0 = tris[t], i1 = tris[t + 1], i2 = tris[t + 2];
+                const Vec3 e = cross(corners[i1] - corners[i0], corners[i2] - corners[i0]);
+                if (!(dot(e, e) > 0) || idx[i0].v == idx[i1].v || idx[i1].v == idx[i2].v || idx[i0].v == idx[i2].v) {
                     ++degenerate_;
                     continue;
                 }
-                corners.clear();
-                for (std::size_t k = 0; k < count; ++k) {
-                    const tinyobj::index_t& c = idx[k];
-                    if (c.vertex_index < 0 || std::size_t(c.vertex_index) >= nv)
-                        throw Error(at("f", face) + ": face refers to vertex " + indexText(c.vertex_index) +
-                                    ", but " + std::to_string(nv) + " vertices are defined so far");
-                    if (c.normal_index < -1 || (c.normal_index >= 0 && std::size_t(c.normal_index) >= nn))
-                        throw Error(at("f", face) + ": face refers to normal " + indexText(c.normal_index) +
-                                    ", but " + std::to_string(nn) + " normals are defined");
-                    if (c.texcoord_index < -1 || (c.texcoord_index >= 0 && std::size_t(c.texcoord_index) >= nt))
-                        throw Error(at("f", face) + ": face refers to texture coordinate " +
-                                    indexText(c.texcoord_index) + ", but " + std::to_string(nt) + " are defined");
-                    const auto v = std::size_t(c.vertex_index);
-                    corners.push_back({a.vertices[3 * v], a.vertices[3 * v + 1], a.vertices[3 * v + 2]});
-                }
-                triangulate(corners, tris);
-                const std::uint32_t builder = builderFor(m.material_ids[f], materialCount);
-                for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
-                    const std::uint32_t i0 = tris[t], i1 = tris[t + 1], i2 = tris[t + 2];
-                    const Vec3 e = cross(corners[i1] - corners[i0], corners[i2] - corners[i0]);
-                    if (!(dot(e, e) > 0) || idx[i0].vertex_index == idx[i1].vertex_index ||
-                        idx[i1].vertex_index == idx[i2].vertex_index || idx[i0].vertex_index == idx[i2].vertex_index) {
-                        ++degenerate_;
-                        continue;
-                    }
-                    for (std::uint32_t k : {i0, i1, i2})
-                        builders_[builder].mesh.indices.push_back(vertexFor(builder, idx[k], a));
-                }
+                for (std::uint32_t k : {i0, i1, i2})
+                    builders_[builder].mesh.indices.push_back(vertexFor(builder, idx[k], a));
             }
-            if (offset != m.indices.size())
-                throw Error(name_ + ": a face in group '" + clampName(shape.name) +
-                            "' has more than 255 corners, which the OBJ parser cannot keep");
         }
-    }
-
-    static std::string indexText(int zeroBased) {
-        return zeroBased < 0 ? "before the first (relative index " + std::to_string(zeroBased) + ")"
-                             : std::to_string(std::int64_t(zeroBased) + 1);
     }
 
     std::string_view text_;
@@ -487,6 +472,8 @@ private:
     std::vector<Builder> builders_;
     std::vector<std::uint32_t> builderOfMaterial_;
     std::uint32_t greyIndex_ = kNone;
+    std::vector<std::size_t> trianglesOfMaterial_;  // [materialCount]: faces without a known material
+    std::size_t totalTriangles_ = 0, positionCount_ = 0;
     std::vector<std::uint32_t> chainHead_;
     std::vector<VertexKey> keys_;
     std::map<std::string, int> textureCache_;
@@ -496,9 +483,9 @@ private:
 }  // namespace
 
 Scene loadObj(const std::filesystem::path& path) {
-    const std::string text = readWholeFile(path, kMaxObjBytes, "OBJ file");
+    const MappedFile file(path, kMaxObjBytes, "OBJ file");
     MtlReader mtl(path.parent_path(), std::nullopt);
-    return ObjImporter(text, path.parent_path(), path.filename().string()).run(mtl);
+    return ObjImporter(file.bytes(), path.parent_path(), path.filename().string()).run(mtl);
 }
 
 Scene loadObjFromMemory(std::string_view obj, std::string_view mtl, const std::filesystem::path& baseDir,

@@ -10,6 +10,7 @@ endif()
 
 target_sources(penumbra_scene PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/obj.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/obj_parse.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf.cpp
   ${CMAKE_CURRENT_LIST_DIR}/texture_io.cpp
   ${CMAKE_CURRENT_LIST_DIR}/normals.cpp)

@@ -85,6 +85,20 @@ TEST(BvhBuild, LargeBuildUsesParallelPathsAndIsDeterministic) {
     EXPECT_EQ(0, std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(a.nodes[0])));
 }
 
+TEST(BvhBuild, TrianglesAndTheirBoxesGiveTheSameTree) {
+    // buildTriangles computes boxes its own (vector) way; it must agree with build() on them.
+    auto tris = randomSoup(20000, 5);
+    tris[17].v1.y = std::numeric_limits<float>::quiet_NaN();  // sanitised the same way too
+    tris[18].v2.x = std::numeric_limits<float>::infinity();
+    std::vector<Aabb> boxes;
+    for (const Triangle& t : tris) boxes.push_back(bounds(t));
+    boxes[17] = Aabb{Vec3(std::numeric_limits<float>::quiet_NaN()), Vec3(0.0f)};
+    Bvh a = buildTriangles(tris), b = build(boxes);
+    EXPECT_EQ(a.primOrder, b.primOrder);
+    ASSERT_EQ(a.nodes.size(), b.nodes.size());
+    EXPECT_EQ(0, std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(a.nodes[0])));
+}
+
 TEST(BvhBuild, CoincidentCentroidsStillGiveSmallLeaves) {
     // Identical boxes leave the SAH nothing to bin; the builder must split by index instead.
     std::vector<Aabb> boxes(1000, Aabb{Vec3(-1.0f), Vec3(1.0f)});

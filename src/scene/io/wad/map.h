@@ -17,6 +17,8 @@ struct Vertex {  // 4 bytes on disk
 };
 
 enum LinedefFlags : std::uint16_t {
+    kLineBlocking = 0x0001,       // ML_BLOCKING: stops players and monsters
+    kLineBlockMonsters = 0x0002,  // ML_BLOCKMONSTERS: stops monsters only
     kLineTwoSided = 0x0004,
     kLineUpperUnpegged = 0x0008,
     kLineLowerUnpegged = 0x0010,

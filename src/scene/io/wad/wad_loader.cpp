@@ -23,12 +23,14 @@
 #include "scene/io/wad/thing_placement.h"
 #include "scene/io/wad/triangulate.h"
 #include "scene/io/wad/units.h"
+#include "scene/walk/wad_walk_map.h"
+#include "scene/walk/walk_physics.h"
 
 namespace penumbra {
 namespace {
 using namespace wad;
 
-constexpr float kEyeHeight = 41.0f;
+constexpr double kEyeHeight = walk::kEyeHeight;
 // The sky's radiance when the WAD has no sky texture (a dull daylight grey-blue).
 constexpr Vec3 kSkyRadiance{1.0f, 1.0f, 1.1f};
 // Radiance per unit of the sky texture's linear colour: Doom draws the sky at its palette colours.
@@ -56,6 +58,7 @@ public:
         if (hasSky_) buildSky();
         placeCamera();
         placeThings(wad_, map_, textures_, options_, scene_);
+        scene_.walkMap = walk::buildWalkMap(map_);
         scene_.textures = std::move(textures_.textures());
         scene_.validate();
         return std::move(scene_);

@@ -1,0 +1,265 @@
+#include "bvh/sah_binning.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <mutex>
+
+#include "core/error.h"
+#include "core/parallel.h"
+
+namespace penumbra::bvh::sah {
+
+using simd::Box4;
+using simd::F4;
+
+Range gather(const PrimRef* refs, std::uint32_t begin, std::uint32_t end) {
+    Range r;
+    r.begin = begin;
+    r.end = end;
+    for (std::uint32_t i = begin; i < end; ++i) {
+        r.bounds.grow(refs[i].bottom(), refs[i].hi);
+        r.centroids.grow(refs[i].centroid());
+    }
+    return r;
+}
+
+Binner::Binner(const Range& range, int binCount) : bins(binCount) {
+    origin = range.centroids.lo;
+    scale = F4{0, 0, 0, 0};
+    lastBin = simd::splat(float(bins - 1));
+    F4 extent = range.centroids.hi - range.centroids.lo;
+    for (int a = 0; a < 3; ++a) {
+        float s = float(bins) / extent[a];
+        scale[a] = (extent[a] > 0 && std::isfinite(s)) ? s : 0.0f;
+    }
+}
+
+// Clamped to [0, bins - 1], NaN going to 0 (vmax keeps 0 unless f > 0), so the conversion is
+// always defined. partition() decides sides from the same f.
+simd::I4 Binner::indices(F4 centroid) const {
+    const F4 zero{0, 0, 0, 0};
+    return __builtin_convertvector(
+        simd::vmin(simd::vmax((centroid - origin) * scale, zero), lastBin), simd::I4);
+}
+
+// What one bin of one axis holds: the bounds of its primitives. No initialisers, so a node pays
+// only for the bins it uses (BinGrid::reset).
+struct Bin {
+    F4 lo, hi;
+};
+
+struct BinGrid {
+    Bin bin[3][kMaxBins];
+    std::uint32_t count[kMaxBins][4];  // [i][a]: bin i of axis a; a sweep loads all axes at once
+
+    void reset(int bins) {
+        for (int i = 0; i < bins; ++i) {
+            for (int a = 0; a < 3; ++a) bin[a][i] = {simd::kPosInf, simd::kNegInf};
+            for (std::uint32_t& n : count[i]) n = 0;
+        }
+    }
+    void add(int a, int i, const Bin& b, std::uint32_t n) {
+        Bin& x = bin[a][i];
+        x.lo = simd::vmin(x.lo, b.lo);
+        x.hi = simd::vmax(x.hi, b.hi);
+        count[i][a] += n;
+    }
+    Box4 box(int a, int i) const { return {bin[a][i].lo, bin[a][i].hi}; }
+    void merge(const BinGrid& other, int bins) {
+        for (int a = 0; a < 3; ++a)
+            for (int i = 0; i < bins; ++i) add(a, i, other.bin[a][i], other.count[i][a]);
+    }
+};
+
+namespace {
+
+// The hot loop: one vector subtract-multiply-clamp gives all three bin indices.
+void binRange(const Binner& b, const PrimRef* refs, std::uint32_t begin, std::uint32_t end,
+              BinGrid& grid) {
+    for (std::uint32_t i = begin; i < end; ++i) {
+        const F4 lo = refs[i].bottom(), hi = refs[i].hi;
+        const F4 c = lo * 0.5f + hi * 0.5f;
+        const simd::I4 bin = b.indices(c);
+        for (int a = 0; a < 3; ++a) grid.add(a, bin[a], {lo, hi}, 1);
+    }
+}
+
+void binParallel(const Binner& b, const PrimRef* refs, const Range& range, unsigned threads,
+                 BinGrid& grid) {
+    std::mutex merge;
+    const std::size_t chunk = (range.size() + threads - 1) / threads;
+    parallelFor(range.size(), chunk, [&](std::size_t lo, std::size_t hi) {
+        auto local = std::make_unique<BinGrid>();
+        local->reset(b.bins);
+        binRange(b, refs, range.begin + std::uint32_t(lo), range.begin + std::uint32_t(hi), *local);
+        std::lock_guard lock(merge);
+        grid.merge(*local, b.bins);
+    });
+}
+
+// The children of a chosen split, read off its axis's bins.
+void fillChildren(const BinGrid& grid, const Range& range, Split& split) {
+    std::uint32_t leftCount = 0;
+    for (int i = 0; i < split.binner.bins; ++i) {
+        const Bin& b = grid.bin[split.axis][i];
+        Range& side = i <= split.bin ? split.left : split.right;
+        side.bounds.grow(b.lo, b.hi);
+        if (i <= split.bin) leftCount += grid.count[i][split.axis];
+    }
+    // The children's centroid bounds, which only steer their binning, are not tracked per bin
+    // (that would cost a third of the binning loop): each child's box clipped to the parent's
+    // centroid bounds, and on the split axis to the plane between the bins, is a close fit.
+    const int a = split.axis;
+    const float plane = split.binner.origin[a] + float(split.bin + 1) / split.binner.scale[a];
+    for (Range* side : {&split.left, &split.right}) {
+        side->centroids.lo = simd::vmax(side->bounds.lo, range.centroids.lo);
+        side->centroids.hi = simd::vmin(side->bounds.hi, range.centroids.hi);
+    }
+    if (plane < split.left.centroids.hi[a] && plane >= split.left.centroids.lo[a])
+        split.left.centroids.hi[a] = plane;
+    if (plane > split.right.centroids.lo[a] && plane <= split.right.centroids.hi[a])
+        split.right.centroids.lo[a] = plane;
+    split.left.begin = range.begin;
+    split.left.end = split.right.begin = range.begin + leftCount;
+    split.right.end = range.end;
+}
+
+simd::I4 counts(const BinGrid& grid, int i) {
+    simd::I4 v;
+    std::memcpy(&v, grid.count[i], sizeof v);
+    return v;
+}
+
+F4 select(simd::I4 mask, F4 a, F4 b) { return mask ? a : b; }
+
+}  // namespace
+
+SahBinning::SahBinning(const BuildOptions& options)
+    : bins_(std::clamp(options.bins, 2, kMaxBins)),
+      leafSize_(std::uint32_t(std::max(options.maxLeafSize, 1))),
+      ct_(options.traversalCost),
+      ci_(options.intersectCost) {}
+
+// Small nodes get one bin per primitive: as many candidates as sixteen bins would give them in
+// practice, at a fraction of the sweep cost, and most nodes are small.
+int SahBinning::binCount(const Range& range) const {
+    return int(std::min<std::uint32_t>(std::uint32_t(bins_), std::max(2u, range.size())));
+}
+
+// Every candidate plane of all three axes in two passes over the bins, the axes in the lanes
+// of one vector. Costs are scaled by the node's area (no division), so flat or point-like nodes
+// compare as 0 against 0 instead of producing NaN; candidates with an empty side, and axes
+// without extent, cost infinity.
+void SahBinning::sweep(const BinGrid& grid, const Binner& b, const Range& range,
+                       Split& best) const {
+    using simd::I4;
+    const float nodeCost = ct_ * range.bounds.halfArea();
+    const I4 zero{0, 0, 0, 0}, all{int(range.size()), int(range.size()), int(range.size()), -1};
+    const I4 axisUsable = b.scale != F4{0, 0, 0, 0};
+    F4 rightCost[kMaxBins];  // written before read
+    Box4 x, y, z;
+    I4 count = zero;
+    for (int i = b.bins - 1; i > 0; --i) {
+        x.grow(grid.box(0, i));
+        y.grow(grid.box(1, i));
+        z.grow(grid.box(2, i));
+        count += counts(grid, i);
+        rightCost[i] =
+            select(count > zero, __builtin_convertvector(count, F4) * halfAreas(x, y, z), F4{});
+    }
+    x = y = z = Box4{};
+    count = zero;
+    F4 bestCost = simd::kPosInf;
+    I4 bestBin = zero;
+    for (int i = 0; i < b.bins - 1; ++i) {
+        x.grow(grid.box(0, i));
+        y.grow(grid.box(1, i));
+        z.grow(grid.box(2, i));
+        count += counts(grid, i);
+        const F4 cost = nodeCost + ci_ * (__builtin_convertvector(count, F4) * halfAreas(x, y, z) +
+                                          rightCost[i + 1]);
+        const I4 better = (count > zero) & (count < all) & axisUsable & (cost < bestCost);
+        bestCost = select(better, cost, bestCost);
+        bestBin = better ? I4{i, i, i, i} : bestBin;
+    }
+    for (int a = 0; a < 3; ++a)  // lowest axis first on ties, as a scalar scan would choose
+        if (bestCost[a] < best.cost) {
+            best.axis = a;
+            best.bin = bestBin[a];
+            best.cost = bestCost[a];
+        }
+    // Every candidate may have been NaN (areas overflowing to inf); then take any valid split,
+    // because a node above the leaf size must be split anyway.
+    for (int a = 0; a < 3 && best.axis < 0; ++a) {
+        std::uint32_t n = 0;
+        for (int i = 0; i < b.bins - 1; ++i) {
+            n += grid.count[i][a];
+            if (n > 0 && n < range.size()) {
+                best.axis = a;
+                best.bin = i;
+                break;
+            }
+        }
+    }
+}
+
+Split SahBinning::find(const PrimRef* refs, const Range& range, unsigned threads) const {
+    Split best;
+    if (range.centroids.empty()) return best;
+    const Binner b(range, binCount(range));
+    if (b.scale[0] == 0 && b.scale[1] == 0 && b.scale[2] == 0)
+        return best;  // all centroids coincide
+
+    BinGrid grid;  // ~26 KiB of stack; this frame is gone before the recursion goes deeper
+    grid.reset(b.bins);
+    if (threads > 1)
+        binParallel(b, refs, range, threads, grid);
+    else
+        binRange(b, refs, range.begin, range.end, grid);
+
+    sweep(grid, b, range, best);
+    best.binner = b;
+    if (best.axis >= 0) fillChildren(grid, range, best);
+    return best;
+}
+
+// Branch-free: left primitives fill dst from the front, right ones from the back, and the side
+// only selects the store address (by a mask, so no compiler turns it into a jump). "Index <=
+// last" is decided on the unclamped bin coordinate f: the clamped, truncated index is <= last
+// exactly when f < last + 1, NaN included (it clamps to bin 0), as binning computed it.
+std::uint32_t SahBinning::partition(const PrimRef* src, PrimRef* dst, const Range& range,
+                                    const Split& split) const {
+    const Binner& b = split.binner;
+    const int axis = split.axis;
+    const float origin = b.origin[axis], scale = b.scale[axis], bound = float(split.bin + 1);
+    std::uint32_t l = range.begin, r = range.end;
+    for (std::uint32_t i = range.begin; i < range.end; ++i) {
+        const PrimRef p = src[i];
+        const float f = (p.centroid()[axis] - origin) * scale;
+        const std::uint32_t left = !(f >= bound);
+        const std::uint32_t mask = 0u - left;
+        dst[(l & mask) | ((r - 1) & ~mask)] = p;
+        l += left;
+        r -= 1 - left;
+    }
+    return l - range.begin;
+}
+
+void SahBinning::medianSplit(PrimRef* refs, const Range& range, Range& left, Range& right) const {
+    const std::uint32_t mid = range.begin + range.size() / 2;
+    const F4 extent = range.centroids.hi - range.centroids.lo;
+    const int axis =
+        extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : (extent[1] >= extent[2] ? 1 : 2);
+    if (extent[axis] > 0) {
+        std::nth_element(refs + range.begin, refs + mid, refs + range.end,
+                         [axis](const PrimRef& p, const PrimRef& q) {
+                             return p.centroid()[axis] < q.centroid()[axis];
+                         });
+    }
+    left = gather(refs, range.begin, mid);
+    right = gather(refs, mid, range.end);
+}
+
+}  // namespace penumbra::bvh::sah
