@@ -14,6 +14,10 @@
 #ifndef PN_COUNT_TRIANGLE
 #define PN_COUNT_TRIANGLE()
 #endif
+// Called with the leaf node whose primitive became the closest hit so far (heatmap.comp's leaf views).
+#ifndef PN_NOTE_LEAF_HIT
+#define PN_NOTE_LEAF_HIT(leaf, primitives)
+#endif
 // A hit on primitive i: a sphere, a sprite's opaque part, or a triangle that an alpha-tested
 // material does not punch out.
 // The flag is the only branch spheres add to the hot loop.
@@ -55,6 +59,7 @@ Hit traverseBvh(vec3 o, vec3 d, float tMax, bool anyHit) {
                 float t, u, v;
                 if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
                     hit = Hit(t, i, u, v);
+                    PN_NOTE_LEAF_HIT(current, node.triCount);
                     if (anyHit) return hit;
                 }
             }

@@ -333,6 +333,8 @@ PN_STRUCT(FrameUniforms) {
 #define PN_DEBUG_HEAT_NODES 6u   // BVH nodes visited by the primary ray
 #define PN_DEBUG_HEAT_TRIS 7u    // triangles tested by the primary ray
 #define PN_DEBUG_BVH_BOXES 8u    // the image with the BVH's boxes at one depth outlined (boxes.comp)
+#define PN_DEBUG_LEAF_DEPTH 9u   // depth of the BVH leaf holding the primary ray's hit (root: 0)
+#define PN_DEBUG_LEAF_TRIS 10u   // primitives in the BVH leaf holding the primary ray's hit
 #define PN_MAX_OVERLAY_BOXES 4096u  // boxes the overlay draws at most (each pixel tests every one)
 // The debug view's small window (picture-in-picture): 1/PN_DEBUG_INSET_DIVISOR of the image's
 // width and height, PN_DEBUG_INSET_MARGIN pixels from its bottom right corner, in a one-pixel frame.
@@ -403,12 +405,13 @@ PN_STRUCT(ViewerUniforms) {
     uint pad0;
 };
 
-// Largest traversal counts of a heat-map frame (for the legend), 16 bytes.
+// Largest counts of a heat-map frame (for the legend), 16 bytes. heatmap.comp writes a pixel's
+// own counts as a vec4 (nodes, triangles, leaf depth, leaf primitives; the last two 0 on a miss).
 PN_STRUCT(HeatCounters) {
     uint maxNodes;
     uint maxTris;
-    uint pad0;
-    uint pad1;
+    uint maxLeafDepth;
+    uint maxLeafTris;
 };
 
 // Per-dispatch constants, 16 bytes.
@@ -539,7 +542,8 @@ static_assert(sizeof(ViewerUniforms) == 128 && offsetof(ViewerUniforms, prevTanH
               offsetof(ViewerUniforms, sigmaLuminance) == 96 && offsetof(ViewerUniforms, heatMax) == 108 &&
               offsetof(ViewerUniforms, denoise) == 112 && offsetof(ViewerUniforms, debugOpacity) == 116 &&
               offsetof(ViewerUniforms, debugInset) == 120);
-static_assert(sizeof(HeatCounters) == 16);
+static_assert(sizeof(HeatCounters) == 16 && offsetof(HeatCounters, maxLeafDepth) == 8 &&
+              offsetof(HeatCounters, maxLeafTris) == 12);
 }  // namespace penumbra::shader
 #endif
 #endif

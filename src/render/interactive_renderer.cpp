@@ -23,6 +23,22 @@ bool sameCamera(const shader::FrameUniforms& a, const shader::FrameUniforms& b) 
            same(a.cameraUp, b.cameraUp) && a.tanHalfFovY == b.tanHalfFovY && a.aspect == b.aspect;
 }
 
+// Views drawn from the heat-map pass's per-pixel counts.
+bool isHeatView(DebugView v) {
+    return v == DebugView::HeatNodes || v == DebugView::HeatTriangles || v == DebugView::LeafDepth ||
+           v == DebugView::LeafTriangles;
+}
+
+// The count a heat view shows as its hottest colour: the largest of the last heat frame.
+std::uint32_t heatScaleMax(DebugView v, const shader::HeatCounters& c) {
+    switch (v) {
+        case DebugView::HeatNodes: return c.maxNodes;
+        case DebugView::HeatTriangles: return c.maxTris;
+        case DebugView::LeafDepth: return c.maxLeafDepth;
+        default: return c.maxLeafTris;
+    }
+}
+
 // Settings whose change makes the running mean mix two different images.
 bool changesTheImage(const ViewSettings& a, const ViewSettings& b) {
     auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
@@ -219,9 +235,8 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     v.sigmaLuminance = s.sigmaLuminance;
     v.sigmaNormal = s.sigmaNormal;
     v.sigmaDepth = s.sigmaDepth;
-    const bool heat = s.debug == DebugView::HeatNodes || s.debug == DebugView::HeatTriangles;
-    const auto* heatMax = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());
-    v.heatMax = heat ? float(s.debug == DebugView::HeatNodes ? heatMax->maxNodes : heatMax->maxTris)
+    const bool heat = isHeatView(s.debug);
+    v.heatMax = heat ? float(heatScaleMax(s.debug, *static_cast<const shader::HeatCounters*>(heatCounters_.mapped())))
                      : float(frameIndex_ + 1) * float(s.samplesPerFrame);
     v.debugOpacity = std::clamp(s.debugOpacity, 0.0f, 1.0f);
     v.debugInset = s.debugInset ? 1u : 0u;
@@ -307,6 +322,8 @@ void InteractiveRenderer::finishFrame() {
         const auto* heat = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());
         stats_.heatMaxNodes = heat->maxNodes;
         stats_.heatMaxTriangles = heat->maxTris;
+        stats_.heatMaxLeafDepth = heat->maxLeafDepth;
+        stats_.heatMaxLeafTriangles = heat->maxLeafTris;
     }
 }
 

@@ -20,6 +20,8 @@ enum class DebugView : std::uint32_t {
     HeatNodes = PN_DEBUG_HEAT_NODES,
     HeatTriangles = PN_DEBUG_HEAT_TRIS,
     BvhBoxes = PN_DEBUG_BVH_BOXES,  // the image, with the BVH's boxes at boxDepth outlined
+    LeafDepth = PN_DEBUG_LEAF_DEPTH,
+    LeafTriangles = PN_DEBUG_LEAF_TRIS,
 };
 
 struct ViewSettings {

@@ -136,7 +136,8 @@ TEST(Layout, ViewerStructsMatchInTheViewerShaders) {
                        offsetof(ViewerUniforms, sigmaNormal), offsetof(ViewerUniforms, sigmaDepth),
                        offsetof(ViewerUniforms, heatMax), offsetof(ViewerUniforms, denoise),
                        offsetof(ViewerUniforms, debugOpacity), offsetof(ViewerUniforms, debugInset)});
-        expectMembers(spv, "HeatCounters", {0, offsetof(HeatCounters, maxTris)});
+        expectMembers(spv, "HeatCounters", {0, offsetof(HeatCounters, maxTris), offsetof(HeatCounters, maxLeafDepth),
+                                            offsetof(HeatCounters, maxLeafTris)});
         expectMembers(spv, "FrameUniforms", {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight)});
         expectMembers(spv, "PassPush", {0, offsetof(PassPush, mode), offsetof(PassPush, itemCount), offsetof(PassPush, countRays)});
         expectMembers(spv, "BoxOverlayPush", {0, offsetof(BoxOverlayPush, lineWidth), offsetof(BoxOverlayPush, pad0),
