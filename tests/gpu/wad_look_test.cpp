@@ -275,9 +275,12 @@ TEST_F(GpuTest, SpriteShowsTheViewOfTheCamerasSide) {
         Vec3 offset;
         int view;
     } sides[] = {{{2, 0, 0}, 1}, {{0, 0, -2}, 3}, {{-2, 0, 0}, 5}, {{0, 0, 2}, 7}};
+    Renderer renderer(*ctx, scene, testSettings(4, 4, 1, 0));  // one pipeline for the four views
     for (const auto& side : sides) {
         aim(scene, soul + side.offset, soul, 10);
-        const ImageRgb img = render(*ctx, scene, testSettings(4, 4, 1, 0));
+        renderer.restart(scene.camera);
+        renderer.render();
+        const ImageRgb img = renderer.image();
         EXPECT_TRUE(near(img.at(2, 2), paletteLinear(20 + 20 * side.view), 1e-4f))
             << "view " << side.view;
     }
