@@ -4,6 +4,7 @@
 #ifndef PN_TEXTURES_GLSL
 #define PN_TEXTURES_GLSL
 
+#include "shared/animation.h"
 #include "shared/color.h"
 
 int wrapTexel(int i, int size, uint mode) {
@@ -27,8 +28,8 @@ vec4 texelAt(TextureInfo info, int x, int y) {
 // for a frame of an animation the cycle's frame on show, this texture's offset in the cycle kept
 // (as Doom animates every frame of a cycle).
 uint animatedTexture(uint index, TextureInfo info) {
-    if (info.frameCount <= 1u || !(info.secondsPerFrame > 0.0) || !(frame.time >= 0.0)) return index;
-    uint step = uint(floor(frame.time / info.secondsPerFrame)) % info.frameCount;
+    if (info.frameCount <= 1u) return index;
+    uint step = animationTick(frame.time, info.secondsPerFrame) % info.frameCount;
     return index - info.frame + (step + info.frame) % info.frameCount;
 }
 

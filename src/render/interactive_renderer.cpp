@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <span>
 #include <utility>
 
 #include "bvh/depth_boxes.h"
@@ -10,6 +11,7 @@
 #include "render/frame_uniforms.h"
 #include "render/kernel_features.h"
 #include "render/passes/gbuffer_pass.h"
+#include "shared/animation.h"
 
 namespace penumbra {
 namespace {
@@ -21,6 +23,13 @@ bool sameCamera(const shader::FrameUniforms& a, const shader::FrameUniforms& b) 
     auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
     return same(a.cameraPosition, b.cameraPosition) && same(a.cameraForward, b.cameraForward) &&
            same(a.cameraUp, b.cameraUp) && a.tanHalfFovY == b.tanHalfFovY && a.aspect == b.aspect;
+}
+
+bool animationTicked(std::span<const shader::TextureInfo> textures, float before, float now) {
+    return std::any_of(textures.begin(), textures.end(), [&](const shader::TextureInfo& t) {
+        return t.frameCount > 1 &&
+               shader::animationTick(before, t.secondsPerFrame) != shader::animationTick(now, t.secondsPerFrame);
+    });
 }
 
 // Views drawn from the heat-map pass's per-pixel counts.
@@ -208,10 +217,9 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     const bool boxes = s.debug == DebugView::BvhBoxes;
     const DebugView shown = boxes ? DebugView::None : s.debug;
     f.debugMode = std::uint32_t(shown);
-    // Animated textures change the image as time runs: blend history as for a moving camera.
-    const bool animating = previousFrame_ && previousFrame_->time != f.time &&
-                           std::any_of(arrays_.textures.begin(), arrays_.textures.end(),
-                                       [](const shader::TextureInfo& t) { return t.frameCount > 1; });
+    // An animated texture that turned to its next frame changed the image: blend history as for a
+    // moving camera. Between its ticks the image holds still and the mean keeps converging.
+    const bool animating = previousFrame_ && animationTicked(arrays_.textures, previousFrame_->time, f.time);
     const bool moved = previousFrame_ && (!sameCamera(*previousFrame_, f) || animating);
     const shader::FrameUniforms& prev = previousFrame_ ? *previousFrame_ : f;
 

@@ -13,6 +13,7 @@
 #include "scene/io/wad/sky.h"
 #include "scene/io/wad/things.h"
 #include "scene/io/wad/wad_loader.h"
+#include "shared/animation.h"
 #include "shared/color.h"
 #include "wad_builder.h"
 
@@ -250,6 +251,21 @@ TEST(WadAnimation, ACycleBringsItsFramesConsecutively) {
     for (const Material& m :
          loadWadFromMemory(animatedWad(), "E1M1", "anim.wad", bilinear).materials)
         if (m.albedoTexture.present()) EXPECT_EQ(m.albedoTexture.filter, Filter::Linear) << m.name;
+}
+
+// The clock the shaders pick frames with and the viewer restarts its mean by: whole frames shown
+// since time 0, and 0 for a still texture or a time that is no number of seconds.
+TEST(WadAnimation, ClockTicksOncePerFrameTime) {
+    const float tic = 8.0f / 35.0f;
+    EXPECT_EQ(shader::animationTick(0.0f, tic), 0u);
+    EXPECT_EQ(shader::animationTick(0.99f * tic, tic), 0u);
+    EXPECT_EQ(shader::animationTick(1.01f * tic, tic), 1u);
+    EXPECT_EQ(shader::animationTick(10.5f * tic, tic), 10u);
+    EXPECT_EQ(shader::animationTick(1e6f, tic), std::uint32_t(std::floor(1e6f / tic)));
+    EXPECT_EQ(shader::animationTick(5.0f, 0.0f), 0u);
+    EXPECT_EQ(shader::animationTick(-1.0f, tic), 0u);
+    EXPECT_EQ(shader::animationTick(std::nanf(""), tic), 0u);
+    EXPECT_EQ(shader::animationTick(1e30f, tic), 4294967040u);
 }
 
 TEST(WadAnimation, SceneValidationKeepsCyclesInRange) {
