@@ -48,6 +48,11 @@ vec3 debugColor(uint i) {
         case PN_DEBUG_SAMPLES: return heatRamp(history[i].samples / max(viewer.heatMax, 1.0));
         case PN_DEBUG_HEAT_NODES: return heatRamp(filtered[i].x / max(viewer.heatMax, 1.0));
         case PN_DEBUG_HEAT_TRIS: return heatRamp(filtered[i].y / max(viewer.heatMax, 1.0));
+        // Leaf views: black where the ray missed (no leaf).
+        case PN_DEBUG_LEAF_DEPTH:
+            return filtered[i].w == 0.0 ? vec3(0.0) : heatRamp(filtered[i].z / max(viewer.heatMax, 1.0));
+        case PN_DEBUG_LEAF_TRIS:
+            return filtered[i].w == 0.0 ? vec3(0.0) : heatRamp(filtered[i].w / max(viewer.heatMax, 1.0));
     }
     return vec3(1.0, 0.0, 1.0);
 }

@@ -104,7 +104,7 @@ vec3 radiance(vec3 origin, vec3 direction, uint pixelIndex, uint sampleIndex, in
             float lightPdf = 0.0;
             if (!afterDelta && s.lightIndex != PN_NO_LIGHT && misSamplesLights())
                 lightPdf = emitterHitPdf(hit, s, previousPosition, previousNormal, origin, direction);
-            result += throughput * materialEmission(m, s.uv) * misWeightHit(bsdfPdfPrev, lightPdf, afterDelta);
+            result += throughput * emittedRadiance(m, s.uv, direction, depth == 0u) * misWeightHit(bsdfPdfPrev, lightPdf, afterDelta);
         }
         if (depth >= frame.maxBounces) break;
 

@@ -5,6 +5,7 @@
 
 #include "lib/intersect.glsl"
 #include "lib/textures.glsl"
+#include "lib/sprite.glsl"
 
 // Traversal statistics hooks: empty, except in heatmap.comp, which counts with them.
 #ifndef PN_COUNT_NODE
@@ -13,7 +14,12 @@
 #ifndef PN_COUNT_TRIANGLE
 #define PN_COUNT_TRIANGLE()
 #endif
-// A hit on primitive i: a sphere, or a triangle that an alpha-tested material does not punch out.
+// Called with the leaf node whose primitive became the closest hit so far (heatmap.comp's leaf views).
+#ifndef PN_NOTE_LEAF_HIT
+#define PN_NOTE_LEAF_HIT(leaf, primitives)
+#endif
+// A hit on primitive i: a sphere, a sprite's opaque part, or a triangle that an alpha-tested
+// material does not punch out.
 // The flag is the only branch spheres add to the hot loop.
 bool hitPrimitive(uint i, vec3 o, vec3 d, float tMax, out float t, out float u, out float v) {
     TriVerts tri = triVerts[i];
@@ -22,6 +28,7 @@ bool hitPrimitive(uint i, vec3 o, vec3 d, float tMax, out float t, out float u, 
         v = 0.0;
         return intersectSphere(tri, o, d, tMax, t);
     }
+    if (PN_HAS(PN_FEATURE_SPRITES) && (tri.flags & PN_TRI_SPRITE) != 0u) return hitSprite(i, tri, o, d, tMax, t, u, v);
     if (!intersectTriangle(tri, o, d, tMax, t, u, v)) return false;
     return !PN_HAS(PN_FEATURE_ALPHA_TEST) || (tri.flags & PN_TRI_ALPHA_TESTED) == 0u || !isAlphaHole(i, u, v);
 }
@@ -52,6 +59,7 @@ Hit traverseBvh(vec3 o, vec3 d, float tMax, bool anyHit) {
                 float t, u, v;
                 if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
                     hit = Hit(t, i, u, v);
+                    PN_NOTE_LEAF_HIT(current, node.triCount);
                     if (anyHit) return hit;
                 }
             }

@@ -169,6 +169,16 @@ float lightPickPmf(uint ref, vec3 p, vec3 n) {
     return 0.0;
 }
 
+// What an emitter's front face sends toward a viewer looking along `direction`: its emission, or
+// for a sky portal the environment seen along `direction` plus its emission. Hidden emission
+// (Doom's sector light) is not seen by camera rays.
+vec3 emittedRadiance(Material m, vec2 uv, vec3 direction, bool cameraRay) {
+    bool hidden = cameraRay && (m.flags & PN_MATERIAL_HIDDEN_EMISSION) != 0u;
+    if (PN_HAS(PN_FEATURE_SKY_PORTALS) && (m.flags & PN_MATERIAL_SKY_PORTAL) != 0u)
+        return environmentRadiance(direction) + (hidden ? vec3(0.0) : m.emission);
+    return hidden ? vec3(0.0) : materialEmission(m, uv);
+}
+
 // One sample of a chosen light, seen from p (shading normal n).
 struct LightSample {
     vec3 wi;        // unit, toward the light
@@ -194,6 +204,10 @@ LightSample sampleChosenLight(LightPick pick, vec3 p, vec3 n, inout uint rng) {
         float cosLight = -dot(tp.normal, ls.wi);
         if (cosLight <= 0.0) return ls;
         ls.radiance = tp.radiance;
+        if (PN_HAS(PN_FEATURE_SKY_PORTALS)) {
+            Material m = materials[triAttribs[r.index].materialId];
+            if ((m.flags & PN_MATERIAL_SKY_PORTAL) != 0u) ls.radiance = emittedRadiance(m, vec2(0.0), ls.wi, false);
+        }
         ls.pdf = pick.pmf / tp.area * dist2 / cosLight;
         ls.target = offsetRayOrigin(tp.position, tp.normal);
     } else if (r.type == PN_LIGHTREF_SPHERE) {

@@ -14,11 +14,13 @@ struct Surface {
 };
 
 #include "lib/sphere_surface.glsl"
+#include "lib/sprite_surface.glsl"
 
 Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     TriVerts tv = triVerts[hit.triangle];
     TriAttribs ta = triAttribs[hit.triangle];
     if (PN_HAS(PN_FEATURE_SPHERES) && (tv.flags & PN_TRI_SPHERE) != 0u) return sphereSurfaceAt(tv, ta, hit.t, o, d);
+    if (PN_HAS(PN_FEATURE_SPRITES) && (tv.flags & PN_TRI_SPRITE) != 0u) return spriteSurfaceAt(tv, ta, hit.t, hit.u, hit.v, o, d);
     Surface s;
     s.position = o + hit.t * d;
     vec3 ng = normalize(cross(tv.e1, tv.e2));

@@ -1,8 +1,10 @@
-// Texture lookups from the texel buffer: bilinear filtering, wrap modes and sRGB decoding done
-// by hand, which works on every Vulkan 1.2 device with no descriptor-indexing features.
+// Texture lookups from the texel buffer: bilinear or nearest filtering, wrap modes, sRGB decoding
+// and animation done by hand, which works on every Vulkan 1.2 device with no descriptor-indexing
+// features.
 #ifndef PN_TEXTURES_GLSL
 #define PN_TEXTURES_GLSL
 
+#include "shared/animation.h"
 #include "shared/color.h"
 
 int wrapTexel(int i, int size, uint mode) {
@@ -22,17 +24,34 @@ vec4 texelAt(TextureInfo info, int x, int y) {
     return c;
 }
 
-// Linear RGBA at uv (v = 0 is the top row, as glTF and our Texture store it).
+// The texture a lookup of texture `index` (described by `info`) shows at frame.time: itself, or
+// for a frame of an animation the cycle's frame on show, this texture's offset in the cycle kept
+// (as Doom animates every frame of a cycle).
+uint animatedTexture(uint index, TextureInfo info) {
+    if (info.frameCount <= 1u) return index;
+    uint step = animationTick(frame.time, info.secondsPerFrame) % info.frameCount;
+    return index - info.frame + (step + info.frame) % info.frameCount;
+}
+
+// Linear RGBA at uv (v = 0 is the top row, as glTF and our Texture store it); `wrap` is the
+// material's sampler word (PN_WRAP_* per axis, PN_SAMPLER_NEAREST).
 vec4 sampleTexture(uint index, vec2 uv, uint wrap) {
     TextureInfo info = textures[index];
+    if (info.frameCount > 1u) info = textures[animatedTexture(index, info)];
     int w = int(info.width), h = int(info.height);
+    uint wrapU = wrap & 0xffu, wrapV = (wrap >> 8) & 0xffu;
+    if ((wrap & PN_SAMPLER_NEAREST) != 0u) {
+        vec2 q = floor(uv * vec2(w, h));
+        if (any(isnan(q)) || any(isinf(q))) q = vec2(0.0);
+        ivec2 i = ivec2(clamp(q, vec2(-1e8), vec2(1e8)));
+        return texelAt(info, wrapTexel(i.x, w, wrapU), wrapTexel(i.y, h, wrapV));
+    }
     vec2 p = uv * vec2(w, h) - 0.5;
     if (any(isnan(p)) || any(isinf(p))) p = vec2(0.0);
     vec2 base = floor(p);
     vec2 f = p - base;
     // Keep the integer range sane for huge uv values before wrapping.
     ivec2 i0 = ivec2(clamp(base, vec2(-1e8), vec2(1e8)));
-    uint wrapU = wrap & 0xffu, wrapV = wrap >> 8;
     int x0 = wrapTexel(i0.x, w, wrapU), x1 = wrapTexel(i0.x + 1, w, wrapU);
     int y0 = wrapTexel(i0.y, h, wrapV), y1 = wrapTexel(i0.y + 1, h, wrapV);
     return mix(mix(texelAt(info, x0, y0), texelAt(info, x1, y0), f.x),

@@ -63,7 +63,9 @@ using namespace penumbra::gpu_types;
 #define PN_FEATURE_TRANSMISSION 32u // glass
 #define PN_FEATURE_ENV_MAP 64u      // an environment map (else the constant background)
 #define PN_FEATURE_BRUTE_FORCE 128u // --accel brute
-#define PN_FEATURE_ALL 0xffu     // every feature above
+#define PN_FEATURE_SPRITES 256u     // sprites (PN_TRI_SPRITE) among the primitives
+#define PN_FEATURE_SKY_PORTALS 512u // materials that show the environment (PN_MATERIAL_SKY_PORTAL)
+#define PN_FEATURE_ALL 0x3ffu    // every feature above
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic
@@ -83,6 +85,9 @@ using namespace penumbra::gpu_types;
 #define PN_MATERIAL_EMISSIVE 1u
 #define PN_MATERIAL_ALPHA_TESTED 2u  // texels with alpha below alphaCutoff are holes
 #define PN_MATERIAL_ONE_SIDED 4u     // the back face reflects nothing (glTF doubleSided = false)
+// Shows the environment seen through it plus its emission (a Doom sky ceiling and its fill light).
+#define PN_MATERIAL_SKY_PORTAL 8u
+#define PN_MATERIAL_HIDDEN_EMISSION 16u  // camera rays do not see `emission` (Doom's sector light)
 
 // Perceptual roughness below this is shaded as perfectly smooth (delta lobes); at or above it the
 // GGX lobes use alpha = roughness^2 (so alpha >= PN_SMOOTH_ROUGHNESS^2, which keeps D finite).
@@ -97,12 +102,19 @@ using namespace penumbra::gpu_types;
 // The slot holds an analytic sphere, not a triangle: v0 = centre, e1.x = radius (e2 unused).
 // Spheres share the triangles' arrays so a leaf stays one contiguous primitive range.
 #define PN_TRI_SPHERE 2u
+// The slot holds a sprite (lib/sprite.glsl): an upright card through the vertical axis at v0 that
+// turns to face each ray's origin. e1 = (left, right, bottom), e2.x = top: its extent around v0
+// in metres (x along the card, to the viewer's right); e2.y = the direction the thing faces, in
+// radians counter-clockwise (seen from above) from +x toward -z; e2.z = its views (1 or 8).
+#define PN_TRI_SPRITE 4u
 
-// ---- texture flags and wrap modes ----
+// ---- texture flags and sampler words (a material's *Wrap fields: PN_WRAP_* for u,
+// | PN_WRAP_* for v << 8, | PN_SAMPLER_NEAREST) ----
 #define PN_TEXTURE_SRGB 1u
 #define PN_WRAP_REPEAT 0u
 #define PN_WRAP_CLAMP 1u
 #define PN_WRAP_MIRROR 2u
+#define PN_SAMPLER_NEAREST 0x10000u  // the nearest texel instead of bilinear filtering
 #define PN_NO_TEXTURE 0xffffffffu
 
 // ---- punctual light types ----
@@ -174,7 +186,7 @@ PN_STRUCT(Material) {
     float transmission;   // [0, 1]
     float specular;       // [0, 1]: strength of the dielectric coat over the diffuse base (0: pure Lambert)
     uint albedoTexture;   // PN_NO_TEXTURE or an index into the texture table
-    uint albedoWrap;      // PN_WRAP_* for u | (PN_WRAP_* for v) << 8
+    uint albedoWrap;      // sampler word: PN_WRAP_* for u | (PN_WRAP_* for v) << 8 | PN_SAMPLER_NEAREST
     uint metallicRoughnessTexture;  // linear; G = roughness, B = metallic (glTF)
     uint metallicRoughnessWrap;
     uint normalTexture;   // tangent-space normal map, linear
@@ -183,12 +195,19 @@ PN_STRUCT(Material) {
     uint emissionWrap;
 };
 
-// Where one texture's texels are in the texel buffer, 16 bytes.
+// Where one texture's texels are in the texel buffer, and its animation, 32 bytes. A texture of
+// frameCount > 1 is frame `frame` of a cycle whose frames are the textures [index - frame,
+// index - frame + frameCount); a lookup of it shows frame (floor(time / secondsPerFrame) + frame)
+// mod frameCount of that cycle.
 PN_STRUCT(TextureInfo) {
     uint firstTexel;
     uint width;
     uint height;
     uint flags;  // PN_TEXTURE_*
+    uint frameCount;
+    uint frame;
+    float secondsPerFrame;
+    uint pad0;
 };
 
 // One texel of the environment's alias table, 16 bytes. The table has one entry per texel of the
@@ -294,7 +313,7 @@ PN_STRUCT(FrameUniforms) {
     uint misMode;          // PN_MIS_*: which estimators the integrator combines (tests compare them)
     uint debugMode;        // viewer debug views; 0: the image
     uint pad0;
-    uint pad1;
+    float time;            // seconds: the moment animated textures show
     // The unified light sampler.
     uint topLightCount;    // LightRef entries picked directly at every shading point
     float envLuminance;    // mean luminance of the environment over directions (intensity 1)
@@ -314,6 +333,8 @@ PN_STRUCT(FrameUniforms) {
 #define PN_DEBUG_HEAT_NODES 6u   // BVH nodes visited by the primary ray
 #define PN_DEBUG_HEAT_TRIS 7u    // triangles tested by the primary ray
 #define PN_DEBUG_BVH_BOXES 8u    // the image with the BVH's boxes at one depth outlined (boxes.comp)
+#define PN_DEBUG_LEAF_DEPTH 9u   // depth of the BVH leaf holding the primary ray's hit (root: 0)
+#define PN_DEBUG_LEAF_TRIS 10u   // primitives in the BVH leaf holding the primary ray's hit
 #define PN_MAX_OVERLAY_BOXES 4096u  // boxes the overlay draws at most (each pixel tests every one)
 // The debug view's small window (picture-in-picture): 1/PN_DEBUG_INSET_DIVISOR of the image's
 // width and height, PN_DEBUG_INSET_MARGIN pixels from its bottom right corner, in a one-pixel frame.
@@ -384,12 +405,13 @@ PN_STRUCT(ViewerUniforms) {
     uint pad0;
 };
 
-// Largest traversal counts of a heat-map frame (for the legend), 16 bytes.
+// Largest counts of a heat-map frame (for the legend), 16 bytes. heatmap.comp writes a pixel's
+// own counts as a vec4 (nodes, triangles, leaf depth, leaf primitives; the last two 0 on a miss).
 PN_STRUCT(HeatCounters) {
     uint maxNodes;
     uint maxTris;
-    uint pad0;
-    uint pad1;
+    uint maxLeafDepth;
+    uint maxLeafTris;
 };
 
 // Per-dispatch constants, 16 bytes.
@@ -466,7 +488,8 @@ static_assert(sizeof(Material) == 96 && offsetof(Material, flags) == 12 &&
               offsetof(Material, albedoTexture) == 64 && offsetof(Material, albedoWrap) == 68 &&
               offsetof(Material, metallicRoughnessTexture) == 72 && offsetof(Material, normalTexture) == 80 &&
               offsetof(Material, emissionTexture) == 88 && offsetof(Material, emissionWrap) == 92);
-static_assert(sizeof(TextureInfo) == 16 && offsetof(TextureInfo, flags) == 12);
+static_assert(sizeof(TextureInfo) == 32 && offsetof(TextureInfo, flags) == 12 && offsetof(TextureInfo, frameCount) == 16 &&
+              offsetof(TextureInfo, frame) == 20 && offsetof(TextureInfo, secondsPerFrame) == 24);
 static_assert(sizeof(LightRef) == 16 && offsetof(LightRef, index) == 4 && offsetof(LightRef, trailHi) == 12);
 static_assert(sizeof(LightNode) == 64 && offsetof(LightNode, phi) == 12 && offsetof(LightNode, boundsMax) == 16 &&
               offsetof(LightNode, cosThetaO) == 28 && offsetof(LightNode, axis) == 32 &&
@@ -483,7 +506,8 @@ static_assert(sizeof(FrameUniforms) == 176 && offsetof(FrameUniforms, topLightCo
               offsetof(FrameUniforms, background) == 96 && offsetof(FrameUniforms, punctualCount) == 108 &&
               offsetof(FrameUniforms, lensRadius) == 112 && offsetof(FrameUniforms, sphereLightCount) == 124 &&
               offsetof(FrameUniforms, envWidth) == 128 && offsetof(FrameUniforms, envHeight) == 140 &&
-              offsetof(FrameUniforms, misMode) == 144 && offsetof(FrameUniforms, debugMode) == 148);
+              offsetof(FrameUniforms, misMode) == 144 && offsetof(FrameUniforms, debugMode) == 148 &&
+              offsetof(FrameUniforms, time) == 156);
 static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, type) == 12 &&
               offsetof(PunctualLight, range) == 28 && offsetof(PunctualLight, direction) == 32 &&
               offsetof(PunctualLight, cosOuter) == 44 &&
@@ -518,7 +542,8 @@ static_assert(sizeof(ViewerUniforms) == 128 && offsetof(ViewerUniforms, prevTanH
               offsetof(ViewerUniforms, sigmaLuminance) == 96 && offsetof(ViewerUniforms, heatMax) == 108 &&
               offsetof(ViewerUniforms, denoise) == 112 && offsetof(ViewerUniforms, debugOpacity) == 116 &&
               offsetof(ViewerUniforms, debugInset) == 120);
-static_assert(sizeof(HeatCounters) == 16);
+static_assert(sizeof(HeatCounters) == 16 && offsetof(HeatCounters, maxLeafDepth) == 8 &&
+              offsetof(HeatCounters, maxLeafTris) == 12);
 }  // namespace penumbra::shader
 #endif
 #endif

@@ -21,6 +21,7 @@ struct BenchArgs {
     int repeats = 20;
     bool json = false;
     EnvironmentSpec env;
+    WadOptions wad;
     CameraOverrides camera;
     // --viewer: the viewer's whole frame
     bool viewer = false;
@@ -118,7 +119,7 @@ void runViewerBenchCommand(const BenchArgs& args) {
         o.reference = readExr(args.reference);
         o.budgetMs = args.budgetMs;
     }
-    Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env);
+    Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env, args.wad);
     const bool torch = scene.torch.enabled && scene.torch.intensity > 0;
     o.view.torch = torch;
     o.view.torchColor = scene.torch.color;
@@ -146,7 +147,7 @@ void runBench(const BenchArgs& args) {
     settings.samplesPerPixel = 1;
     settings.accel = parseAccel(args.accel);
     validateSettings(settings);
-    Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env);
+    Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env, args.wad);
     auto ctx = openDevice(args.device);
     Renderer renderer(*ctx, scene, settings);
     RayBenchResult r = runRayBench(*ctx, renderer, args.repeats);
@@ -208,6 +209,7 @@ void registerBench(CLI::App& app, Action& action) {
     addDeviceOption(*cmd, args->device);
     addBvhCacheOption(*cmd);
     addEnvironmentOptions(*cmd, args->env);
+    addWadOptions(*cmd, args->wad);
     addCameraOptions(*cmd, args->camera);
     cmd->callback([args, &action] { action = [args] { runBench(*args); }; });
 }

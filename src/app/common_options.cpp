@@ -57,6 +57,16 @@ void addEnvironmentOptions(CLI::App& cmd, EnvironmentSpec& env) {
     cmd.add_option("--env-rotation", env.rotationDegrees, "turns the environment about +y, in degrees");
 }
 
+void addWadOptions(CLI::App& cmd, WadOptions& wad) {
+    cmd.add_option("--wad-glow", wad.glow, "Doom levels: scales the light of glowing textures and flats (0: none glow)");
+    cmd.add_option("--wad-sector-light", wad.sectorLight,
+                   "Doom levels: scales the light that sector light levels give their rooms (0: none)");
+    cmd.add_option_function<std::string>(
+           "--wad-filter", [&wad](const std::string& name) { wad.filter = name == "bilinear" ? Filter::Linear : Filter::Nearest; },
+           "Doom levels: texture lookup, nearest (default: Doom's crisp texels) or bilinear")
+        ->check(CLI::IsMember({"nearest", "bilinear"}));
+}
+
 Vec3 parseVec3(const std::string& text, const std::string& flag) {
     Vec3 v;
     std::istringstream in(text);
@@ -68,11 +78,12 @@ Vec3 parseVec3(const std::string& text, const std::string& flag) {
 }
 
 Scene loadScene(const std::string& nameOrPath, const std::string& map, const CameraOverrides& o,
-                SceneFileSettings* fileSettings, const EnvironmentSpec& env) {
+                SceneFileSettings* fileSettings, const EnvironmentSpec& env, const WadOptions& wad) {
+    validateWadOptions(wad);
     const std::filesystem::path path(nameOrPath);
     Scene scene = (path.extension() == ".json" && !isPreset(nameOrPath))
                       ? loadSceneJson(path, fileSettings)
-                      : loadSceneByName(nameOrPath, LoadOptions{map});
+                      : loadSceneByName(nameOrPath, LoadOptions{map, wad});
     if (!o.position.empty()) scene.camera.position = parseVec3(o.position, "--camera");
     if (!o.lookAt.empty()) scene.camera.lookAt = parseVec3(o.lookAt, "--look-at");
     if (!o.up.empty()) scene.camera.up = parseVec3(o.up, "--up");

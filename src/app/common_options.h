@@ -12,6 +12,7 @@
 #include "render/settings.h"
 #include "scene/io/env_spec.h"
 #include "scene/io/scene_json.h"
+#include "scene/io/wad/wad_loader.h"
 #include "scene/scene.h"
 
 namespace penumbra::app {
@@ -39,6 +40,8 @@ void configureBvhCache();
 void addCameraOptions(CLI::App& cmd, CameraOverrides& overrides);
 // --env FILE|sky, --env-intensity X, --env-rotation DEG.
 void addEnvironmentOptions(CLI::App& cmd, EnvironmentSpec& env);
+// --wad-glow SCALE, --wad-sector-light SCALE, --wad-filter nearest|bilinear (Doom levels).
+void addWadOptions(CLI::App& cmd, WadOptions& wad);
 
 // Parses "x,y,z"; UsageError naming the flag on anything else.
 Vec3 parseVec3(const std::string& text, const std::string& flag);
@@ -47,7 +50,7 @@ Vec3 parseVec3(const std::string& text, const std::string& flag);
 // applied and checked, the environment options applied, and the torch attached. A .json scene
 // file's render settings go to *fileSettings when given.
 Scene loadScene(const std::string& nameOrPath, const std::string& map, const CameraOverrides& overrides,
-                SceneFileSettings* fileSettings = nullptr, const EnvironmentSpec& env = {});
+                SceneFileSettings* fileSettings = nullptr, const EnvironmentSpec& env = {}, const WadOptions& wad = {});
 
 // The Vulkan context, or an Error saying why there is none and how to get one.
 std::unique_ptr<gpu::Context> openDevice(const std::string& selector);

@@ -16,11 +16,12 @@ struct InfoArgs {
     std::string map;
     std::string device;
     EnvironmentSpec env;
+    WadOptions wad;
 };
 
-void printScene(const std::string& name, const std::string& map, const EnvironmentSpec& env) {
+void printScene(const std::string& name, const std::string& map, const EnvironmentSpec& env, const WadOptions& wad) {
     const auto start = std::chrono::steady_clock::now();
-    Scene scene = loadScene(name, map, {}, nullptr, env);
+    Scene scene = loadScene(name, map, {}, nullptr, env, wad);
     const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const std::size_t cpuBytes = sceneBytes(scene);
     SceneArrays arrays = buildSceneArrays(scene);
@@ -34,8 +35,9 @@ void printScene(const std::string& name, const std::string& map, const Environme
     std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, %s in %.2f ms\n", s.nodes,
                 s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.bvhFromCache ? "read from the cache" : "built",
                 arrays.buildMilliseconds);
-    std::printf("  %zu textures, %zu punctual lights, %u spheres (in the triangle count), %zu sphere lights\n",
-                scene.textures.size(), arrays.punctual.size(), arrays.sphereCount, arrays.sphereLights.size());
+    std::printf("  %zu textures, %zu punctual lights, %u spheres and %zu sprites (in the triangle count), %zu sphere lights\n",
+                scene.textures.size(), arrays.punctual.size(), arrays.sphereCount, scene.sprites.size(),
+                arrays.sphereLights.size());
     if (scene.environment.map)
         std::printf("  environment %s: %dx%d, intensity %g, rotation %g deg, sampling table built in %.2f ms%s\n",
                     scene.environment.map->name.c_str(), scene.environment.map->width, scene.environment.map->height,
@@ -64,7 +66,7 @@ void runInfo(const InfoArgs& args) {
                     l.maxComputeWorkGroupInvocations, l.maxStorageBufferRange,
                     ctx->timestampsSupported() ? "yes" : "no", double(l.timestampPeriod));
     }
-    if (!args.scene.empty()) printScene(args.scene, args.map, args.env);
+    if (!args.scene.empty()) printScene(args.scene, args.map, args.env, args.wad);
 }
 
 }  // namespace
@@ -77,6 +79,7 @@ void registerInfo(CLI::App& app, Action& action) {
     addDeviceOption(*cmd, args->device);
     addBvhCacheOption(*cmd);
     addEnvironmentOptions(*cmd, args->env);
+    addWadOptions(*cmd, args->wad);
     cmd->callback([args, &action] { action = [args] { runInfo(*args); }; });
 }
 

@@ -27,6 +27,7 @@ struct RenderArgs {
     bool quiet = false;
     CameraOverrides camera;
     EnvironmentSpec env;
+    WadOptions wad;
     RenderSettings settings;
 };
 
@@ -36,7 +37,7 @@ void runRender(const RenderArgs& args, const CLI::App& cmd) {
     settings.mis = parseMisMode(args.mis);
     validateSettings(settings);
     SceneFileSettings fileSettings;
-    Scene scene = loadScene(args.scene, args.map, args.camera, &fileSettings, args.env);
+    Scene scene = loadScene(args.scene, args.map, args.camera, &fileSettings, args.env, args.wad);
     // A scene file's render settings apply unless the command line gave the same flag.
     auto fromFile = [&](const char* flag, const auto& value, auto& target) {
         if (value && cmd.count(flag) == 0) target = *value;
@@ -101,11 +102,13 @@ void registerRender(CLI::App& app, Action& action) {
     cmd->add_option("--mis", args->mis,
                     "direct light estimators: both (MIS, default), light (light sampling only) or bsdf (BSDF sampling only)");
     cmd->add_option("--exposure", args->exposure, "exposure in stops for PNG output");
+    cmd->add_option("--time", args->settings.time, "seconds: the moment animated textures show (Doom's liquids; default 0)");
     cmd->add_flag("-q,--quiet", args->quiet, "no progress bar or summary");
     addDeviceOption(*cmd, args->device);
     addBvhCacheOption(*cmd);
     addCameraOptions(*cmd, args->camera);
     addEnvironmentOptions(*cmd, args->env);
+    addWadOptions(*cmd, args->wad);
     cmd->callback([args, cmd, &action] { action = [args, cmd] { runRender(*args, *cmd); }; });
 }
 

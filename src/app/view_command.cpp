@@ -20,6 +20,7 @@ struct ViewArgs {
     bool noVsync = false;
     std::string debug = "none";
     EnvironmentSpec env;
+    WadOptions wad;
     std::string script;
     std::optional<double> fixedDt;
 };
@@ -42,7 +43,7 @@ void runView(ViewArgs args) {
     if (!args.script.empty()) args.options.script = viewer::loadInputScript(args.script);
     args.options.vsync = !args.noVsync;
     args.options.debug = viewer::parseDebugView(args.debug);
-    Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env);
+    Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env, args.wad);
     viewer::runViewer(std::move(scene), args.options);
 }
 
@@ -66,11 +67,12 @@ void registerView(CLI::App& app, Action& action) {
                   "on exit, print 'camera X,Y,Z direction DX,DY,DZ' (scene units)");
     cmd->add_flag("--fly", args->options.fly, "start in free flight on Doom levels (F toggles walking)");
     cmd->add_flag("--denoise", args->options.denoise, "start with the a-trous denoiser on");
-    cmd->add_option("--debug", args->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles, boxes");
+    cmd->add_option("--debug", args->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles, boxes, leaf-depth, leaf-triangles");
     addDeviceOption(*cmd, args->options.device);
     addBvhCacheOption(*cmd);
     addCameraOptions(*cmd, args->camera);
     addEnvironmentOptions(*cmd, args->env);
+    addWadOptions(*cmd, args->wad);
     cmd->callback([args, &action] { action = [args] { runView(*args); }; });
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "bvh/sphere.h"
+#include "bvh/sprite.h"
 #include "core/error.h"
 
 namespace penumbra::bvh {
@@ -132,6 +133,7 @@ bool intersectPrimitive(const shader::TriVerts& prim, const Ray& ray, float tMax
         u = v = 0.0f;
         return true;
     }
+    if (isSprite(prim)) return false;  // see bvh/sprite.h
     return intersectTriangle(prim, ray, tMax, t, u, v);
 }
 

@@ -32,7 +32,8 @@ inline constexpr float kSlabExitScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f 
 bool intersectTriangle(const shader::TriVerts& tri, const Ray& ray, float tMax, float& t, float& u,
                        float& v);
 
-// A triangle or (PN_TRI_SPHERE) a sphere slot; u and v are 0 for spheres.
+// A triangle or (PN_TRI_SPHERE) a sphere slot; u and v are 0 for spheres. Sprite slots are never
+// hit (bvh/sprite.h).
 bool intersectPrimitive(const shader::TriVerts& prim, const Ray& ray, float tMax, float& t, float& u,
                         float& v);
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "shared/color.h"
+
 namespace penumbra {
 
 float reinhard(float x) {
@@ -19,11 +21,7 @@ float acesFilmic(float x) {
     return y < 1 ? y : 1;
 }
 
-float srgbOetf(float x) {
-    // IEC 61966-2-1: the linear toe and the power segment meet at 0.0031308.
-    if (x <= 0.0031308f) return 12.92f * x;
-    return 1.055f * std::pow(x, 1 / 2.4f) - 0.055f;
-}
+float srgbOetf(float x) { return shader::linearToSrgb(x); }
 
 std::uint8_t toSrgb8(float linear) {
     float v = linear > 0 ? (linear < 1 ? linear : 1) : 0;  // also sends NaN to 0

@@ -38,6 +38,7 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.envHeight = 0;
     f.envIntensity = 1.0f;
     f.lightPickUniform = settings.uniformLightPick ? 1u : 0u;
+    f.time = settings.time;
     f.misMode = settings.mis == MisMode::LightOnly  ? PN_MIS_LIGHT_ONLY
                 : settings.mis == MisMode::BsdfOnly ? PN_MIS_BSDF_ONLY
                                                     : PN_MIS_BOTH;

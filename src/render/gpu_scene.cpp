@@ -8,6 +8,7 @@
 
 #include "bvh/cache.h"
 #include "bvh/sphere.h"
+#include "bvh/sprite.h"
 #include "bvh/triangle.h"
 #include "core/error.h"
 #include "render/env_table.h"
@@ -38,7 +39,18 @@ std::uint32_t wrapCode(Wrap w) {
 
 void packTexture(const TextureRef& ref, std::uint32_t& index, std::uint32_t& wrap) {
     index = ref.present() ? std::uint32_t(ref.texture) : PN_NO_TEXTURE;
-    wrap = wrapCode(ref.wrapU) | (wrapCode(ref.wrapV) << 8);
+    wrap = wrapCode(ref.wrapU) | (wrapCode(ref.wrapV) << 8) | (ref.filter == Filter::Nearest ? PN_SAMPLER_NEAREST : 0u);
+}
+
+// A sprite's slot (layout at PN_TRI_SPRITE in shared/types.h).
+shader::TriVerts toSpriteVerts(const Sprite& s) {
+    shader::TriVerts out{};
+    out.v0 = s.position;
+    out.flags = PN_TRI_SPRITE;
+    out.e1 = Vec3{s.left, s.right, s.bottom};
+    // The facing as Doom measures angles: counter-clockwise (seen from above) from +x toward -z.
+    out.e2 = Vec3{s.top, std::atan2(-s.facing.z, s.facing.x), float(s.rotations)};
+    return out;
 }
 
 }  // namespace
@@ -49,6 +61,8 @@ shader::Material toGpuMaterial(const Material& m) {
     gm.emission = m.emission;
     gm.flags = m.isEmissive() ? PN_MATERIAL_EMISSIVE : 0u;
     if (!m.twoSided) gm.flags |= PN_MATERIAL_ONE_SIDED;
+    if (m.skyPortal) gm.flags |= PN_MATERIAL_SKY_PORTAL;
+    if (m.emissionHiddenFromCamera) gm.flags |= PN_MATERIAL_HIDDEN_EMISSION;
     gm.alphaCutoff = m.alphaCutoff;
     if (m.alphaCutoff > 0 && m.albedoTexture.present()) gm.flags |= PN_MATERIAL_ALPHA_TESTED;
     gm.metallic = std::clamp(m.metallic, 0.0f, 1.0f);
@@ -130,7 +144,8 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
     const RenderSpheres spheres = renderSpheres(scene);
     std::vector<Material> materials = scene.materials;
     materials.insert(materials.end(), spheres.extraMaterials.begin(), spheres.extraMaterials.end());
-    const std::size_t primCount = tris.size() + spheres.spheres.size();
+    const std::size_t firstSprite = tris.size() + spheres.spheres.size();
+    const std::size_t primCount = firstSprite + scene.sprites.size();
     if (primCount >= PN_NO_HIT) throw Error("scene '" + scene.name + "' has too many triangles");
 
     std::vector<bvh::Triangle> geometry(tris.size());
@@ -138,11 +153,13 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
 
     SceneArrays out;
     auto start = std::chrono::steady_clock::now();
-    // Spheres follow the triangles in the primitive numbering the builder sees. The build goes
-    // through the BVH cache, which the command line turns on (bvh/cache.h).
-    std::vector<Aabb> sphereBounds;
-    for (const Sphere& s : spheres.spheres) sphereBounds.push_back(bvh::sphereBounds(s.center, s.radius));
-    bvh::CachedBuild built = bvh::buildCached(geometry, sphereBounds, options);
+    // Spheres, then sprites, follow the triangles in the primitive numbering the builder sees.
+    // The build goes through the BVH cache, which the command line turns on (bvh/cache.h).
+    std::vector<Aabb> extraBounds;
+    extraBounds.reserve(spheres.spheres.size() + scene.sprites.size());
+    for (const Sphere& s : spheres.spheres) extraBounds.push_back(bvh::sphereBounds(s.center, s.radius));
+    for (const Sprite& s : scene.sprites) extraBounds.push_back(spriteBounds(s));
+    bvh::CachedBuild built = bvh::buildCached(geometry, extraBounds, options);
     bvh::Bvh tree = std::move(built.bvh);
     out.bvhFromCache = built.fromCache;
     out.buildMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -159,7 +176,16 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
     std::vector<float> textureLuminance(scene.textures.size(), -1.0f);  // emission textures' means, on demand
     std::vector<EmissiveTriangle> emissive;
     std::vector<std::uint32_t> sphereSlots(spheres.spheres.size());
+    const Vec3 skyPortal = skyPortalRadiance(scene.environment, scene.background);
     for (std::size_t i = 0; i < tree.primOrder.size(); ++i) {
+        if (tree.primOrder[i] >= firstSprite) {
+            const Sprite& sprite = scene.sprites[tree.primOrder[i] - firstSprite];
+            out.triVerts[i] = toSpriteVerts(sprite);
+            out.triAttribs[i] = {};
+            out.triAttribs[i].materialId = sprite.material;
+            out.triAttribs[i].area = (sprite.right - sprite.left) * (sprite.top - sprite.bottom);
+            continue;  // not an object the viewer edits, and never a sampled light
+        }
         if (tree.primOrder[i] >= tris.size()) {
             const std::size_t k = tree.primOrder[i] - tris.size();
             const Sphere& sphere = spheres.spheres[k];
@@ -187,14 +213,16 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
         a.area = 0.5f * length(cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
         const Material& m = scene.materials[t.material];
         if (m.isEmissive() && a.area > 0) {
-            // Emission textures scale the light by their mean: the tree's power estimate.
+            // Emission textures scale the light by their mean (over an animation's frames): the
+            // tree's power estimate. A sky portal passes on the environment's mean from above.
             float texture = 1.0f;
             if (m.emissionTexture.present()) {
                 float& mean = textureLuminance[std::size_t(m.emissionTexture.texture)];
-                if (mean < 0) mean = meanLuminance(scene.textures[std::size_t(m.emissionTexture.texture)]);
+                if (mean < 0) mean = meanLuminanceOverFrames(scene.textures, std::size_t(m.emissionTexture.texture));
                 texture = mean;
             }
-            emissive.push_back({static_cast<std::uint32_t>(i), {t.p[0], t.p[1], t.p[2]}, luminance(m.emission) * texture});
+            const float radiance = m.skyPortal ? luminance(skyPortal + m.emission) : luminance(m.emission) * texture;
+            emissive.push_back({static_cast<std::uint32_t>(i), {t.p[0], t.p[1], t.p[2]}, radiance});
         }
     }
     std::vector<bool> punctualMoves;
@@ -207,8 +235,15 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
         const std::size_t texels = std::size_t(t.width) * std::size_t(t.height);
         if (out.texels.size() + texels > std::size_t(UINT32_MAX))
             throw Error("scene '" + scene.name + "' has more texture data than fits in one buffer (4 Gi texels)");
-        out.textures.push_back({static_cast<std::uint32_t>(out.texels.size()), std::uint32_t(t.width),
-                                std::uint32_t(t.height), t.srgb ? PN_TEXTURE_SRGB : 0u});
+        shader::TextureInfo info{};
+        info.firstTexel = static_cast<std::uint32_t>(out.texels.size());
+        info.width = std::uint32_t(t.width);
+        info.height = std::uint32_t(t.height);
+        info.flags = t.srgb ? PN_TEXTURE_SRGB : 0u;
+        info.frameCount = std::uint32_t(std::max(t.animation.frames, 1));
+        info.frame = std::uint32_t(std::max(t.animation.frame, 0));
+        info.secondsPerFrame = t.animation.secondsPerFrame;
+        out.textures.push_back(info);
         const std::size_t first = out.texels.size();
         out.texels.resize(first + texels);
         std::memcpy(out.texels.data() + first, t.rgba.data(), texels * 4);
@@ -222,7 +257,8 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
     for (const Material& m : materials) out.materials.push_back(toGpuMaterial(m));
     // Traversal checks alpha only where the flag says so, keeping the common path cheap.
     for (std::size_t i = 0; i < out.triVerts.size(); ++i)
-        if (!bvh::isSphere(out.triVerts[i]) && out.materials[out.triAttribs[i].materialId].flags & PN_MATERIAL_ALPHA_TESTED)
+        if (!bvh::isSphere(out.triVerts[i]) && !bvh::isSprite(out.triVerts[i]) &&
+            out.materials[out.triAttribs[i].materialId].flags & PN_MATERIAL_ALPHA_TESTED)
             out.triVerts[i].flags |= PN_TRI_ALPHA_TESTED;
     return out;
 }

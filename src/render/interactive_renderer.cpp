@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <span>
 #include <utility>
 
 #include "bvh/depth_boxes.h"
@@ -10,6 +11,7 @@
 #include "render/frame_uniforms.h"
 #include "render/kernel_features.h"
 #include "render/passes/gbuffer_pass.h"
+#include "shared/animation.h"
 
 namespace penumbra {
 namespace {
@@ -21,6 +23,29 @@ bool sameCamera(const shader::FrameUniforms& a, const shader::FrameUniforms& b) 
     auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
     return same(a.cameraPosition, b.cameraPosition) && same(a.cameraForward, b.cameraForward) &&
            same(a.cameraUp, b.cameraUp) && a.tanHalfFovY == b.tanHalfFovY && a.aspect == b.aspect;
+}
+
+bool animationTicked(std::span<const shader::TextureInfo> textures, float before, float now) {
+    return std::any_of(textures.begin(), textures.end(), [&](const shader::TextureInfo& t) {
+        return t.frameCount > 1 &&
+               shader::animationTick(before, t.secondsPerFrame) != shader::animationTick(now, t.secondsPerFrame);
+    });
+}
+
+// Views drawn from the heat-map pass's per-pixel counts.
+bool isHeatView(DebugView v) {
+    return v == DebugView::HeatNodes || v == DebugView::HeatTriangles || v == DebugView::LeafDepth ||
+           v == DebugView::LeafTriangles;
+}
+
+// The count a heat view shows as its hottest colour: the largest of the last heat frame.
+std::uint32_t heatScaleMax(DebugView v, const shader::HeatCounters& c) {
+    switch (v) {
+        case DebugView::HeatNodes: return c.maxNodes;
+        case DebugView::HeatTriangles: return c.maxTris;
+        case DebugView::LeafDepth: return c.maxLeafDepth;
+        default: return c.maxLeafTris;
+    }
 }
 
 // Settings whose change makes the running mean mix two different images.
@@ -181,6 +206,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     rs.maxBounces = s.maxBounces;
     rs.rouletteStart = s.rouletteStart;
     rs.seed = seed_;
+    rs.time = s.time;
     Camera lens = camera;
     lens.apertureRadius = s.apertureRadius;
     lens.focusDistance = s.focusDistance;
@@ -191,7 +217,10 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     const bool boxes = s.debug == DebugView::BvhBoxes;
     const DebugView shown = boxes ? DebugView::None : s.debug;
     f.debugMode = std::uint32_t(shown);
-    const bool moved = previousFrame_ && !sameCamera(*previousFrame_, f);
+    // An animated texture that turned to its next frame changed the image: blend history as for a
+    // moving camera. Between its ticks the image holds still and the mean keeps converging.
+    const bool animating = previousFrame_ && animationTicked(arrays_.textures, previousFrame_->time, f.time);
+    const bool moved = previousFrame_ && (!sameCamera(*previousFrame_, f) || animating);
     const shader::FrameUniforms& prev = previousFrame_ ? *previousFrame_ : f;
 
     shader::ViewerUniforms v{};
@@ -214,9 +243,8 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     v.sigmaLuminance = s.sigmaLuminance;
     v.sigmaNormal = s.sigmaNormal;
     v.sigmaDepth = s.sigmaDepth;
-    const bool heat = s.debug == DebugView::HeatNodes || s.debug == DebugView::HeatTriangles;
-    const auto* heatMax = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());
-    v.heatMax = heat ? float(s.debug == DebugView::HeatNodes ? heatMax->maxNodes : heatMax->maxTris)
+    const bool heat = isHeatView(s.debug);
+    v.heatMax = heat ? float(heatScaleMax(s.debug, *static_cast<const shader::HeatCounters*>(heatCounters_.mapped())))
                      : float(frameIndex_ + 1) * float(s.samplesPerFrame);
     v.debugOpacity = std::clamp(s.debugOpacity, 0.0f, 1.0f);
     v.debugInset = s.debugInset ? 1u : 0u;
@@ -302,6 +330,8 @@ void InteractiveRenderer::finishFrame() {
         const auto* heat = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());
         stats_.heatMaxNodes = heat->maxNodes;
         stats_.heatMaxTriangles = heat->maxTris;
+        stats_.heatMaxLeafDepth = heat->maxLeafDepth;
+        stats_.heatMaxLeafTriangles = heat->maxLeafTris;
     }
 }
 

@@ -31,6 +31,7 @@ struct ViewerStats {
     double raysPerSecond = 0;           // last frame's rays over its trace time
     std::uint64_t rays = 0;             // last frame's rays: closest hits and shadow rays
     std::uint32_t heatMaxNodes = 0, heatMaxTriangles = 0;  // last heat-map frame
+    std::uint32_t heatMaxLeafDepth = 0, heatMaxLeafTriangles = 0;
 };
 
 class InteractiveRenderer {
@@ -63,6 +64,8 @@ public:
     const gpu::Buffer& display() const { return display_; }  // uint RGBA8 per pixel
     const gpu::Buffer& history() const { return *historyOut_; }  // HistoryTexel per pixel
     const gpu::Buffer& gbuffer() const { return gbuffer_; }
+    // After a heat view's frame: vec4 per pixel (nodes, triangles, leaf depth, leaf primitives).
+    const gpu::Buffer& heatCounts() const { return filterB_; }
     // The linear image the tonemap pass read last frame (vec4 per pixel, rgb radiance): the
     // denoiser's output, or null when the denoiser did not run.
     const gpu::Buffer* denoised() const { return denoised_; }

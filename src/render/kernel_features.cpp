@@ -10,11 +10,10 @@ std::uint32_t kernelFeatures(const SceneArrays& a, Accel accel) {
     if (generic && *generic && std::strcmp(generic, "0") != 0) return PN_FEATURE_ALL;
     std::uint32_t f = 0;
     if (a.sphereCount > 0) f |= PN_FEATURE_SPHERES;
-    for (const shader::TriVerts& t : a.triVerts)
-        if (t.flags & PN_TRI_ALPHA_TESTED) {
-            f |= PN_FEATURE_ALPHA_TEST;
-            break;
-        }
+    for (const shader::TriVerts& t : a.triVerts) {
+        if (t.flags & PN_TRI_ALPHA_TESTED) f |= PN_FEATURE_ALPHA_TEST;
+        if (t.flags & PN_TRI_SPRITE) f |= PN_FEATURE_SPRITES | PN_FEATURE_TEXTURES;
+    }
     for (const shader::Material& m : a.materials) {
         if (m.albedoTexture != PN_NO_TEXTURE || m.metallicRoughnessTexture != PN_NO_TEXTURE ||
             m.emissionTexture != PN_NO_TEXTURE)
@@ -22,6 +21,7 @@ std::uint32_t kernelFeatures(const SceneArrays& a, Accel accel) {
         if (m.normalTexture != PN_NO_TEXTURE) f |= PN_FEATURE_NORMAL_MAPS;
         if (m.absorption.x > 0 || m.absorption.y > 0 || m.absorption.z > 0) f |= PN_FEATURE_ABSORPTION;
         if (m.transmission > 0) f |= PN_FEATURE_TRANSMISSION;
+        if (m.flags & PN_MATERIAL_SKY_PORTAL) f |= PN_FEATURE_SKY_PORTALS;
     }
     if (a.env.width > 0) f |= PN_FEATURE_ENV_MAP;
     if (accel == Accel::Brute) f |= PN_FEATURE_BRUTE_FORCE;
@@ -34,7 +34,8 @@ std::string kernelFeatureNames(std::uint32_t features) {
         {PN_FEATURE_SPHERES, "spheres"},         {PN_FEATURE_ALPHA_TEST, "alpha-test"},
         {PN_FEATURE_TEXTURES, "textures"},       {PN_FEATURE_NORMAL_MAPS, "normal-maps"},
         {PN_FEATURE_ABSORPTION, "absorption"},   {PN_FEATURE_TRANSMISSION, "transmission"},
-        {PN_FEATURE_ENV_MAP, "environment-map"}, {PN_FEATURE_BRUTE_FORCE, "brute-force"}};
+        {PN_FEATURE_ENV_MAP, "environment-map"}, {PN_FEATURE_BRUTE_FORCE, "brute-force"},
+        {PN_FEATURE_SPRITES, "sprites"},         {PN_FEATURE_SKY_PORTALS, "sky-portals"}};
     std::string out;
     for (auto [bit, name] : kNames)
         if (features & bit) out += (out.empty() ? "" : ",") + std::string(name);

@@ -55,6 +55,16 @@ float meanLuminance(const Texture& t) {
     return float(sum / double(n));
 }
 
+float meanLuminanceOverFrames(const std::vector<Texture>& textures, std::size_t index) {
+    const TextureAnimation& a = textures[index].animation;
+    if (a.frames <= 1 || std::size_t(a.frame) > index || index - std::size_t(a.frame) + std::size_t(a.frames) > textures.size())
+        return meanLuminance(textures[index]);
+    double sum = 0;
+    for (std::size_t k = index - std::size_t(a.frame); k < index - std::size_t(a.frame) + std::size_t(a.frames); ++k)
+        sum += meanLuminance(textures[k]);
+    return float(sum / a.frames);
+}
+
 LightList buildLightList(const LightListInput& in) {
     LightList out;
     // Top level: what cannot be bounded in space (the environment, directional lights) or moves

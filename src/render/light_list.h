@@ -46,6 +46,8 @@ LightBounds punctualBounds(const shader::PunctualLight& light);
 
 // Mean linear luminance of a texture's texels (sRGB decoded when it is colour data).
 float meanLuminance(const Texture& texture);
+// The same for textures[index], averaged over its animation's frames when it has them.
+float meanLuminanceOverFrames(const std::vector<Texture>& textures, std::size_t index);
 
 // The top-level entry that refers to punctual light `index`, if any (the viewer moves the torch).
 std::optional<std::uint32_t> topEntryOfPunctual(std::span<const shader::LightRef> refs, std::uint32_t topCount,

@@ -13,9 +13,12 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
     : ctx_(ctx), settings_(settings), arrays_(buildSceneArrays(scene)), commands_(ctx), timer_(ctx, 1) {
     validateSettings(settings_);
     gpuScene_ = std::make_unique<GpuScene>(ctx, commands_, arrays_);
-    shader::FrameUniforms frame =
-        makeSceneFrameUniforms(scene.camera, scene.background, scene.environment, settings_, *gpuScene_);
-    frameUniforms_ = gpu::Buffer(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryKind::HostVisible);
+    background_ = scene.background;
+    environment_ = Environment{std::nullopt, std::nullopt, scene.environment.intensity, scene.environment.rotationDegrees};
+    frameUniforms_ = gpu::Buffer(ctx, sizeof(shader::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                 gpu::MemoryKind::HostVisible);
+    const shader::FrameUniforms frame =
+        makeSceneFrameUniforms(scene.camera, background_, environment_, settings_, *gpuScene_);
     std::memcpy(frameUniforms_.mapped(), &frame, sizeof(frame));
 
     const VkDeviceSize pixels = VkDeviceSize(settings_.width) * settings_.height;
@@ -72,6 +75,14 @@ void Renderer::render(const std::function<void(std::uint32_t)>& onProgress) {
         batch = perPass > 0 ? std::clamp<std::uint32_t>(std::uint32_t(0.1 / perPass), 1, 32) : 32;
         if (onProgress) onProgress(stats_.samplesPerPixel);
     }
+}
+
+void Renderer::restart(const Camera& camera) {
+    const shader::FrameUniforms frame = makeSceneFrameUniforms(camera, background_, environment_, settings_, *gpuScene_);
+    std::memcpy(frameUniforms_.mapped(), &frame, sizeof(frame));
+    commands_.run([&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0); });
+    passesDone_ = 0;
+    stats_ = {};
 }
 
 std::vector<Vec4> Renderer::accumulation() {

@@ -31,6 +31,9 @@ public:
     // Adds `passes` more passes in one submission; returns its GPU milliseconds (-1 if the device
     // has no timestamps). countRays=false keeps the ray-count atomics out of timed runs.
     double renderPasses(std::uint32_t passes, bool countRays = true);
+    // Drops every sample so far and looks through `camera` from now on: one pipeline for several
+    // views of a scene (compiling it is most of a small render's time).
+    void restart(const Camera& camera);
 
     // Mean radiance per pixel so far (top row first).
     ImageRgb image();
@@ -49,6 +52,8 @@ private:
     SceneArrays arrays_;
     gpu::Commands commands_;
     std::unique_ptr<GpuScene> gpuScene_;
+    Vec3 background_;
+    Environment environment_;  // intensity and rotation only (the map itself is on the GPU)
     gpu::Buffer frameUniforms_;
     gpu::Buffer accumulation_;
     gpu::Buffer counters_;

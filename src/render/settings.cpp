@@ -19,6 +19,7 @@ void validateSettings(const RenderSettings& s) {
         bad("samples per pass must be between 1 and --spp");
     if (s.maxBounces > kMaxBounces)
         bad("--bounces must be at most " + std::to_string(kMaxBounces) + " (got " + std::to_string(s.maxBounces) + ")");
+    if (!(s.time >= 0 && s.time <= kMaxTime)) bad("--time must be a number of seconds between 0 and 1e6");
 }
 
 Accel parseAccel(const std::string& name) {

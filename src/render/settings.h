@@ -25,6 +25,7 @@ struct RenderSettings {
     // Pick every light with the same probability instead of by its estimated contribution: the
     // oracle that tests compare the light sampler with (same mean, more noise).
     bool uniformLightPick = false;
+    float time = 0.0f;  // seconds: the moment animated textures show (render --time)
 };
 
 // Limits that keep absurd requests from allocating unbounded memory or running forever.
@@ -32,6 +33,7 @@ constexpr std::uint32_t kMaxImageSide = 16384;
 constexpr std::uint64_t kMaxPixels = 16384ull * 16384ull / 4;  // 64 Mpixel: 1 GiB accumulation
 constexpr std::uint32_t kMaxSamplesPerPixel = 1u << 20;
 constexpr std::uint32_t kMaxBounces = 1024;
+constexpr float kMaxTime = 1e6f;  // seconds; beyond it float time loses the animation frames
 
 // Throws UsageError naming the bad value and the allowed range.
 void validateSettings(const RenderSettings& settings);

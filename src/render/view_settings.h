@@ -20,6 +20,8 @@ enum class DebugView : std::uint32_t {
     HeatNodes = PN_DEBUG_HEAT_NODES,
     HeatTriangles = PN_DEBUG_HEAT_TRIS,
     BvhBoxes = PN_DEBUG_BVH_BOXES,  // the image, with the BVH's boxes at boxDepth outlined
+    LeafDepth = PN_DEBUG_LEAF_DEPTH,
+    LeafTriangles = PN_DEBUG_LEAF_TRIS,
 };
 
 struct ViewSettings {
@@ -53,6 +55,7 @@ struct ViewSettings {
     Vec3 torchColor{1.0f, 0.85f, 0.6f};
     float torchIntensity = 80.0f;  // candela
     float torchRange = 0.0f;       // 0: unlimited
+    float time = 0.0f;             // seconds: the moment animated textures show (advanced while playing)
 
     bool operator==(const ViewSettings&) const = default;
 };

@@ -47,6 +47,26 @@ std::vector<Light> distantLights(const Environment& env) {
     return out;
 }
 
+Vec3 skyPortalRadiance(const Environment& env, Vec3 background) {
+    if (!env.map || env.map->width <= 0 || env.map->height <= 0) return background * env.intensity;
+    const EnvironmentMap& m = *env.map;
+    // Rows above the horizon: the integral of cos(theta) over a row's band is
+    // (sin^2 theta1 - sin^2 theta0) / 2 per radian of azimuth; over the hemisphere it sums to 1/2.
+    double sum[3] = {0, 0, 0}, weight = 0;
+    for (int y = 0; y < m.height; ++y) {
+        const double t0 = kPi * y / m.height, t1 = std::min(kPi * (y + 1) / m.height, kPi / 2);
+        if (t0 >= kPi / 2) break;
+        const double w = 0.5 * (std::sin(t1) * std::sin(t1) - std::sin(t0) * std::sin(t0)) / m.width;
+        for (int x = 0; x < m.width; ++x) {
+            const Vec3 c = m.radiance[std::size_t(y) * std::size_t(m.width) + std::size_t(x)];
+            for (int k = 0; k < 3; ++k) sum[k] += c[k] * w;
+        }
+        weight += w * m.width;
+    }
+    if (!(weight > 0)) return Vec3{0};
+    return Vec3{float(sum[0] / weight), float(sum[1] / weight), float(sum[2] / weight)} * env.intensity;
+}
+
 void validateEnvironment(const Environment& env) {
     if (!(std::isfinite(env.intensity) && env.intensity >= 0))
         throw Error("environment intensity must be finite and >= 0");

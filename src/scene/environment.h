@@ -23,6 +23,11 @@ Vec3 rotateAboutY(Vec3 v, double radians);
 // Radiance seen along world direction `direction` (nearest texel, as the GPU looks it up).
 Vec3 environmentRadiance(const Environment& env, Vec3 background, Vec3 direction);
 
+// The radiance a horizontal opening that faces down lets through on average, as irradiance / pi:
+// the cosine-weighted mean of the environment over the upper hemisphere (intensity included,
+// rotation irrelevant). What the light BVH counts for a sky portal (Material::skyPortal).
+Vec3 skyPortalRadiance(const Environment& env, Vec3 background);
+
 // The environment's own lights (the sky's sun) in world space, rotated and scaled with it; the
 // renderer adds them to Scene::lights.
 std::vector<Light> distantLights(const Environment& env);

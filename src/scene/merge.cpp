@@ -44,6 +44,17 @@ void appendScene(Scene& into, Scene part, const Affine& transform) {
         s.material += materialBase;
         into.spheres.push_back(s);
     }
+    // Sprites stay upright cards: their axis point moves, their size scales like a sphere's and
+    // their facing turns with the transform's horizontal part.
+    for (Sprite& s : part.sprites) {
+        s.position = transform.point(s.position);
+        for (float* e : {&s.left, &s.right, &s.bottom, &s.top}) *e *= radiusScale;
+        Vec3 facing = transform.vector(s.facing);
+        facing.y = 0;
+        s.facing = dot(facing, facing) > 0 ? normalize(facing) : Vec3{1, 0, 0};
+        s.material += materialBase;
+        into.sprites.push_back(s);
+    }
     for (Light& l : part.lights) {
         l.position = transform.point(l.position);
         l.direction = normalize(transform.vector(l.direction));

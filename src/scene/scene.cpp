@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -21,6 +22,16 @@ Aabb Scene::bounds() const {
         box.grow(s.center - Vec3{s.radius});
         box.grow(s.center + Vec3{s.radius});
     }
+    for (const Sprite& s : sprites) box.grow(spriteBounds(s));
+    return box;
+}
+
+Aabb spriteBounds(const Sprite& s) {
+    // The card turns about its axis, so it sweeps a vertical cylinder.
+    const float r = std::max(std::abs(s.left), std::abs(s.right));
+    Aabb box;
+    box.grow(s.position + Vec3{-r, s.bottom, -r});
+    box.grow(s.position + Vec3{r, s.top, r});
     return box;
 }
 
@@ -31,10 +42,20 @@ void Scene::validate() const {
             throw Error("material '" + mat.name + "' uses texture " + std::to_string(ref.texture) +
                         ", which does not exist");
     };
-    for (const Texture& tex : textures)
+    for (std::size_t i = 0; i < textures.size(); ++i) {
+        const Texture& tex = textures[i];
         if (tex.width <= 0 || tex.height <= 0 ||
             tex.rgba.size() != std::size_t(tex.width) * std::size_t(tex.height) * 4)
             throw Error("texture '" + tex.name + "' has inconsistent size or pixel data");
+        const TextureAnimation& a = tex.animation;
+        if (a.frames == 1 && a.frame == 0) continue;
+        // The shader moves between the cycle's frames by index: they must all exist.
+        if (a.frames < 1 || a.frame < 0 || a.frame >= a.frames || std::size_t(a.frame) > i ||
+            i - std::size_t(a.frame) + std::size_t(a.frames) > textures.size() || !(a.secondsPerFrame > 0) ||
+            !std::isfinite(a.secondsPerFrame))
+            throw Error("texture '" + tex.name + "' is frame " + std::to_string(a.frame) + " of " +
+                        std::to_string(a.frames) + " of an animation whose frames are not all in the scene");
+    }
     for (const Material& mat : materials) {
         for (const TextureRef* ref : {&mat.albedoTexture, &mat.emissionTexture, &mat.normalTexture,
                                       &mat.metallicRoughnessTexture})
@@ -70,6 +91,18 @@ void Scene::validate() const {
         if (s.material >= materials.size())
             throw Error(where + ": material " + std::to_string(s.material) + " does not exist");
     }
+    for (std::size_t i = 0; i < sprites.size(); ++i) {
+        const Sprite& s = sprites[i];
+        const std::string where = "sprite " + std::to_string(i) + " in scene '" + name + "'";
+        const float extents[] = {s.left, s.right, s.bottom, s.top};
+        if (!isFinite(s.position) || !isFinite(s.facing)) throw Error(where + ": position or facing is not finite");
+        for (float e : extents)
+            if (!std::isfinite(e) || std::abs(e) > 1e6f) throw Error(where + ": an extent is not a finite size");
+        if (!(s.left < s.right) || !(s.bottom < s.top)) throw Error(where + ": its card has no area");
+        if (s.rotations != 1 && s.rotations != 8) throw Error(where + ": it must have 1 or 8 views");
+        if (s.material >= materials.size())
+            throw Error(where + ": material " + std::to_string(s.material) + " does not exist");
+    }
     for (const Light& l : lights)
         if (!(l.angularRadius >= 0 && l.angularRadius <= kMaxAngularRadius))
             throw Error("light '" + l.name + "': angular radius must be within [0, 45] degrees");
@@ -92,7 +125,7 @@ void attachTorch(Scene& scene) {
 
 std::size_t sceneBytes(const Scene& scene) {
     std::size_t bytes = sizeof(Scene) + scene.materials.size() * sizeof(Material) + scene.lights.size() * sizeof(Light) +
-                        scene.spheres.size() * sizeof(Sphere);
+                        scene.spheres.size() * sizeof(Sphere) + scene.sprites.size() * sizeof(Sprite);
     for (const Mesh& m : scene.meshes)
         bytes += sizeof(Mesh) + m.positions.capacity() * sizeof(Vec3) + m.normals.capacity() * sizeof(Vec3) +
                  m.uvs.capacity() * sizeof(Vec2) + m.indices.capacity() * sizeof(std::uint32_t);

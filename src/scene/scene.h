@@ -15,6 +15,16 @@
 
 namespace penumbra {
 
+// A texture that is one frame of a cycle (Doom's flowing liquids, fire): the textures
+// [index - frame, index - frame + frames) are the cycle's frames in order, each shown for
+// secondsPerFrame; a material using any of them shows the frame the render's time picks, keeping
+// its offset in the cycle (as Doom animates every frame of a sequence).
+struct TextureAnimation {
+    int frames = 1;  // 1: not animated
+    int frame = 0;   // this texture's place in the cycle, [0, frames)
+    float secondsPerFrame = 0.0f;
+};
+
 // An 8-bit RGBA image, top row first.
 struct Texture {
     std::string name;  // file or lump name, for messages
@@ -22,15 +32,22 @@ struct Texture {
     int height = 0;
     std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
     bool srgb = true;                // colour data (base colour, emission); false for data maps
+    TextureAnimation animation;
 };
 
 enum class Wrap { Repeat, ClampToEdge, MirroredRepeat };
 
-// A material's use of a texture; texture < 0 means none.
+// How texels are looked up between texel centres: bilinear, or the nearest texel (pixel art,
+// Doom; glTF's NEAREST magFilter).
+enum class Filter { Linear, Nearest };
+
+// A material's use of a texture; texture < 0 means none. Wrap and filter are the sampler's, so
+// one image can be used both ways.
 struct TextureRef {
     int texture = -1;
     Wrap wrapU = Wrap::Repeat;
     Wrap wrapV = Wrap::Repeat;
+    Filter filter = Filter::Linear;
 
     bool present() const { return texture >= 0; }
 };
@@ -53,12 +70,19 @@ struct Material {
     float opacity = 1.0f;       // [0, 1] coverage (MTL d, glTF alpha)
     float alphaCutoff = 0.0f;   // > 0: texels with alpha below it are holes (glTF MASK, Doom)
     bool twoSided = true;
+    // A window onto the environment (a Doom sky ceiling): its front face shows the environment
+    // seen through it, plus `emission` (a Doom sector's fill light). It is a light, which is how
+    // light sampling finds the sky.
+    bool skyPortal = false;
+    // Its emission lights other surfaces but camera rays do not see it (Doom's sector light: the
+    // unseen fixtures that light a room); the surface itself looks lit, not glowing.
+    bool emissionHiddenFromCamera = false;
     TextureRef albedoTexture;             // sRGB; alpha is coverage
     TextureRef emissionTexture;           // sRGB, multiplies emission
     TextureRef normalTexture;             // tangent-space normal map, linear
     TextureRef metallicRoughnessTexture;  // linear; G = roughness, B = metallic (glTF)
 
-    bool isEmissive() const { return maxComponent(emission) > 0.0f; }
+    bool isEmissive() const { return maxComponent(emission) > 0.0f || skyPortal; }
 };
 
 enum class LightType { Point, Spot, Directional };
@@ -128,6 +152,19 @@ struct Sphere {
     std::uint32_t material = 0;
 };
 
+// An upright card that turns about the vertical through `position` to face each ray's origin (a
+// billboard: Doom's sprites), alpha tested with its material's base-colour texture. That texture
+// holds `rotations` views side by side (1, or 8 seen from 45-degree steps around the thing); the
+// camera's direction from the thing, relative to `facing`, picks the view, as Doom does.
+struct Sprite {
+    Vec3 position{0};      // on the card's vertical axis; the extents below are relative to it
+    Vec3 facing{1, 0, 0};  // horizontal unit direction the thing faces (view 1 is seen from there)
+    float left = -0.5f, right = 0.5f;  // horizontal extent along the card, metres (viewer's right > 0)
+    float bottom = 0.0f, top = 1.0f;   // vertical extent above position.y, metres
+    std::uint32_t rotations = 1;       // 1 or 8
+    std::uint32_t material = 0;
+};
+
 struct Camera {
     Vec3 position{0, 0, 1};
     Vec3 lookAt{0, 0, 0};
@@ -151,6 +188,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Mesh> meshes;
     std::vector<Sphere> spheres;
+    std::vector<Sprite> sprites;
     std::vector<Texture> textures;
     std::vector<Light> lights;
     Camera camera;
@@ -164,8 +202,8 @@ struct Scene {
     std::optional<walk::WalkMap> walkMap;
 
     std::size_t triangleCount() const;
-    Aabb bounds() const;  // meshes and spheres
-    // Throws Error naming the mesh or sphere and the problem (index out of range, non-finite vertex,
+    Aabb bounds() const;  // meshes, spheres and sprites
+    // Throws Error naming the mesh, sphere, sprite or texture and the problem (index out of range, non-finite vertex,
     // bad material id, ...). Loaders call it before handing a scene on.
     void validate() const;
 };
@@ -177,6 +215,9 @@ struct SceneTriangle {
     Vec2 uv[3];
     std::uint32_t material = 0;
 };
+
+// The box a sprite's card stays inside whichever way it turns.
+Aabb spriteBounds(const Sprite& sprite);
 
 // Adds the torch, when enabled, as a point light at the camera (call after the camera is final).
 void attachTorch(Scene& scene);

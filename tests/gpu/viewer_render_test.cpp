@@ -1,5 +1,10 @@
 // The viewer's frame loop as a whole: with a still camera its running mean is the image
 // `penumbra render` makes with the same samples; debug views show what they claim.
+#include <set>
+#include <utility>
+
+#include "bvh/traverse_cpu.h"
+#include "render/frame_uniforms.h"
 #include "render/interactive_renderer.h"
 #include "render/renderer.h"
 #include "scene/presets/presets.h"
@@ -92,6 +97,70 @@ TEST_F(ViewerRenderTest, HeatMapMaximaAreCountsWithinTheBvh) {
     EXPECT_GE(viewer.stats().heatMaxTriangles, 1u);
     EXPECT_LE(viewer.stats().heatMaxNodes, std::uint32_t(viewer.sceneArrays().nodes.size()));
     EXPECT_LE(viewer.stats().heatMaxTriangles, std::uint32_t(viewer.sceneArrays().triVerts.size()));
+}
+
+// The CPU's answer for a pixel's primary ray: the leaf whose range holds its closest hit, as
+// (depth, primitives); (0, 0) on a miss. Children follow their parents in the node array, so one
+// pass in index order gives every node's depth.
+std::pair<std::uint32_t, std::uint32_t> hitLeaf(const SceneArrays& a, const Ray& ray) {
+    const bvh::Hit hit = bvh::closestHit(a.nodes, a.triVerts, ray);
+    if (hit.triangle == PN_NO_HIT) return {0, 0};
+    std::vector<std::uint32_t> depth(a.nodes.size(), 0);
+    for (std::size_t n = 0; n < a.nodes.size(); ++n) {
+        const shader::BvhNode& node = a.nodes[n];
+        if (node.triCount == 0) {
+            depth[n + 1] = depth[n] + 1;
+            depth[node.firstOrRight] = depth[n] + 1;
+        } else if (hit.triangle >= node.firstOrRight && hit.triangle < node.firstOrRight + node.triCount) {
+            return {depth[n], node.triCount};
+        }
+    }
+    ADD_FAILURE() << "primitive " << hit.triangle << " is in no leaf";
+    return {0, 0};
+}
+
+TEST_F(ViewerRenderTest, LeafViewsShowTheDepthAndSizeOfTheLeafHoldingEachPixelsHit) {
+    Scene scene = makeCornellBox();
+    const std::uint32_t w = 16, h = 12;
+    InteractiveRenderer viewer(*ctx, scene, false);
+    viewer.resize(w, h);
+    ViewSettings vs;
+    vs.debug = DebugView::LeafDepth;
+    viewer.commands().run([&](VkCommandBuffer cmd) { viewer.record(cmd, scene.camera, vs); });
+    viewer.finishFrame();
+    const auto heat = gpu::downloadBuffer<Vec4>(*ctx, viewer.commands(), viewer.heatCounts(), w * h);
+    const SceneArrays& a = viewer.sceneArrays();
+
+    RenderSettings rs;
+    rs.width = w;
+    rs.height = h;
+    const shader::FrameUniforms f = makeFrameUniforms(scene.camera, scene.background, rs, 0, 0, 0);
+    int agree = 0, hits = 0;
+    std::set<std::uint32_t> depths;
+    std::uint32_t deepest = 0, largest = 0;
+    for (std::uint32_t y = 0; y < h; ++y)
+        for (std::uint32_t x = 0; x < w; ++x) {
+            // viewer_common.glsl's viewDirection at the pixel's centre.
+            const float nx = 2.0f * (float(x) + 0.5f) / float(w) - 1.0f, ny = 1.0f - 2.0f * (float(y) + 0.5f) / float(h);
+            const Vec3 d = normalize(f.cameraForward + f.cameraRight * (nx * f.aspect * f.tanHalfFovY) +
+                                     f.cameraUp * (ny * f.tanHalfFovY));
+            const auto [depth, primitives] = hitLeaf(a, Ray{scene.camera.position, d});
+            const Vec4 got = heat[y * w + x];
+            if (got.z == float(depth) && got.w == float(primitives)) ++agree;
+            if (primitives > 0) {
+                ++hits;
+                depths.insert(depth);
+                deepest = std::max(deepest, depth);
+                largest = std::max(largest, primitives);
+            }
+        }
+    // A ray grazing an edge may hit the neighbouring triangle on one side and not the other.
+    EXPECT_GE(agree, int(w * h) - 4);
+    EXPECT_GT(hits, int(w * h) / 2);
+    EXPECT_GE(depths.size(), 2u) << "every hit in leaves of one depth: the test would not see a wrong depth";
+    // The legend's maxima are the frame's.
+    EXPECT_EQ(viewer.stats().heatMaxLeafDepth, deepest);
+    EXPECT_EQ(viewer.stats().heatMaxLeafTriangles, largest);
 }
 
 TEST_F(ViewerRenderTest, TheTorchFollowsTheCameraAndSwitchesOff) {

@@ -62,7 +62,9 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                                         offsetof(Material, metallicRoughnessWrap), offsetof(Material, normalTexture),
                                         offsetof(Material, normalWrap), offsetof(Material, emissionTexture),
                                         offsetof(Material, emissionWrap)});
-        expectMembers(spv, "TextureInfo", {0, offsetof(TextureInfo, width), offsetof(TextureInfo, height), offsetof(TextureInfo, flags)});
+        expectMembers(spv, "TextureInfo", {0, offsetof(TextureInfo, width), offsetof(TextureInfo, height), offsetof(TextureInfo, flags),
+                                           offsetof(TextureInfo, frameCount), offsetof(TextureInfo, frame),
+                                           offsetof(TextureInfo, secondsPerFrame), offsetof(TextureInfo, pad0)});
         expectMembers(spv, "LightRef", {0, offsetof(LightRef, index), offsetof(LightRef, trailLo), offsetof(LightRef, trailHi)});
         expectMembers(spv, "LightNode", {0, offsetof(LightNode, phi), offsetof(LightNode, boundsMax), offsetof(LightNode, cosThetaO),
                                          offsetof(LightNode, axis), offsetof(LightNode, cosThetaE), offsetof(LightNode, childOrLight),
@@ -79,7 +81,7 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, envWidth), offsetof(FrameUniforms, envIntensity),
                        offsetof(FrameUniforms, envRotation), offsetof(FrameUniforms, envHeight),
                        offsetof(FrameUniforms, misMode), offsetof(FrameUniforms, debugMode),
-                       offsetof(FrameUniforms, pad0), offsetof(FrameUniforms, pad1),
+                       offsetof(FrameUniforms, pad0), offsetof(FrameUniforms, time),
                        offsetof(FrameUniforms, topLightCount), offsetof(FrameUniforms, envLuminance),
                        offsetof(FrameUniforms, lightRefCount), offsetof(FrameUniforms, lightPickUniform)});
         expectMembers(spv, "PunctualLight", {0, offsetof(PunctualLight, type), offsetof(PunctualLight, intensity),
@@ -134,7 +136,8 @@ TEST(Layout, ViewerStructsMatchInTheViewerShaders) {
                        offsetof(ViewerUniforms, sigmaNormal), offsetof(ViewerUniforms, sigmaDepth),
                        offsetof(ViewerUniforms, heatMax), offsetof(ViewerUniforms, denoise),
                        offsetof(ViewerUniforms, debugOpacity), offsetof(ViewerUniforms, debugInset)});
-        expectMembers(spv, "HeatCounters", {0, offsetof(HeatCounters, maxTris)});
+        expectMembers(spv, "HeatCounters", {0, offsetof(HeatCounters, maxTris), offsetof(HeatCounters, maxLeafDepth),
+                                            offsetof(HeatCounters, maxLeafTris)});
         expectMembers(spv, "FrameUniforms", {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight)});
         expectMembers(spv, "PassPush", {0, offsetof(PassPush, mode), offsetof(PassPush, itemCount), offsetof(PassPush, countRays)});
         expectMembers(spv, "BoxOverlayPush", {0, offsetof(BoxOverlayPush, lineWidth), offsetof(BoxOverlayPush, pad0),

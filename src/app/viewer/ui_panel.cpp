@@ -125,7 +125,7 @@ void display(ViewSettings& s, const PanelState& state, const ViewerStats& stats)
     int debug = int(s.debug);
     if (ImGui::Combo("debug view", &debug,
                      "image\0normals\0albedo\0depth\0motion\0sample count\0BVH nodes visited\0triangles tested\0"
-                     "BVH boxes by depth\0"))
+                     "BVH boxes by depth\0BVH depth of the hit leaf\0primitives in the hit leaf\0"))
         s.debug = DebugView(debug);
     if (s.debug != DebugView::None && s.debug != DebugView::BvhBoxes) {
         ImGui::SliderFloat("debug opacity", &s.debugOpacity, 0.0f, 1.0f, "%.2f");
@@ -133,6 +133,8 @@ void display(ViewSettings& s, const PanelState& state, const ViewerStats& stats)
     }
     if (s.debug == DebugView::HeatNodes) heatLegend("nodes", stats.heatMaxNodes);
     if (s.debug == DebugView::HeatTriangles) heatLegend("triangles", stats.heatMaxTriangles);
+    if (s.debug == DebugView::LeafDepth) heatLegend("leaf depth", stats.heatMaxLeafDepth);
+    if (s.debug == DebugView::LeafTriangles) heatLegend("leaf primitives", stats.heatMaxLeafTriangles);
     if (s.debug == DebugView::BvhBoxes) {
         int depth = int(s.boxDepth);
         if (ImGui::SliderInt("box depth (root: 0)", &depth, 0, int(state.bvhDepth)))

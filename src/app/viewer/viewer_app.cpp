@@ -225,10 +225,11 @@ DebugView parseDebugView(const std::string& name) {
     const std::pair<const char*, DebugView> views[] = {
         {"none", DebugView::None},     {"normals", DebugView::Normals}, {"albedo", DebugView::Albedo},
         {"depth", DebugView::Depth},   {"motion", DebugView::Motion},   {"samples", DebugView::Samples},
-        {"nodes", DebugView::HeatNodes}, {"triangles", DebugView::HeatTriangles}, {"boxes", DebugView::BvhBoxes}};
+        {"nodes", DebugView::HeatNodes}, {"triangles", DebugView::HeatTriangles}, {"boxes", DebugView::BvhBoxes},
+        {"leaf-depth", DebugView::LeafDepth}, {"leaf-triangles", DebugView::LeafTriangles}};
     for (const auto& [n, v] : views)
         if (name == n) return v;
-    throw UsageError("--debug must be one of none, normals, albedo, depth, motion, samples, nodes, triangles, boxes (got '" +
+    throw UsageError("--debug must be one of none, normals, albedo, depth, motion, samples, nodes, triangles, boxes, leaf-depth, leaf-triangles (got '" +
                      name + "')");
 }
 
@@ -285,6 +286,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     std::string pendingScreenshot;
     auto last = std::chrono::steady_clock::now();
     double fpsSmoothed = 0;
+    double animationClock = 0;  // seconds played: the moment animated textures show
 
     while (!window.shouldClose()) {
         // Paused: sleep until something happens (no fan noise); playing: just poll.
@@ -303,8 +305,13 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         handlePresses(input, w, pointer, controller, panel);
         if (std::optional<Click> click = trackPointer(w, pointer, input, ui.wantsMouse()))
             handleClick(w, *click, pointer, scene, renderer, controller, settings, edit);
-        // Paused, the camera stays where the shown frame was taken.
-        if (advancing) controller.update(cameraInputFrom(input), step);
+        // Paused, the camera stays where the shown frame was taken, and animated textures hold
+        // their frame; playing, they run at the game's rate in simulated time (--fixed-dt too).
+        if (advancing) {
+            controller.update(cameraInputFrom(input), step);
+            animationClock += step;
+            settings.time = float(animationClock);
+        }
         endInputFrame(input);
 
         ui.newFrame();

@@ -427,6 +427,9 @@ private:
             const tinygltf::Sampler& s = model_.samplers[std::size_t(t.sampler)];
             ref.wrapU = wrap(s.wrapS);
             ref.wrapV = wrap(s.wrapT);
+            // Magnification decides the look up close (pixel art asks for NEAREST); minification
+            // has no effect without mipmaps.
+            if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) ref.filter = Filter::Nearest;
         }
         ref.texture = image(t.source, srgb);
         return ref;

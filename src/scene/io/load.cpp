@@ -62,7 +62,7 @@ Scene loadSceneFile(const std::filesystem::path& path, const LoadOptions& option
     };
     if (ext == ".wad") {
         if (magic != "IWAD" && magic != "PWAD") mismatch("a WAD file (no IWAD/PWAD header)");
-        return loadWad(path, options.map);
+        return loadWad(path, options.map, options.wad);
     }
     if (!options.map.empty()) throw UsageError("--map only applies to .wad files");
     if (ext == ".glb") {

@@ -4,12 +4,14 @@
 #include <filesystem>
 #include <string>
 
+#include "scene/io/wad/wad_loader.h"
 #include "scene/scene.h"
 
 namespace penumbra {
 
 struct LoadOptions {
     std::string map;  // WAD: E1M1, MAP01, ...; empty picks the first map in the file
+    WadOptions wad;   // WAD: glow, sector light and filtering
 };
 
 // The scene file formats loadSceneFile reads, for messages and help: ".obj, .ply, ..., or .json".

@@ -256,6 +256,7 @@ void warnUnusedMaterials(const std::string& file, const Json& mats, const Scene&
     std::vector<bool> used(scene.materials.size(), false);
     for (const Mesh& m : scene.meshes) used.at(m.material) = true;
     for (const Sphere& s : scene.spheres) used.at(s.material) = true;
+    for (const Sprite& s : scene.sprites) used.at(s.material) = true;
     for (std::size_t i = 0; i < mats.size(); ++i) {
         const std::string matName = mats[i]["name"].get<std::string>();
         bool anyUsed = false;

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
 #include "../image/test_dir.h"
 #include "../smooth_sphere.h"
@@ -175,6 +177,20 @@ TEST(GltfLoader, SpecularExtensionTurnsTheCoatOff) {
     Scene scene = loadGltf(dataDir() / "gltf/textured_quad.gltf");
     ASSERT_EQ(scene.materials.size(), 1u);
     EXPECT_FLOAT_EQ(scene.materials[0].specular, 0.0f);
+}
+
+// A sampler's NEAREST magFilter (9728) asks for the nearest texel, as pixel art does; others
+// (or none) filter bilinearly.
+TEST(GltfLoader, NearestMagFilterIsKept) {
+    const std::filesystem::path dir = dataDir() / "gltf";
+    std::ifstream in(dir / "textured_quad.gltf");
+    const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string wrapT = "\"wrapT\": 33071";
+    ASSERT_NE(json.find(wrapT), std::string::npos);
+    std::string nearest = json;
+    nearest.replace(nearest.find(wrapT), wrapT.size(), wrapT + ", \"magFilter\": 9728");
+    EXPECT_EQ(loadGltfFromMemory(json, dir, "quad.gltf").materials[0].albedoTexture.filter, Filter::Linear);
+    EXPECT_EQ(loadGltfFromMemory(nearest, dir, "quad.gltf").materials[0].albedoTexture.filter, Filter::Nearest);
 }
 
 TEST(GltfLoader, EmbeddedWithoutSceneUsesRootNodesAndFitsCamera) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -179,5 +180,99 @@ inline MapBuilder roomWithPillar() {
     m.thing(200, 200, 0, 2028);
     return m;
 }
+
+// A picture-format lump (patch or sprite frame): index(x, y) is the palette index of each texel,
+// or -1 where it is transparent. Heights up to 254.
+inline std::string picture(int width, int height, const std::function<int(int, int)>& index, int left = 0,
+                           int top = 0) {
+    std::vector<std::string> columns(static_cast<std::size_t>(width));
+    for (int x = 0; x < width; ++x) {
+        std::string& c = columns[std::size_t(x)];
+        for (int y = 0; y < height;) {
+            if (index(x, y) < 0) {
+                ++y;
+                continue;
+            }
+            int end = y;
+            while (end < height && index(x, end) >= 0) ++end;
+            c.push_back(char(y));
+            c.push_back(char(end - y));
+            c.push_back(0);
+            for (int k = y; k < end; ++k) c.push_back(char(index(x, k)));
+            c.push_back(0);
+            y = end;
+        }
+        c.push_back(char(0xFF));
+    }
+    std::string out;
+    put16(out, width);
+    put16(out, height);
+    put16(out, left);
+    put16(out, top);
+    std::size_t offset = 8 + 4 * std::size_t(width);
+    for (const std::string& c : columns) {
+        put32(out, std::int64_t(offset));
+        offset += c.size();
+    }
+    for (const std::string& c : columns) out += c;
+    return out;
+}
+
+// Graphics with names of one's choosing: PLAYPAL (a given palette, or addTestGraphics' ramp),
+// wall textures made of one patch each, flats and sprite frames.
+struct Graphics {
+    std::string palette;  // 768 bytes; empty: the ramp (i, 255 - i, i / 2)
+    std::vector<std::pair<std::string, std::string>> patches;   // name, picture lump
+    std::vector<std::pair<std::string, std::string>> flats;     // name, 4096 palette indices
+    std::vector<std::pair<std::string, std::string>> sprites;   // lump name, picture lump
+
+    // A wall texture `name` that is the patch `picture` (of its own size) at the origin.
+    void texture(const std::string& name, std::string pictureLump) { patches.emplace_back(name, std::move(pictureLump)); }
+    void flat(const std::string& name, const std::function<int(int, int)>& index) {
+        std::string f(4096, '\0');
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x) f[std::size_t(y * 64 + x)] = char(index(x, y));
+        flats.emplace_back(name, f);
+    }
+
+    void addTo(WadBuilder& wad) const {
+        std::string pal = palette;
+        if (pal.empty())
+            for (int i = 0; i < 256; ++i) pal += {char(i), char(255 - i), char(i / 2)};
+        wad.add("PLAYPAL", pal);
+        std::string pnames, tex;
+        put32(pnames, std::int64_t(patches.size()));
+        for (const auto& p : patches) putName(pnames, p.first);
+        wad.add("PNAMES", pnames);
+        put32(tex, std::int64_t(patches.size()));
+        for (std::size_t i = 0; i < patches.size(); ++i) put32(tex, 4 + 4 * std::int64_t(patches.size()) + 32 * std::int64_t(i));
+        for (std::size_t i = 0; i < patches.size(); ++i) {
+            const std::string& lump = patches[i].second;
+            const int w = int(std::uint8_t(lump[0])) | (int(std::uint8_t(lump[1])) << 8);
+            const int h = int(std::uint8_t(lump[2])) | (int(std::uint8_t(lump[3])) << 8);
+            putName(tex, patches[i].first);
+            put32(tex, 0);
+            put16(tex, w);
+            put16(tex, h);
+            put32(tex, 0);
+            put16(tex, 1);
+            put16(tex, 0);
+            put16(tex, 0);
+            put16(tex, int(i));
+            put16(tex, 1);
+            put16(tex, 0);
+        }
+        wad.add("TEXTURE1", tex);
+        wad.add("P_START");
+        for (const auto& p : patches) wad.add(p.first, p.second);
+        wad.add("P_END");
+        wad.add("F_START");
+        for (const auto& f : flats) wad.add(f.first, f.second);
+        wad.add("F_END");
+        wad.add("S_START");
+        for (const auto& sp : sprites) wad.add(sp.first, sp.second);
+        wad.add("S_END");
+    }
+};
 
 }  // namespace penumbra::testing

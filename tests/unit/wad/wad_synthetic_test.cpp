@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "scene/io/wad/sector_light.h"
 #include "scene/io/wad/wad_loader.h"
 #include "wad_builder.h"
 
@@ -169,7 +170,8 @@ TEST(WadSynthetic, TwoSidedUpperLowerMaskedAndSky) {
     ASSERT_TRUE(lower);
     for (Vec2 uv : lower->uvs) EXPECT_TRUE(uv.y == 3.0f || uv.y == 4.0f) << uv.y;
 
-    // Sky: the upper between two sky ceilings disappears; ceilings become the sky emitter.
+    // Sky: the upper between two sky ceilings disappears; ceilings become portals onto the sky
+    // (without a SKY1 texture, the constant background) that bring their sector's fill light.
     Scene sky = loadWadFromMemory(stepWad(true, 0), "MAP01", "step.wad");
     walls = findMesh(sky, "sector 0 walls wall WALL1");
     ASSERT_TRUE(walls);
@@ -180,7 +182,10 @@ TEST(WadSynthetic, TwoSidedUpperLowerMaskedAndSky) {
     EXPECT_TRUE(m.isEmissive());
     EXPECT_FALSE(m.twoSided);
     EXPECT_FALSE(m.albedoTexture.present());
-    EXPECT_EQ(sky.background, m.emission);
+    EXPECT_TRUE(m.skyPortal);
+    EXPECT_TRUE(m.emissionHiddenFromCamera);
+    EXPECT_FLOAT_EQ(m.emission.x, wad::sectorRadiance(200));
+    EXPECT_FALSE(sky.environment.map.has_value());
     // Emission leaves the counter-clockwise front face: it must face down into the room.
     for (std::size_t t = 0; t < ceiling->triangleCount(); ++t) EXPECT_LT(triNormal(*ceiling, t).y, 0);
 }

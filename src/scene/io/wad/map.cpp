@@ -1,5 +1,7 @@
 #include "scene/io/wad/map.h"
 
+#include <cmath>
+
 #include "core/error.h"
 #include "core/log.h"
 
@@ -134,6 +136,23 @@ MapData parseMap(const WadFile& wad, const MapLumps& lumps) {
                          readU16(p + 8)};
     }
     return map;
+}
+
+int sectorAt(const MapData& map, double px, double py) {
+    double best = INFINITY;
+    int sector = -1;
+    for (const Linedef& line : map.linedefs) {
+        const Vertex& a = map.vertices[line.v1];
+        const Vertex& b = map.vertices[line.v2];
+        if ((a.y > py) == (b.y > py)) continue;
+        double xi = a.x + (py - a.y) * double(b.x - a.x) / double(b.y - a.y);
+        if (xi < px || xi >= best) continue;
+        best = xi;
+        double side = double(b.x - a.x) * (py - a.y) - double(b.y - a.y) * (px - a.x);
+        std::uint16_t sd = side < 0 ? line.front : line.back;
+        sector = sd != kNoSide ? int(map.sidedefs[sd].sector) : -1;
+    }
+    return sector;
 }
 
 }  // namespace penumbra::wad

@@ -66,4 +66,8 @@ struct MapData {
 // error too. Lines without a front side get their back side moved to the front (warning).
 MapData parseMap(const WadFile& wad, const MapLumps& lumps);
 
+// The sector containing a point (Doom units): the nearest line crossed by a ray toward +x
+// decides, by the side of it the point is on. -1 when the point is outside the map.
+int sectorAt(const MapData& map, double x, double y);
+
 }  // namespace penumbra::wad

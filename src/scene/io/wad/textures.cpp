@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "scene/io/wad/animation.h"
 
 namespace penumbra::wad {
 namespace {
@@ -44,6 +45,17 @@ TextureLibrary::TextureLibrary(const WadFile& wad) : wad_(wad) {
     for (auto [begin, end] : wad.markerRanges("F_START", "F_END", "FF_START", "FF_END"))
         for (std::size_t i = begin; i < end; ++i) flatLumps_[wad.lumps()[i].name] = i;
     patchRanges_ = wad.markerRanges("P_START", "P_END", "PP_START", "PP_END");
+
+    // Animation cycles: flats in the directory order of the lumps that define them.
+    std::vector<std::pair<std::size_t, std::string>> flatsByLump;
+    for (const auto& [flatName, lump] : flatLumps_) flatsByLump.emplace_back(lump, flatName);
+    std::sort(flatsByLump.begin(), flatsByLump.end());
+    std::vector<std::string> flatOrder;
+    for (auto& entry : flatsByLump) flatOrder.push_back(std::move(entry.second));
+    for (const auto& cycle : findCycles(flatOrder, false))
+        for (const std::string& frame : cycle) flatCycles_.try_emplace(frame, cycle);
+    for (const auto& cycle : findCycles(textureOrder_, true))
+        for (const std::string& frame : cycle) wallCycles_.try_emplace(frame, cycle);
 }
 
 void TextureLibrary::readTextureLump(const char* name) {
@@ -62,7 +74,8 @@ void TextureLibrary::readTextureLump(const char* name) {
             throw Error(where + ": texture " + std::to_string(i) + " starts at offset " +
                         std::to_string(offset) + ", past the end of the lump");
         std::string texName = readName8(bytesOf(t) + offset);
-        defs_.try_emplace(texName, TextureDef{std::size_t(index), std::size_t(offset)});  // first wins
+        if (defs_.try_emplace(texName, TextureDef{std::size_t(index), std::size_t(offset)}).second)  // first wins
+            textureOrder_.push_back(texName);
     }
 }
 
@@ -93,6 +106,36 @@ int TextureLibrary::checker(const std::string& name, const char* kind) {
 
 int TextureLibrary::wallTexture(const std::string& name) {
     if (auto it = wallCache_.find(name); it != wallCache_.end()) return it->second;
+    if (auto cycle = wallCycles_.find(name); cycle != wallCycles_.end()) return loadCycle(cycle->second, false, name);
+    const int index = decodeWall(name);
+    wallCache_[name] = index;
+    return index;
+}
+
+int TextureLibrary::flat(const std::string& name) {
+    if (auto it = flatCache_.find(name); it != flatCache_.end()) return it->second;
+    if (auto cycle = flatCycles_.find(name); cycle != flatCycles_.end()) return loadCycle(cycle->second, true, name);
+    const int index = decodeFlat(name);
+    flatCache_[name] = index;
+    return index;
+}
+
+int TextureLibrary::loadCycle(const std::vector<std::string>& cycle, bool isFlat, const std::string& name) {
+    const std::size_t first = textures_.size();
+    int wanted = -1;
+    for (std::size_t k = 0; k < cycle.size(); ++k) {
+        // Each frame pushes exactly one texture (the frame or a checker), so they stay consecutive.
+        const int index = isFlat ? decodeFlat(cycle[k]) : decodeWall(cycle[k]);
+        Texture& tex = textures_[std::size_t(index)];
+        tex.animation = {int(cycle.size()), int(k), kSecondsPerAnimationFrame};
+        // A frame that is also in an earlier cycle (a WAD with interleaved cycles) keeps that one.
+        (isFlat ? flatCache_ : wallCache_).try_emplace(cycle[k], index);
+        if (cycle[k] == name) wanted = index;
+    }
+    return wanted >= 0 ? wanted : int(first);
+}
+
+int TextureLibrary::decodeWall(const std::string& name) {
     int index = -1;
     auto def = defs_.find(name);
     if (def != defs_.end()) {
@@ -103,12 +146,10 @@ int TextureLibrary::wallTexture(const std::string& name) {
         }
     }
     if (index < 0) index = checker(name, "wall texture");
-    wallCache_[name] = index;
     return index;
 }
 
-int TextureLibrary::flat(const std::string& name) {
-    if (auto it = flatCache_.find(name); it != flatCache_.end()) return it->second;
+int TextureLibrary::decodeFlat(const std::string& name) {
     int index = -1;
     auto lump = flatLumps_.find(name);
     if (lump != flatLumps_.end()) {
@@ -128,8 +169,48 @@ int TextureLibrary::flat(const std::string& name) {
         }
     }
     if (index < 0) index = checker(name, "flat");
-    flatCache_[name] = index;
     return index;
+}
+
+std::optional<Texture> TextureLibrary::composeWall(const std::string& name) {
+    auto def = defs_.find(name);
+    if (def == defs_.end()) return std::nullopt;
+    Texture tex = compose(name, def->second);
+    if (tex.width <= 0) return std::nullopt;
+    return tex;
+}
+
+bool TextureLibrary::spendTexels(std::int64_t texels) {
+    if (texels < 0 || texels > texelBudget_) return false;
+    texelBudget_ -= texels;
+    return true;
+}
+
+std::optional<TextureLibrary::Picture> TextureLibrary::picture(std::size_t lump, const std::string& context) {
+    std::string_view data = wad_.lumpData(lump);
+    const std::string where = wad_.where(lump) + " (" + context + ")";
+    if (data.size() < 8) throw Error(where + " is too short for a picture header");
+    const unsigned char* d = bytesOf(data);
+    const int width = readI16(d), height = readI16(d + 2);
+    if (width <= 0 || height <= 0 || width > kMaxTextureSize || height > kMaxTextureSize) {
+        logWarning(where + " has unusable size " + std::to_string(width) + "x" + std::to_string(height));
+        return std::nullopt;
+    }
+    const std::int64_t texels = std::int64_t(width) * height;
+    if (texels > texelBudget_) {
+        logWarning(where + ": texture memory budget exhausted");
+        return std::nullopt;
+    }
+    texelBudget_ -= texels;
+    Picture pic;
+    pic.leftOffset = readI16(d + 4);
+    pic.topOffset = readI16(d + 6);
+    pic.texture.name = wad_.lumps()[lump].name;
+    pic.texture.width = width;
+    pic.texture.height = height;
+    pic.texture.rgba.assign(std::size_t(texels) * 4, 0);
+    drawPatch(pic.texture, context, long(lump), 0, 0);
+    return pic;
 }
 
 Texture TextureLibrary::compose(const std::string& name, const TextureDef& def) {

@@ -15,6 +15,8 @@ inline Vec3 mapToScene(double x, double y, double z) {
     return Vec3(float(x), float(z), float(-y)) / kUnitsPerMetre;
 }
 inline Vec3 mapToScene(Vec3 map) { return mapToScene(map.x, map.y, map.z); }
+// The same with the height second, in the order the WAD loaders write points (x, height, y).
+inline Vec3 toWorld(double x, double height, double y) { return mapToScene(x, y, height); }
 
 // The inverse: a scene point as (x, y, z = height) in map units.
 inline Vec3 sceneToMap(Vec3 scene) { return Vec3(scene.x, -scene.z, scene.y) * kUnitsPerMetre; }

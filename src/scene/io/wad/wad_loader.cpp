@@ -1,19 +1,26 @@
 // Builds a Scene from one Doom map: walls with Doom's pegging rules, sector floors and ceilings
-// (triangulate.cpp), sky ceilings as emitters, the player start as the camera and lamps as
-// point lights. Doom units become metres at 32 units per metre; Doom (x, y, z up) becomes
-// (x, z, -y) here, with y up.
+// (triangulate.cpp), glowing textures and flats as emitters (glow.h), sector light levels as fill
+// light from the ceilings (sector_light.h), sky ceilings as portals onto the sky (sky.h), the
+// player start as the camera, and things as sprites and lamps (thing_placement.h). Doom units
+// become metres at 32 units per metre; Doom (x, y, z up) becomes (x, z, -y) here, with y up.
 #include "scene/io/wad/wad_loader.h"
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <tuple>
 
 #include "core/error.h"
 #include "core/log.h"
+#include "scene/environment.h"
+#include "scene/io/wad/glow.h"
 #include "scene/io/wad/map.h"
+#include "scene/io/wad/sector_light.h"
+#include "scene/io/wad/sky.h"
 #include "scene/io/wad/textures.h"
+#include "scene/io/wad/thing_placement.h"
 #include "scene/io/wad/triangulate.h"
 #include "scene/io/wad/units.h"
 #include "scene/walk/wad_walk_map.h"
@@ -24,71 +31,33 @@ namespace {
 using namespace wad;
 
 constexpr double kEyeHeight = walk::kEyeHeight;
+// The sky's radiance when the WAD has no sky texture (a dull daylight grey-blue).
 constexpr Vec3 kSkyRadiance{1.0f, 1.0f, 1.1f};
+// Radiance per unit of the sky texture's linear colour: Doom draws the sky at its palette colours.
+// (An outdoor sector is lit by its level's fill light, which comes through the sky too.)
+constexpr float kSkyBrightness = 1.0f;
 constexpr std::int64_t kFillBudget = 50'000'000;  // slab sweep work units per map
-constexpr std::size_t kMaxLights = 4096;
-
-Vec3 toWorld(double x, double height, double y) { return mapToScene(x, y, height); }
 
 bool isSky(const std::string& flat) { return flat == "F_SKY1"; }
 bool hasTexture(const std::string& name) { return !name.empty() && name != "-"; }
 
-struct LampType {
-    std::uint16_t type;
-    Vec3 color;
-    float intensity;  // candela
-    float height;     // Doom units above the floor
-    const char* name;
-};
-// Light-emitting decorations of Doom and Doom II (thing type numbers from the Doom source).
-constexpr LampType kLamps[] = {
-    {2028, {1.0f, 0.9f, 0.7f}, 40.0f, 44.0f, "floor lamp"},
-    {85, {0.85f, 0.9f, 1.0f}, 40.0f, 72.0f, "tall techno lamp"},
-    {86, {0.85f, 0.9f, 1.0f}, 30.0f, 52.0f, "short techno lamp"},
-    {34, {1.0f, 0.7f, 0.35f}, 4.0f, 12.0f, "candle"},
-    {35, {1.0f, 0.75f, 0.4f}, 15.0f, 56.0f, "candelabra"},
-    {44, {0.35f, 0.5f, 1.0f}, 25.0f, 64.0f, "tall blue torch"},
-    {45, {0.4f, 1.0f, 0.4f}, 25.0f, 64.0f, "tall green torch"},
-    {46, {1.0f, 0.35f, 0.25f}, 25.0f, 64.0f, "tall red torch"},
-    {55, {0.35f, 0.5f, 1.0f}, 18.0f, 40.0f, "short blue torch"},
-    {56, {0.4f, 1.0f, 0.4f}, 18.0f, 40.0f, "short green torch"},
-    {57, {1.0f, 0.35f, 0.25f}, 18.0f, 40.0f, "short red torch"},
-    {70, {1.0f, 0.6f, 0.3f}, 25.0f, 40.0f, "burning barrel"},
-};
-
-// The sector containing a point: the nearest line crossed by a ray towards +x decides, by the
-// side of it the point is on. -1 when the point is outside the map.
-int sectorAt(const MapData& map, double px, double py) {
-    double best = INFINITY;
-    int sector = -1;
-    for (const Linedef& line : map.linedefs) {
-        const Vertex& a = map.vertices[line.v1];
-        const Vertex& b = map.vertices[line.v2];
-        if ((a.y > py) == (b.y > py)) continue;
-        double xi = a.x + (py - a.y) * double(b.x - a.x) / double(b.y - a.y);
-        if (xi < px || xi >= best) continue;
-        best = xi;
-        double side = double(b.x - a.x) * (py - a.y) - double(b.y - a.y) * (px - a.x);
-        std::uint16_t sd = side < 0 ? line.front : line.back;
-        sector = sd != kNoSide ? int(map.sidedefs[sd].sector) : -1;
-    }
-    return sector;
-}
-
 class SceneBuilder {
 public:
-    SceneBuilder(const WadFile& wad, const MapData& map) : wad_(wad), map_(map), textures_(wad) {}
+    SceneBuilder(const WadFile& wad, const MapData& map, const WadOptions& options)
+        : wad_(wad), map_(map), options_(options), textures_(wad) {}
 
     Scene build() {
         scene_.name = wad_.fileName() + ":" + map_.name;
         scene_.background = kSkyRadiance;
         // The sky lights the level through its sky ceilings, which light sampling finds as
-        // emitters; sampling the background too would send a second shadow ray at the same sky.
+        // emitters (portals onto the sky); sampling the environment too would send a second
+        // shadow ray at the same sky. Escaping rays still see it.
         scene_.environment.sampled = false;
         buildWalls();
         buildFlats();
+        if (hasSky_) buildSky();
         placeCamera();
-        placeLights();
+        placeThings(wad_, map_, textures_, options_, scene_);
         scene_.walkMap = walk::buildWalkMap(map_);
         scene_.textures = std::move(textures_.textures());
         scene_.validate();
@@ -96,29 +65,100 @@ public:
     }
 
 private:
-    std::uint32_t material(const std::string& key, int texture, bool masked) {
+    Material surface(const std::string& name, int texture, bool masked) const {
+        Material m;
+        m.name = name;
+        m.albedo = Vec3(1.0f);
+        m.albedoTexture.texture = texture;
+        m.albedoTexture.filter = options_.filter;
+        if (masked) m.alphaCutoff = 0.5f;
+        return m;
+    }
+    std::uint32_t add(const std::string& key, const std::function<Material()>& make) {
         auto [it, inserted] = materials_.try_emplace(key, std::uint32_t(scene_.materials.size()));
-        if (inserted) {
-            Material m;
-            m.name = key;
-            m.albedo = Vec3(1.0f);
-            m.albedoTexture.texture = texture;
-            if (masked) m.alphaCutoff = 0.5f;
-            scene_.materials.push_back(std::move(m));
-        }
+        if (inserted) scene_.materials.push_back(make());
         return it->second;
     }
-    std::uint32_t skyMaterial() {
-        auto [it, inserted] = materials_.try_emplace("sky", std::uint32_t(scene_.materials.size()));
-        if (inserted) {
-            Material m;
-            m.name = "sky";
-            m.albedo = Vec3(0.0f);
-            m.emission = kSkyRadiance;
-            m.twoSided = false;
-            scene_.materials.push_back(std::move(m));
+
+    // A wall texture or flat, glowing where glow.h says it does.
+    std::uint32_t material(const std::string& key, const std::string& texName, bool flat, int texture, bool masked) {
+        return add(key, [&] {
+            Material m = surface(key, texture, masked);
+            const Glow glow = options_.glow > 0 ? glowOf(texName, flat) : Glow{};
+            if (glow.kind != GlowKind::None) {
+                m.emission = Vec3(glow.strength * options_.glow);
+                m.emissionTexture = m.albedoTexture;
+                m.emissionTexture.texture = glowTextureOf(texture, glow.kind);
+            }
+            return m;
+        });
+    }
+
+    // The emission texture of a glowing texture, made once; for an animated one, one per frame,
+    // consecutive and animated alike, so the glow follows the frames.
+    int glowTextureOf(int texture, GlowKind kind) {
+        if (kind == GlowKind::Whole) return texture;  // every texel glows in its own colour
+        if (auto it = glowTextures_.find(texture); it != glowTextures_.end()) return it->second;
+        std::vector<Texture>& list = textures_.textures();
+        const TextureAnimation animation = list[std::size_t(texture)].animation;
+        const int first = texture - animation.frame;
+        const int out = int(list.size());
+        for (int k = 0; k < animation.frames; ++k) {
+            Texture glow = glowTexture(list[std::size_t(first + k)], kind);
+            list.push_back(std::move(glow));
+            glowTextures_.try_emplace(first + k, out + k);
         }
-        return it->second;
+        return glowTextures_.at(texture);
+    }
+
+    // A floor or non-sky ceiling: it gives off its sector's fill light (sector_light.h) unless it
+    // glows itself (its own light fills the sector then) or the sector is closed (a shut door).
+    std::uint32_t flatMaterial(const Sector& sec, const std::string& flatName) {
+        const int texture = textures_.flat(flatName);
+        const float radiance = sectorRadiance(sec.lightLevel) * options_.sectorLight;
+        const bool glows = options_.glow > 0 && glowOf(flatName, true).kind != GlowKind::None;
+        if (glows || !(radiance > 0) || sec.ceilingHeight <= sec.floorHeight)
+            return material("flat " + flatName, flatName, true, texture, false);
+        const int level = std::clamp<int>(sec.lightLevel, 0, 255);
+        const std::string key = "flat " + flatName + " light " + std::to_string(level);
+        return add(key, [&] {
+            Material m = surface(key, texture, false);
+            m.emission = Vec3(radiance);
+            m.emissionHiddenFromCamera = true;  // the room looks lit; its floor and ceiling do not glow
+            return m;
+        });
+    }
+
+    // A sky ceiling: a portal onto the sky, which also brings its sector's fill light (outdoors,
+    // the light a sector's level promises comes through the open sky).
+    std::uint32_t skyMaterial(const Sector& sec) {
+        const float radiance = sectorRadiance(sec.lightLevel) * options_.sectorLight;
+        const int level = radiance > 0 ? std::clamp<int>(sec.lightLevel, 0, 255) : 0;
+        return add("sky light " + std::to_string(level), [&] {
+            Material m;
+            m.name = "sky light " + std::to_string(level);
+            m.albedo = Vec3(0.0f);
+            m.skyPortal = true;
+            m.emission = Vec3(std::max(radiance, 0.0f));
+            m.emissionHiddenFromCamera = true;  // the camera sees the sky itself
+            m.twoSided = false;
+            hasSky_ = true;
+            return m;
+        });
+    }
+
+    // The level's sky texture as the environment, seen through the sky ceilings and by rays that
+    // leave the level. Without the texture the sky stays the constant kSkyRadiance.
+    void buildSky() {
+        const std::string name = skyTextureName(map_.name);
+        std::optional<Texture> sky = textures_.hasWallTexture(name) ? textures_.composeWall(name) : std::nullopt;
+        if (!sky) {
+            logWarning(wad_.fileName() + ": map " + map_.name + " has sky ceilings but no texture " + name +
+                       "; the sky is a uniform grey");
+            return;
+        }
+        scene_.environment.map = skyEnvironment(*sky, kSkyBrightness);
+        scene_.background = skyPortalRadiance(scene_.environment, scene_.background);
     }
 
     // Meshes are grouped by (sector, part, material) so each keeps its sector's light level.
@@ -161,7 +201,7 @@ private:
         if (!(z1 > z0)) return;
         int tex = textures_.wallTexture(texName);
         double tw = textures_.width(tex), th = textures_.height(tex);
-        std::uint32_t mat = material((masked ? "masked " : "wall ") + texName, tex, masked);
+        std::uint32_t mat = material((masked ? "masked " : "wall ") + texName, texName, false, tex, masked);
         double dx = double(b.x) - a.x, dy = double(b.y) - a.y;
         double len = std::sqrt(dx * dx + dy * dy);
         Vec3 facing = normalize(Vec3(float(dy), 0.0f, float(dx)));  // Doom right (dy, -dx)
@@ -235,11 +275,8 @@ private:
             }
             if (tris.empty()) continue;
             const Sector& sec = map_.sectors[s];
-            std::uint32_t floorMat = material("flat " + sec.floorFlat, textures_.flat(sec.floorFlat), false);
-            std::uint32_t ceilMat = isSky(sec.ceilingFlat)
-                                        ? skyMaterial()
-                                        : material("flat " + sec.ceilingFlat,
-                                                   textures_.flat(sec.ceilingFlat), false);
+            std::uint32_t floorMat = flatMaterial(sec, sec.floorFlat);
+            std::uint32_t ceilMat = isSky(sec.ceilingFlat) ? skyMaterial(sec) : flatMaterial(sec, sec.ceilingFlat);
             Mesh& floor = mesh(int(s), "floor", floorMat);
             for (const Triangle2& t : tris) flatTriangle(floor, t, sec.floorHeight, Vec3(0, 1, 0));
             Mesh& ceiling = mesh(int(s), "ceiling", ceilMat);
@@ -299,35 +336,14 @@ private:
         cam.lookAt = cam.position + Vec3(1, 0, 0);
     }
 
-    void placeLights() {
-        std::size_t count = 0;
-        for (const Thing& t : map_.things) {
-            if (t.flags & 0x10) continue;  // multiplayer only
-            const LampType* lamp = nullptr;
-            for (const LampType& l : kLamps)
-                if (l.type == t.type) lamp = &l;
-            if (!lamp) continue;
-            if (++count > kMaxLights) {
-                logWarning(wad_.fileName() + ": map " + map_.name + " has more than " +
-                           std::to_string(kMaxLights) + " lamps; the rest are left out");
-                return;
-            }
-            Light light;
-            light.name = lamp->name;
-            light.type = LightType::Point;
-            light.position = toWorld(t.x, floorAt(t.x, t.y) + lamp->height, t.y);
-            light.color = lamp->color;
-            light.intensity = lamp->intensity;
-            light.radius = 0.1f;
-            scene_.lights.push_back(std::move(light));
-        }
-    }
-
     const WadFile& wad_;
     const MapData& map_;
+    const WadOptions& options_;
     TextureLibrary textures_;
     Scene scene_;
     std::map<std::string, std::uint32_t> materials_;
+    std::map<int, int> glowTextures_;  // albedo texture -> its emission texture
+    bool hasSky_ = false;
     std::map<std::tuple<int, std::string, std::uint32_t>, std::size_t> meshes_;
 };
 
@@ -338,7 +354,15 @@ std::string upper(std::string s) {
 
 }  // namespace
 
-Scene loadWadFromMemory(std::string_view bytes, const std::string& map, const std::string& name) {
+void validateWadOptions(const WadOptions& o) {
+    if (!(o.glow >= 0 && o.glow <= 1e6f)) throw UsageError("--wad-glow must be a scale between 0 and 1e6 (0: nothing glows)");
+    if (!(o.sectorLight >= 0 && o.sectorLight <= 1e6f))
+        throw UsageError("--wad-sector-light must be a scale between 0 and 1e6 (0: no sector light)");
+}
+
+Scene loadWadFromMemory(std::string_view bytes, const std::string& map, const std::string& name,
+                        const WadOptions& options) {
+    validateWadOptions(options);
     WadFile wad(bytes, name);
     std::vector<MapLumps> maps = findMaps(wad);
     if (maps.empty()) throw Error(name + ": the WAD contains no maps");
@@ -357,10 +381,10 @@ Scene loadWadFromMemory(std::string_view bytes, const std::string& map, const st
         }
     }
     MapData data = parseMap(wad, *chosen);
-    return SceneBuilder(wad, data).build();
+    return SceneBuilder(wad, data, options).build();
 }
 
-Scene loadWad(const std::filesystem::path& path, const std::string& map) {
+Scene loadWad(const std::filesystem::path& path, const std::string& map, const WadOptions& options) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error(path.string() + ": no such file (or not a regular file)");
@@ -373,7 +397,7 @@ Scene loadWad(const std::filesystem::path& path, const std::string& map) {
     std::string bytes(std::size_t(size), '\0');
     in.seekg(0);
     if (!in.read(bytes.data(), size)) throw Error(path.string() + ": cannot read the file");
-    return loadWadFromMemory(bytes, map, path.filename().string());
+    return loadWadFromMemory(bytes, map, path.filename().string(), options);
 }
 
 std::vector<std::string> wadMapNames(std::string_view bytes) {

@@ -1,0 +1,19 @@
+// A map's things in the scene: what Doom draws of them as sprites (sprites.h, things.h), and the
+// lamps, candles and torches as lights besides.
+#pragma once
+
+#include "scene/io/wad/map.h"
+#include "scene/io/wad/textures.h"
+#include "scene/io/wad/wad_file.h"
+#include "scene/io/wad/wad_loader.h"
+#include "scene/scene.h"
+
+namespace penumbra::wad {
+
+// Adds a sprite (Scene::sprites, with a material per sprite frame) for every thing with a picture
+// and a point light for every lamp, for the single-player game at medium skill. Textures are
+// appended to `textures`, whose list becomes the scene's.
+void placeThings(const WadFile& wad, const MapData& map, TextureLibrary& textures,
+                 const WadOptions& options, Scene& scene);
+
+}  // namespace penumbra::wad
