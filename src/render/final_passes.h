@@ -1,0 +1,58 @@
+// The viewer's G-buffer and denoiser applied to a final render (penumbra render --denoise, --aov):
+// the same passes (gbuffer.comp, temporal.comp's demodulation, atrous.comp), not a copy.
+//
+// The denoiser needs per-pixel illumination (radiance over albedo) and its variance. A final
+// render has exactly what temporal.comp keeps for a still camera after N samples: a history
+// texel with the mean, N and the luminance moments. So the render's statistics are handed to
+// temporal.comp as that history (still camera, valid history, the same G-buffer as "previous"),
+// with a "current frame" equal to the mean; temporal.comp then demodulates and writes the
+// variance of the mean from the moments, and the a-trous passes filter as in the viewer.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gpu/buffer.h"
+#include "gpu/commands.h"
+#include "image/image.h"
+#include "render/accumulator.h"
+#include "render/renderer.h"
+
+namespace penumbra {
+
+// What the pixel-centre primary ray saw (gbuffer.comp): noise-free guides, not antialiased.
+struct FrameGuides {
+    std::vector<Vec3> albedo;  // textured base colour; 0 where the ray missed
+    std::vector<Vec3> normal;  // unit shading normal facing the camera; 0 where the ray missed
+    std::vector<float> depth;  // distance along the view axis; 0 where the ray missed
+};
+
+struct FinalDenoiseSettings {
+    std::uint32_t iterations = 5;  // a-trous passes, steps 1, 2, 4, 8, 16 pixels
+    float sigmaLuminance = 4.0f;   // the viewer's defaults (render/view_settings.h)
+    float sigmaNormal = 128.0f;
+    float sigmaDepth = 1.0f;
+};
+
+class FinalFramePasses {
+public:
+    // Uses the renderer's scene, camera and image size; holds its own buffers.
+    FinalFramePasses(const gpu::Context& ctx, const Renderer& renderer);
+    ~FinalFramePasses();
+
+    FrameGuides guides();
+    // The denoised image of `sums` (their mean, filtered).
+    ImageRgb denoise(const PixelAccumulator& sums, const FinalDenoiseSettings& settings = {});
+
+private:
+    void runGBuffer();
+
+    const gpu::Context& ctx_;
+    const Renderer& renderer_;
+    std::uint32_t width_, height_;
+    gpu::Commands commands_;
+    gpu::Buffer viewerUniforms_, gbuffer_;
+    bool gbufferDone_ = false;
+};
+
+}  // namespace penumbra
