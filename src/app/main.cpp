@@ -40,6 +40,9 @@ int main(int argc, char** argv) {
     } catch (const penumbra::UsageError& e) {
         std::fprintf(stderr, "penumbra: error: %s\n", e.what());
         return 2;
+    } catch (const penumbra::Interrupted& e) {
+        std::fprintf(stderr, "penumbra: error: %s\n", e.what());
+        return e.exitCode;
     } catch (const penumbra::Error& e) {
         std::fprintf(stderr, "penumbra: error: %s\n", e.what());
         return 1;
