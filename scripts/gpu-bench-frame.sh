@@ -32,17 +32,23 @@ fi
 
 out=${OUT:-/tmp/frame-bench}
 mkdir -p "$out"
-# The assets where the scenes and tests expect them.
-mkdir -p /usr/share/games/doom /usr/share/glmark2/models /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary
-xz -dc .assets/freedoom1.wad.xz > /usr/share/games/doom/freedoom1.wad
-xz -dc .assets/bunny.obj.xz > /usr/share/glmark2/models/bunny.obj
-cp .assets/2CylinderEngine.glb /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/
-xz -dc .assets/DOOM1.WAD.xz > /tmp/DOOM1.WAD
+# The assets where the scenes and tests expect them; a scene whose asset was not carried is
+# skipped (DOOM1_WAD may name a copy already on the host, e.g. the one inside the peer's payload).
+unpack() {  # unpack PACKED TARGET: .xz files are decompressed, others copied
+  [ -f "$1" ] || return 0
+  mkdir -p "$(dirname "$2")"
+  case "$1" in *.xz) xz -dc "$1" > "$2" ;; *) cp "$1" "$2" ;; esac
+}
+unpack .assets/freedoom1.wad.xz /usr/share/games/doom/freedoom1.wad
+unpack .assets/bunny.obj.xz /usr/share/glmark2/models/bunny.obj
+unpack .assets/2CylinderEngine.glb /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
+doom1=${DOOM1_WAD:-/tmp/DOOM1.WAD}
+[ -n "${DOOM1_WAD:-}" ] || unpack .assets/DOOM1.WAD.xz "$doom1"
 
 declare -A scene=(
   [cornell]="cornell"
   [freedoom-e1m1]="/usr/share/games/doom/freedoom1.wad --map E1M1"
-  [doom1-e1m1]="/tmp/DOOM1.WAD --map E1M1"
+  [doom1-e1m1]="$doom1 --map E1M1"
   [bunny-cornell]="scenes/bunny-cornell.json"
   [bunny-room]="bunny-room"
   [materials]="materials"
@@ -53,6 +59,8 @@ budget=${ERROR_BUDGET_MS:-30}
 for bin in ${BINARIES:-penumbra}; do
   for name in ${SCENES:-cornell freedoom-e1m1 doom1-e1m1 bunny-cornell bunny-room materials caffeine engine}; do
     s=${scene[$name]}
+    asset=${s%% *}
+    case "$asset" in /*) [ -f "$asset" ] || { echo "$name: $asset was not carried, skipped" >&2; continue; } ;; esac
     # shellcheck disable=SC2086
     "$bin" bench $s --viewer --width 1920 --height 1080 --spp 1 --bounces 4 --denoise 5 --frames 100 --json \
       > "$out/$bin-$name-frame.json" 2> "$out/$bin-$name-frame.err" || echo "$bin $name: frame bench failed" >&2

@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libvulkan-dev glslc spirv-tools
   mesa-vulkan-drivers vulkan-validationlayers   # lavapipe (CPU Vulkan) + validation for tests
+  vulkan-validationlayers-dev                   # vk_enum_string_helper.h (string_VkResult)
   libstb-dev libtinyexr-dev libcli11-dev
   libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev zlib1g-dev   # zlib: .ply.gz
   libgtest-dev libbenchmark-dev

@@ -10,7 +10,6 @@
 #extension GL_KHR_shader_subgroup_basic : require
 
 #include "shared/types.h"
-#define PN_BINARY_NODE_AB
 
 layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 
@@ -71,15 +70,17 @@ vec3 shadeLightSample(ShadingPoint sp, LightSample ls) {
     return f * abs(wiLocal.z) * radiance * transmittance * (weight / lightPdf);
 }
 
-// Direct light: one light chosen among all of them by the unified sampler, one sample of it,
-// one shadow ray.
-vec3 sampleDirectLight(ShadingPoint sp, inout uint rng) {
-    LightPick pick = pickLight(sp.surface.position, sp.frame.n, rng);
+// Direct light: one light chosen among all of them by the unified sampler (with pickU, a
+// stratified number), one sample of it, one shadow ray.
+vec3 sampleDirectLight(ShadingPoint sp, float pickU, inout uint rng) {
+    LightPick pick = pickLight(sp.surface.position, sp.frame.n, pickU);
     if (pick.ref == PN_NO_LIGHT) return vec3(0.0);
     return shadeLightSample(sp, sampleChosenLight(pick, sp.surface.position, sp.frame.n, rng));
 }
 
-vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
+// pixelIndex and sampleIndex stratify the light picks of this pixel's samples (one R1 sequence
+// per path depth): a scene with a few lights gets each in its share of the samples.
+vec3 radiance(vec3 origin, vec3 direction, uint pixelIndex, uint sampleIndex, inout uint rng) {
     vec3 result = vec3(0.0);
     vec3 throughput = vec3(1.0);
     float bsdfPdfPrev = 0.0;  // solid-angle pdf of the direction that led here
@@ -117,7 +118,8 @@ vec3 radiance(vec3 origin, vec3 direction, inout uint rng) {
         // Refraction leaves the medium through a back face and enters the material's through a front one.
         sp.mediumBelow = PN_HAS(PN_FEATURE_ABSORPTION) && s.frontFace ? m.absorption : vec3(0.0);
 
-        result += throughput * sampleDirectLight(sp, rng);
+        float pickU = stratifiedSample(pixelIndex, depth, sampleIndex, frame.seed);
+        result += throughput * sampleDirectLight(sp, pickU, rng);
 
         vec3 u = vec3(rngNext2(rng), rngNext(rng));
         BsdfSample bs = bsdfSample(sp.bsdf, sp.wo, u);
@@ -160,7 +162,7 @@ void main() {
             vec2 jitter = rngNext2(rng);
             vec3 cameraOrigin, cameraDirection;
             cameraRay(vec2(pixel) + jitter, rng, cameraOrigin, cameraDirection);
-            vec3 L = radiance(cameraOrigin, cameraDirection, rng);
+            vec3 L = radiance(cameraOrigin, cameraDirection, pixelIndex, push.passIndex * frame.samplesPerPass + s, rng);
             // A NaN or inf sample would poison the pixel forever: it is dropped, and counted so
             // that tests (and the render summary) see it.
             if (any(isnan(L)) || any(isinf(L))) {

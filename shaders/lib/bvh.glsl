@@ -33,67 +33,22 @@ struct Hit {
     float v;
 };
 
-// Walks the node pairs (shared/types.h, BvhNodePair): one fetch gives both children's boxes.
-// Each step handles one leaf or one pair, so the warp's threads run the same code: a hit child
-// that is a leaf is entered like an interior one (current = (first, count)) and its primitives are
-// tested on the next step; of two hit children the nearer is entered, the farther pushed.
 // anyHit: stop at the first hit below tMax (shadow rays) instead of finding the closest.
-Hit traverseBvhPairs(vec3 o, vec3 d, float tMax, bool anyHit) {
+Hit traverseBvh(vec3 o, vec3 d, float tMax, bool anyHit) {
     Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0);
     if (frame.nodeCount == 0u) return hit;
     vec3 invD = safeInverse(d);
-    uvec2 stack[PN_BVH_STACK_SIZE];
-    uint depth = 0u;
-    uvec2 current = uvec2(0u, 0u);  // (index, count): count 0 is a node pair, else a leaf
-    while (true) {
-        if (current.y > 0u) {
-            for (uint i = current.x; i < current.x + current.y; ++i) {
-                PN_COUNT_TRIANGLE();
-                float t, u, v;
-                if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
-                    hit = Hit(t, i, u, v);
-                    if (anyHit) return hit;
-                }
-            }
-        } else {
-            BvhNodePair node = nodes[current.x];
-            PN_COUNT_NODE();
-            float tLeft = slabEntry(node.leftMin, node.leftMax, o, invD, hit.t);
-            float tRight = slabEntry(node.rightMin, node.rightMax, o, invD, hit.t);
-            uvec2 left = uvec2(node.leftIndex, node.leftCount), right = uvec2(node.rightIndex, node.rightCount);
-            if (tLeft != PN_INFINITY && tRight != PN_INFINITY) {
-                bool leftFirst = tLeft <= tRight;
-                stack[depth++] = leftFirst ? right : left;
-                current = leftFirst ? left : right;
-                continue;
-            }
-            if (tLeft != PN_INFINITY || tRight != PN_INFINITY) {
-                current = tLeft != PN_INFINITY ? left : right;
-                continue;
-            }
-        }
-        if (depth == 0u) break;
-        current = stack[--depth];
-    }
-    return hit;
-}
+    if (slabEntry(nodes[0].boundsMin, nodes[0].boundsMax, o, invD, tMax) == PN_INFINITY) return hit;
 
-#ifdef PN_BINARY_NODE_AB
-// The binary BVH as it was walked before node pairs (one node per step, both children's boxes
-// read from the children): kept only for the A/B measurement in docs/PERFORMANCE.md.
-layout(std430, set = 0, binding = PN_BINDING_BINARY_NODES) readonly buffer BinaryNodeBuffer { BvhNode binaryNodes[]; };
-Hit traverseBvhBinary(vec3 o, vec3 d, float tMax, bool anyHit) {
-    Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0);
-    if (frame.nodeCount == 0u) return hit;
-    vec3 invD = safeInverse(d);
-    if (slabEntry(binaryNodes[0].boundsMin, binaryNodes[0].boundsMax, o, invD, tMax) == PN_INFINITY) return hit;
     uint stack[PN_BVH_STACK_SIZE];
     uint depth = 0u;
     uint current = 0u;
     while (true) {
-        BvhNode node = binaryNodes[current];
+        BvhNode node = nodes[current];
+        PN_COUNT_NODE();
         if (node.triCount > 0u) {
             for (uint i = node.firstOrRight; i < node.firstOrRight + node.triCount; ++i) {
+                PN_COUNT_TRIANGLE();
                 float t, u, v;
                 if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
                     hit = Hit(t, i, u, v);
@@ -106,8 +61,8 @@ Hit traverseBvhBinary(vec3 o, vec3 d, float tMax, bool anyHit) {
         }
         uint near = current + 1u;
         uint far = node.firstOrRight;
-        float dNear = slabEntry(binaryNodes[near].boundsMin, binaryNodes[near].boundsMax, o, invD, hit.t);
-        float dFar = slabEntry(binaryNodes[far].boundsMin, binaryNodes[far].boundsMax, o, invD, hit.t);
+        float dNear = slabEntry(nodes[near].boundsMin, nodes[near].boundsMax, o, invD, hit.t);
+        float dFar = slabEntry(nodes[far].boundsMin, nodes[far].boundsMax, o, invD, hit.t);
         if (dFar < dNear) {
             uint swapNode = near; near = far; far = swapNode;
             float swapDist = dNear; dNear = dFar; dFar = swapDist;
@@ -121,14 +76,6 @@ Hit traverseBvhBinary(vec3 o, vec3 d, float tMax, bool anyHit) {
         }
     }
     return hit;
-}
-#endif
-
-Hit traverseBvh(vec3 o, vec3 d, float tMax, bool anyHit) {
-#ifdef PN_BINARY_NODE_AB
-    if (PN_HAS(PN_FEATURE_BINARY_NODES_AB)) return traverseBvhBinary(o, d, tMax, anyHit);
-#endif
-    return traverseBvhPairs(o, d, tMax, anyHit);
 }
 
 Hit traverseBrute(vec3 o, vec3 d, float tMax, bool anyHit) {

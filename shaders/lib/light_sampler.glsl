@@ -101,25 +101,29 @@ struct LightPick {
     float pmf;  // probability of this pick at p
 };
 
-LightPick pickLight(vec3 p, vec3 n, inout uint rng) {
+// Picks with one number u in [0, 1), rescaled at every choice (the part of u within the chosen
+// interval, stretched back to [0, 1)), so stratified u values stay stratified down the tree.
+LightPick pickLight(vec3 p, vec3 n, float u) {
+    const float belowOne = 1.0 - 1.0 / 16777216.0;
     if (frame.lightPickUniform != 0u) {
         if (frame.lightRefCount == 0u) return LightPick(PN_NO_LIGHT, 0.0);
-        uint k = min(uint(rngNext(rng) * float(frame.lightRefCount)), frame.lightRefCount - 1u);
+        uint k = min(uint(u * float(frame.lightRefCount)), frame.lightRefCount - 1u);
         return LightPick(k, 1.0 / float(frame.lightRefCount));
     }
     float tree = treeImportance(p, n);
     float total = totalLightImportance(p, n);
     if (!(total > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
-    float u = rngNext(rng) * total;
+    float x = u * total;
     LightPick pick = LightPick(PN_NO_LIGHT, 0.0);
     for (uint k = 0u; k < frame.topLightCount; ++k) {
         float w = topLightImportance(k, p, n);
         if (!(w > 0.0)) continue;
         pick = LightPick(k, w / total);
-        if (u < w) return pick;
-        u -= w;
+        if (x < w) return pick;
+        x -= w;
     }
-    if (!(tree > 0.0)) return pick;  // rounding carried u past the last top-level light
+    if (!(tree > 0.0)) return pick;  // rounding carried x past the last top-level light
+    u = min(x / tree, belowOne);
     pick = LightPick(PN_NO_LIGHT, tree / total);
     uint node = frame.topLightCount;
     for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
@@ -127,12 +131,14 @@ LightPick pickLight(vec3 p, vec3 n, inout uint rng) {
         if ((child & PN_LIGHT_NODE_LEAF) != 0u) return LightPick(child & ~PN_LIGHT_NODE_LEAF, pick.pmf);
         float first = firstChildProbability(node, p, n);
         if (first < 0.0) break;
-        if (rngNext(rng) < first) {
+        if (u < first) {
             node = node + 1u;
             pick.pmf *= first;
+            u = min(u / first, belowOne);
         } else {
             node = child;
             pick.pmf *= 1.0 - first;
+            u = min((u - first) / (1.0 - first), belowOne);
         }
     }
     return LightPick(PN_NO_LIGHT, 0.0);

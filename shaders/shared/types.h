@@ -50,7 +50,6 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_ENV_TEXELS 24     // environment radiance, one vec4 (rgb, unused) per texel
 #define PN_BINDING_OVERLAY_BOXES 25  // BvhNode per box the viewer's box overlay outlines (bounds only)
 #define PN_BINDING_LIGHT_NODES 26    // LightNode per node of the light BVH (depth-first, root first)
-#define PN_BINDING_BINARY_NODES 28   // A/B only: BvhNode array for the trace kernel's old traversal
 #define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
 #define PN_BINDING_ACTIVE_MASK 29    // uint per pixel: 0 skips the pixel in trace.comp when PN_TRACE_MASKED is set
 
@@ -65,7 +64,6 @@ using namespace penumbra::gpu_types;
 #define PN_FEATURE_TRANSMISSION 32u // glass
 #define PN_FEATURE_ENV_MAP 64u      // an environment map (else the constant background)
 #define PN_FEATURE_BRUTE_FORCE 128u // --accel brute
-#define PN_FEATURE_BINARY_NODES_AB 256u  // A/B only, outside ALL: walk the binary nodes (PENUMBRA_TRAVERSAL=binary)
 #define PN_FEATURE_ALL 0xffu     // every feature above
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
@@ -134,22 +132,6 @@ PN_STRUCT(BvhNode) {
     uint firstOrRight;  //  4
     vec3 boundsMax;     // 12
     uint triCount;      //  4
-};
-
-// A node of the BVH as the GPU walks it, 64 bytes: the bounds of both children of a BvhNode,
-// so one fetch decides where to go (Aila & Laine 2009). A child is a leaf (count > 0: primitives
-// [index, index + count) in leaf order) or an interior node (count == 0: index into this array).
-// Nodes follow the BvhNodes' depth-first order, so a first child that is interior is usually the
-// next node.
-PN_STRUCT(BvhNodePair) {
-    vec3 leftMin;
-    uint leftIndex;
-    vec3 leftMax;
-    uint leftCount;
-    vec3 rightMin;
-    uint rightIndex;
-    vec3 rightMax;
-    uint rightCount;
 };
 
 // Hot triangle data, read on every traversal step: 48 bytes. Edges are precomputed for
@@ -472,9 +454,6 @@ PN_STRUCT(BsdfTestResult) {
 // Layout checks: every offset the shader relies on. A failure here means a field moved.
 static_assert(sizeof(BvhNode) == 32 && offsetof(BvhNode, firstOrRight) == 12 &&
               offsetof(BvhNode, boundsMax) == 16 && offsetof(BvhNode, triCount) == 28);
-static_assert(sizeof(BvhNodePair) == 64 && offsetof(BvhNodePair, leftIndex) == 12 &&
-              offsetof(BvhNodePair, leftCount) == 28 && offsetof(BvhNodePair, rightMin) == 32 &&
-              offsetof(BvhNodePair, rightIndex) == 44 && offsetof(BvhNodePair, rightCount) == 60);
 static_assert(sizeof(TriVerts) == 48 && offsetof(TriVerts, flags) == 12 && offsetof(TriVerts, e1) == 16 &&
               offsetof(TriVerts, e2) == 32);
 static_assert(sizeof(TriAttribs) == 80 && offsetof(TriAttribs, materialId) == 12 &&

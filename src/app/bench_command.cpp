@@ -24,7 +24,7 @@ struct BenchArgs {
     CameraOverrides camera;
     // --viewer: the viewer's whole frame
     bool viewer = false;
-    std::uint32_t spp = 1, denoise = 5, rouletteStart = 3;
+    std::uint32_t spp = 1, denoise = 5, rouletteStart = ViewSettings{}.rouletteStart;
     bool noTemporal = false;
     std::string motion = "static";
     int frames = 200;
@@ -195,7 +195,7 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--spp", args->spp, "--viewer: samples per pixel per frame (default 1)");
     cmd->add_option("--denoise", args->denoise, "--viewer: a-trous denoiser passes, 0 turns it off (default 5)");
     cmd->add_flag("--no-temporal", args->noTemporal, "--viewer: no temporal accumulation");
-    cmd->add_option("--roulette-start", args->rouletteStart, "--viewer: bounce from which Russian roulette may end paths (default 3)");
+    cmd->add_option("--roulette-start", args->rouletteStart, "--viewer: bounce from which Russian roulette may end paths (default 1, as in the viewer)");
     cmd->add_option("--camera-motion", args->motion, "--viewer: static, orbit or walk (default static)");
     cmd->add_option("--frames", args->frames, "--viewer: timed frames (default 200)");
     cmd->add_option("--warmup-frames", args->warmupFrames, "--viewer: untimed frames first, at least (default 30)");

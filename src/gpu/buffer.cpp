@@ -36,6 +36,7 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
     memory_ = MemoryHandle(device, memory);
     PN_VK(vkBindBufferMemory(device, buffer, memory, 0));
     if (kind == MemoryKind::HostVisible) PN_VK(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mapped_));
+    tally_ = BufferTally(req.size);
 }
 
 Buffer::~Buffer() {

@@ -8,6 +8,7 @@
 
 #include "gpu/context.h"
 #include "gpu/handle.h"
+#include "gpu/tally.h"
 
 namespace penumbra::gpu {
 
@@ -32,6 +33,7 @@ public:
 private:
     BufferHandle buffer_;
     MemoryHandle memory_;
+    BufferTally tally_;  // counts this buffer in vulkanTally() while it lives
     VkDeviceSize size_ = 0;
     void* mapped_ = nullptr;
 };

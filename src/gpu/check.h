@@ -1,12 +1,11 @@
 // Every Vulkan call goes through PN_VK: a failure becomes a penumbra::Error naming the call,
-// the VkResult, file and line. Always on, in every build.
+// the VkResult (string_VkResult), file and line. Always on, in every build.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
 namespace penumbra::gpu {
 
-const char* resultName(VkResult result);
 [[noreturn]] void throwVkError(const char* call, VkResult result, const char* file, int line);
 
 }  // namespace penumbra::gpu

@@ -1,5 +1,7 @@
 #include "gpu/context.h"
 
+#include <vulkan/vk_enum_string_helper.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -8,34 +10,14 @@
 
 #include "core/error.h"
 #include "gpu/check.h"
+#include "gpu/tally.h"
 
 namespace penumbra::gpu {
 namespace {
 
-constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
-
-VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
-                                                   VkDebugUtilsMessageTypeFlagsEXT,
-                                                   const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                   void* user) {
-    std::string message = data && data->pMessage ? data->pMessage : "(no message)";
-    std::fprintf(stderr, "penumbra: vulkan validation: %s\n", message.c_str());
-    static_cast<Context*>(user)->recordValidationMessage(std::move(message));
-    return VK_FALSE;
-}
-
 bool envFlag(const char* name) {
     const char* v = std::getenv(name);
     return v && *v && std::strcmp(v, "0") != 0;
-}
-
-bool layerAvailable(const char* name) {
-    std::uint32_t count = 0;
-    PN_VK(vkEnumerateInstanceLayerProperties(&count, nullptr));
-    std::vector<VkLayerProperties> layers(count);
-    PN_VK(vkEnumerateInstanceLayerProperties(&count, layers.data()));
-    return std::any_of(layers.begin(), layers.end(),
-                       [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
 }
 
 int typeRank(VkPhysicalDeviceType type) {
@@ -114,37 +96,34 @@ std::uint32_t presentQueueFamily(VkPhysicalDevice device, VkSurfaceKHR surface, 
     return UINT32_MAX;
 }
 
-VkInstance createInstance(bool validation, const std::vector<std::string>& extraExtensions = {}) {
-    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-    app.pApplicationName = "penumbra";
-    app.pEngineName = "penumbra";
-    app.apiVersion = VK_API_VERSION_1_2;
-    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-    info.pApplicationInfo = &app;
-    const char* layers[] = {kValidationLayer};
-    std::vector<const char*> extensions;
-    for (const std::string& e : extraExtensions) extensions.push_back(e.c_str());
-    if (validation) {
-        info.enabledLayerCount = 1;
-        info.ppEnabledLayerNames = layers;
-        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-    }
-    info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
-    info.ppEnabledExtensionNames = extensions.data();
-    VkInstance instance = VK_NULL_HANDLE;
-    VkResult r = vkCreateInstance(&info, nullptr, &instance);
-    if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED) return VK_NULL_HANDLE;
-    PN_VK(r);
-    return instance;
+// Why the machine has no usable device, or why making one failed. Before any device worked in
+// this process such failures are values (tests skip); after one did, they are bugs and throw.
+std::string unavailable(const std::string& message) {
+    const VulkanTally t = vulkanTally();
+    if (t.devicesCreated == 0) return message;
+    throw Error(message + " (after " + std::to_string(t.devicesCreated) + " Vulkan devices were created and " +
+                std::to_string(t.devicesDestroyed) + " destroyed earlier in this process)");
 }
 
-std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
+struct Enumeration {
+    std::vector<VkPhysicalDevice> devices;
+    std::string error;  // set when enumeration failed or found nothing
+};
+
+Enumeration physicalDevices(VkInstance instance) {
     std::uint32_t count = 0;
-    PN_VK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
+    VkResult r = vkEnumeratePhysicalDevices(instance, &count, nullptr);
     std::vector<VkPhysicalDevice> devices(count);
-    PN_VK(vkEnumeratePhysicalDevices(instance, &count, devices.data()));
+    if (r == VK_SUCCESS && count > 0) r = vkEnumeratePhysicalDevices(instance, &count, devices.data());
+    if (r != VK_SUCCESS && r != VK_INCOMPLETE)
+        return {{}, unavailable(std::string("a Vulkan driver is installed but could not reach a device "
+                                            "(vkEnumeratePhysicalDevices returned ") +
+                                string_VkResult(r) + "); VK_LOADER_DEBUG=error,warn,driver shows why")};
     devices.resize(count);
-    return devices;
+    if (devices.empty())
+        return {{}, unavailable("the Vulkan drivers installed report no device (vkEnumeratePhysicalDevices "
+                                "found none); check that the GPU is visible to this process")};
+    return {devices, {}};
 }
 
 bool hasDeviceExtension(VkPhysicalDevice device, const char* name) {
@@ -156,9 +135,41 @@ bool hasDeviceExtension(VkPhysicalDevice device, const char* name) {
                        [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
-const char* kNoVulkan =
-    "no Vulkan driver could be loaded; install a GPU driver with Vulkan support, or Mesa's "
-    "CPU driver (Debian package mesa-vulkan-drivers)";
+std::string deviceList(const std::vector<DeviceInfo>& infos) {
+    std::string list;
+    for (const DeviceInfo& d : infos) list += (list.empty() ? "" : ", ") + std::to_string(d.index) + " " + d.name;
+    return list;
+}
+
+// What a failed vkCreateDevice means, for a user.
+std::string deviceFailure(VkResult r, const std::string& name) {
+    std::string message = "could not create a Vulkan device on " + name + " (vkCreateDevice returned " +
+                          string_VkResult(r) + ")";
+    switch (r) {
+        case VK_ERROR_OUT_OF_HOST_MEMORY:
+        case VK_ERROR_OUT_OF_DEVICE_MEMORY:
+            message += "; out of memory: other programs may hold the GPU's memory";
+            break;
+        case VK_ERROR_TOO_MANY_OBJECTS:
+            message += "; the driver allows no more devices at once";
+            break;
+        case VK_ERROR_INITIALIZATION_FAILED:
+        case VK_ERROR_DEVICE_LOST:
+            message += "; the driver could not start the device (VK_LOADER_DEBUG=error,warn,driver may say why)";
+            break;
+        case VK_ERROR_EXTENSION_NOT_PRESENT:
+        case VK_ERROR_FEATURE_NOT_PRESENT:
+            message += "; the device lacks a feature Penumbra needs; pick another with --device";
+            break;
+        default:
+            break;
+    }
+    const VulkanTally t = vulkanTally();
+    if (t.devicesCreated > 0)
+        message += " (after " + std::to_string(t.devicesCreated) + " devices were created and " +
+                   std::to_string(t.devicesDestroyed) + " destroyed earlier in this process)";
+    return message;
+}
 
 }  // namespace
 
@@ -178,52 +189,39 @@ std::string versionString(std::uint32_t v) {
 }
 
 std::vector<DeviceInfo> Context::listDevices(std::string* error) {
-    VkInstance instance = createInstance(false);
-    if (!instance) {
-        if (error) *error = kNoVulkan;
+    InstanceResult instance = acquireInstance({});
+    Enumeration found;
+    if (instance.instance) found = physicalDevices(instance.instance->get());
+    const std::string& why = instance.instance ? found.error : instance.error;
+    if (!why.empty()) {
+        if (error) *error = why;
         return {};
     }
     std::vector<DeviceInfo> out;
-    try {
-        auto devices = physicalDevices(instance);
-        for (std::uint32_t i = 0; i < devices.size(); ++i) out.push_back(describe(devices[i], i));
-    } catch (...) {
-        vkDestroyInstance(instance, nullptr);
-        throw;
-    }
-    vkDestroyInstance(instance, nullptr);
+    for (std::uint32_t i = 0; i < found.devices.size(); ++i) out.push_back(describe(found.devices[i], i));
     return out;
 }
 
 ContextResult Context::create(const ContextOptions& options) {
     std::unique_ptr<Context> ctx(new Context());
-    bool validation = options.validation || envFlag("PENUMBRA_VALIDATION");
-    if (validation && !layerAvailable(kValidationLayer))
-        throw Error("Vulkan validation was requested but VK_LAYER_KHRONOS_validation is not "
-                    "installed; install the Debian package vulkan-validationlayers");
-    ctx->instance_ = createInstance(validation, options.instanceExtensions);
-    if (!ctx->instance_) return {nullptr, kNoVulkan};
+    InstanceConfig config;
+    config.validation = options.validation || envFlag("PENUMBRA_VALIDATION");
+    config.extensions = options.instanceExtensions;
+    InstanceResult instance = acquireInstance(config);
+    if (!instance.instance) return {nullptr, unavailable(instance.error)};
+    ctx->instance_ = std::move(instance.instance);
+    if (config.validation) ctx->messenger_ = std::make_unique<Messenger>(ctx->instance_, ctx->log_, options.printValidation);
 
-    if (validation) {
-        VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-        info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                               VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-        info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                           VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
-        info.pfnUserCallback = onValidationMessage;
-        info.pUserData = ctx.get();
-        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(ctx->instance_, "vkCreateDebugUtilsMessengerEXT"));
-        if (!create) throw Error("the Vulkan loader lacks vkCreateDebugUtilsMessengerEXT");
-        PN_VK(create(ctx->instance_, &info, nullptr, &ctx->messenger_));
+    if (options.createSurface) {
+        std::lock_guard lock(ctx->instance_->childMutex());
+        ctx->surface_ = options.createSurface(ctx->instance());
     }
 
-    if (options.createSurface) ctx->surface_ = options.createSurface(ctx->instance_);
-
-    auto devices = physicalDevices(ctx->instance_);
+    Enumeration found = physicalDevices(ctx->instance());
+    if (!found.error.empty()) return {nullptr, found.error};
+    const std::vector<VkPhysicalDevice>& devices = found.devices;
     std::vector<DeviceInfo> infos;
     for (std::uint32_t i = 0; i < devices.size(); ++i) infos.push_back(describe(devices[i], i));
-    if (infos.empty()) return {nullptr, std::string("no Vulkan device was found; ") + kNoVulkan};
 
     std::string selector = options.deviceSelector;
     if (selector.empty())
@@ -241,8 +239,8 @@ ContextResult Context::create(const ContextOptions& options) {
             }
         }
         if (chosen < 0)
-            throw UsageError("no Vulkan device matches '" + selector +
-                             "'; run 'penumbra info' to list devices and pass an index or part of a name");
+            throw UsageError("no Vulkan device matches '" + selector + "' (devices here: " + deviceList(infos) +
+                             "); pass an index or part of a name, as 'penumbra info' lists them");
         if (!infos[chosen].suitable)
             throw UsageError("device " + selector + " (" + infos[chosen].name + ") " +
                              infos[chosen].unsuitableWhy + "; pick another with --device");
@@ -250,9 +248,11 @@ ContextResult Context::create(const ContextOptions& options) {
         for (const DeviceInfo& d : infos)
             if (d.suitable && (chosen < 0 || typeRank(d.type) > typeRank(infos[chosen].type)))
                 chosen = static_cast<int>(d.index);
-        if (chosen < 0)
-            return {nullptr, "no Vulkan device supports Vulkan 1.2 compute; install a newer driver "
-                             "or Mesa's lavapipe (mesa-vulkan-drivers)"};
+        if (chosen < 0) {
+            std::string why;
+            for (const DeviceInfo& d : infos) why += (why.empty() ? "" : "; ") + d.name + " " + d.unsuitableWhy;
+            return {nullptr, unavailable("no Vulkan device here supports Vulkan 1.2 compute (" + why + ")")};
+        }
     }
 
     ctx->physical_ = devices[chosen];
@@ -301,23 +301,28 @@ ContextResult Context::create(const ContextOptions& options) {
     deviceInfo.pQueueCreateInfos = &queueInfo;
     deviceInfo.enabledExtensionCount = static_cast<std::uint32_t>(deviceExtensions.size());
     deviceInfo.ppEnabledExtensionNames = deviceExtensions.data();
-    PN_VK(vkCreateDevice(ctx->physical_, &deviceInfo, nullptr, &ctx->device_));
+    VkResult r = vkCreateDevice(ctx->physical_, &deviceInfo, nullptr, &ctx->device_);
+    if (r != VK_SUCCESS) throw Error(deviceFailure(r, ctx->info_.name));
+    tally::deviceCreated();
     vkGetDeviceQueue(ctx->device_, ctx->queueFamily_, 0, &ctx->queue_);
+    if (ctx->messenger_) ctx->messenger_->setDevice(ctx->device_, ctx->queue_);
     return {std::move(ctx), {}};
 }
 
+// The device goes first, while the messenger still listens: the validation layer reports the
+// objects left alive when the device is destroyed. The instance stays (gpu/instance.h).
 Context::~Context() {
     if (device_) {
         vkDeviceWaitIdle(device_);  // nothing useful to do with a failure while tearing down
         vkDestroyDevice(device_, nullptr);
+        tally::deviceDestroyed();
     }
-    if (surface_) vkDestroySurfaceKHR(instance_, surface_, nullptr);
-    if (messenger_) {
-        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-        if (destroy) destroy(instance_, messenger_, nullptr);
+    if (surface_) {
+        std::lock_guard lock(instance_->childMutex());
+        vkDestroySurfaceKHR(instance(), surface_, nullptr);
     }
-    if (instance_) vkDestroyInstance(instance_, nullptr);
+    messenger_.reset();
+    instance_.reset();
 }
 
 std::uint32_t Context::findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags required) const {
@@ -325,16 +330,6 @@ std::uint32_t Context::findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFl
         if ((typeBits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & required) == required)
             return i;
     return UINT32_MAX;
-}
-
-std::vector<std::string> Context::validationMessages() const {
-    std::lock_guard lock(messagesMutex_);
-    return messages_;
-}
-
-void Context::recordValidationMessage(std::string message) {
-    std::lock_guard lock(messagesMutex_);
-    messages_.push_back(std::move(message));
 }
 
 }  // namespace penumbra::gpu

@@ -1,13 +1,16 @@
-// The Vulkan instance, the chosen physical device, its logical device and one compute queue.
+// A Vulkan device to work with: the chosen physical device, its logical device and one compute
+// queue, on the process's shared instance (gpu/instance.h), with its own validation messenger.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
+
+#include "gpu/instance.h"
+#include "gpu/validation.h"
 
 namespace penumbra::gpu {
 
@@ -34,6 +37,9 @@ struct ContextOptions {
     // Enables VK_LAYER_KHRONOS_validation and records every warning and error it reports.
     // PENUMBRA_VALIDATION=1 turns it on too.
     bool validation = false;
+    // Whether validation messages are also printed to stderr (tests that provoke them on purpose
+    // turn this off).
+    bool printValidation = true;
     // Presentation (the viewer): extra instance extensions, and a function that makes the
     // window's surface once the instance exists. The device then needs one queue family with
     // graphics, compute and present support, and VK_KHR_swapchain.
@@ -44,7 +50,8 @@ struct ContextOptions {
 class Context;
 
 // Creating a context can fail for reasons that are not bugs (no Vulkan driver, no device):
-// those come back as a message so tests can skip cleanly; real errors still throw.
+// those come back as a message so tests can skip cleanly; real errors still throw, among them
+// any failure after an earlier context in this process worked (a driver cannot have vanished).
 struct ContextResult {
     std::unique_ptr<Context> context;
     std::string error;  // set when context is null
@@ -53,14 +60,15 @@ struct ContextResult {
 class Context {
 public:
     static ContextResult create(const ContextOptions& options);
-    // Lists the devices without creating a logical device (for `penumbra info`).
+    // Lists the devices without creating a logical device (for `penumbra info`), on the same
+    // shared instance as contexts without validation.
     static std::vector<DeviceInfo> listDevices(std::string* error);
 
     ~Context();
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
 
-    VkInstance instance() const { return instance_; }
+    VkInstance instance() const { return instance_->get(); }
     VkPhysicalDevice physicalDevice() const { return physical_; }
     VkDevice device() const { return device_; }
     VkQueue queue() const { return queue_; }
@@ -76,16 +84,19 @@ public:
     // VK_KHR_pipeline_executable_properties is on: pipelines can report registers and spills.
     bool pipelineStatisticsSupported() const { return pipelineStatistics_; }
 
-    bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
+    bool validationEnabled() const { return messenger_ != nullptr; }
     // Messages the validation layer reported so far (tests fail if any).
-    std::vector<std::string> validationMessages() const;
-    void recordValidationMessage(std::string message);
+    std::vector<std::string> validationMessages() const { return log_->messages(); }
+    // The same messages, in a log that outlives the context: destroying the device reports the
+    // objects still alive, and a test reads them after the context is gone.
+    std::shared_ptr<const ValidationLog> validationLog() const { return log_; }
 
 private:
     Context() = default;
 
-    VkInstance instance_ = VK_NULL_HANDLE;
-    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    std::shared_ptr<SharedInstance> instance_;
+    std::shared_ptr<ValidationLog> log_ = std::make_shared<ValidationLog>();
+    std::unique_ptr<Messenger> messenger_;
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;
     VkPhysicalDevice physical_ = VK_NULL_HANDLE;
     VkDevice device_ = VK_NULL_HANDLE;
@@ -95,8 +106,6 @@ private:
     bool pipelineStatistics_ = false;
     DeviceInfo info_;
     VkPhysicalDeviceMemoryProperties memory_{};
-    mutable std::mutex messagesMutex_;
-    std::vector<std::string> messages_;
 };
 
 }  // namespace penumbra::gpu

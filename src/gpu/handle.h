@@ -1,9 +1,12 @@
-// Move-only owner of one Vulkan handle, destroyed with the function it was made for.
+// Move-only owner of one Vulkan handle, destroyed with the function it was made for, and counted
+// in vulkanTally() while it lives.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
 #include <utility>
+
+#include "gpu/tally.h"
 
 namespace penumbra::gpu {
 
@@ -11,7 +14,9 @@ template <typename T, void (*Destroy)(VkDevice, T, const VkAllocationCallbacks*)
 class DeviceHandle {
 public:
     DeviceHandle() = default;
-    DeviceHandle(VkDevice device, T handle) : device_(device), handle_(handle) {}
+    DeviceHandle(VkDevice device, T handle) : device_(device), handle_(handle) {
+        if (handle_ != VK_NULL_HANDLE) tally::deviceObjectCreated();
+    }
     DeviceHandle(DeviceHandle&& o) noexcept
         : device_(o.device_), handle_(std::exchange(o.handle_, VK_NULL_HANDLE)) {}
     DeviceHandle& operator=(DeviceHandle&& o) noexcept {
@@ -27,7 +32,10 @@ public:
     ~DeviceHandle() { reset(); }
 
     void reset() {
-        if (handle_ != VK_NULL_HANDLE) Destroy(device_, handle_, nullptr);
+        if (handle_ != VK_NULL_HANDLE) {
+            Destroy(device_, handle_, nullptr);
+            tally::deviceObjectDestroyed();
+        }
         handle_ = VK_NULL_HANDLE;
     }
     T get() const { return handle_; }

@@ -7,7 +7,6 @@
 #include <numeric>
 
 #include "bvh/cache.h"
-#include "bvh/node_pairs.h"
 #include "bvh/sphere.h"
 #include "bvh/triangle.h"
 #include "core/error.h"
@@ -149,7 +148,6 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
     out.buildMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     out.stats = bvh::computeStats(tree, options);
     out.nodes = std::move(tree.nodes);
-    out.nodePairs = bvh::toNodePairs(out.nodes);
 
     out.triVerts.resize(primCount);
     out.triAttribs.resize(primCount);
@@ -231,14 +229,13 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
 
 std::size_t deviceBytes(const SceneArrays& a) {
     auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
-    return bytes(a.nodePairs) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.materials) + bytes(a.lightRefs) +
+    return bytes(a.nodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.materials) + bytes(a.lightRefs) +
            bytes(a.lightNodes) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
            bytes(a.env.alias) + bytes(a.env.radiance);
 }
 
 GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& a)
-    : nodes(gpu::uploadStorageBuffer<shader::BvhNodePair>(ctx, commands, a.nodePairs)),
-      binaryNodes(gpu::uploadStorageBuffer<shader::BvhNode>(ctx, commands, a.nodes)),
+    : nodes(gpu::uploadStorageBuffer<shader::BvhNode>(ctx, commands, a.nodes)),
       triVerts(gpu::uploadStorageBuffer<shader::TriVerts>(ctx, commands, a.triVerts)),
       triAttribs(gpu::uploadStorageBuffer<shader::TriAttribs>(ctx, commands, a.triAttribs)),
       materials(gpu::uploadStorageBuffer<shader::Material>(ctx, commands, a.materials)),
@@ -250,7 +247,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       sphereLights(gpu::uploadStorageBuffer<shader::SphereLight>(ctx, commands, a.sphereLights)),
       envTable(gpu::uploadStorageBuffer<shader::EnvAlias>(ctx, commands, a.env.alias)),
       envTexels(gpu::uploadStorageBuffer<Vec4>(ctx, commands, a.env.radiance)),
-      nodeCount(static_cast<std::uint32_t>(a.nodePairs.size())),
+      nodeCount(static_cast<std::uint32_t>(a.nodes.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
       lightNodeCount(static_cast<std::uint32_t>(a.lightNodes.size())),
       topLightCount(a.topLightCount),

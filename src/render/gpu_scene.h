@@ -16,8 +16,7 @@ namespace penumbra {
 
 // The host-side arrays, kept separate from the upload so tests and tools can use them on the CPU.
 struct SceneArrays {
-    std::vector<shader::BvhNode> nodes;          // the binary BVH (CPU traversal, statistics, overlays)
-    std::vector<shader::BvhNodePair> nodePairs;  // the same tree as the GPU walks it
+    std::vector<shader::BvhNode> nodes;
     std::vector<shader::TriVerts> triVerts;      // leaf order; triangles and spheres (PN_TRI_SPHERE)
     std::vector<shader::TriAttribs> triAttribs;  // leaf order
     std::vector<shader::Material> materials;
@@ -56,7 +55,7 @@ class GpuScene {
 public:
     GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& arrays);
 
-    gpu::Buffer nodes, binaryNodes, triVerts, triAttribs, materials, lightRefs, lightNodes, textures, texels, punctual, sphereLights,
+    gpu::Buffer nodes, triVerts, triAttribs, materials, lightRefs, lightNodes, textures, texels, punctual, sphereLights,
         envTable, envTexels;
     std::uint32_t nodeCount = 0, triCount = 0, lightNodeCount = 0, topLightCount = 0, lightRefCount = 0, punctualCount = 0,
                   sphereCount = 0, sphereLightCount = 0, envWidth = 0, envHeight = 0;

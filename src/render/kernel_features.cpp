@@ -25,8 +25,6 @@ std::uint32_t kernelFeatures(const SceneArrays& a, Accel accel) {
     }
     if (a.env.width > 0) f |= PN_FEATURE_ENV_MAP;
     if (accel == Accel::Brute) f |= PN_FEATURE_BRUTE_FORCE;
-    const char* traversal = std::getenv("PENUMBRA_TRAVERSAL");
-    if (traversal && std::strcmp(traversal, "binary") == 0) f |= PN_FEATURE_BINARY_NODES_AB;
     return f;
 }
 

@@ -70,7 +70,7 @@ void expectPlacedRendersAsBaked(const gpu::Context& ctx, const std::string& form
     writeAll(dir / "world.json", sceneToJson(areaLitWorld()));
     writeAll(dir / "placed.json", sceneWith("mesh." + format, placement.keys()));
     writeAll(dir / "baked.json", sceneWith("baked." + format, ""));
-    RenderSettings settings = testSettings(32, 32, 64, 4);
+    RenderSettings settings = testSettings(32, 32, 96, 4);
     settings.seed = 1;
     const SampledImage expected = renderSamples(ctx, loadSceneJson(dir / "baked.json"), settings);
     settings.seed = 2;

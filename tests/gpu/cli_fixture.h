@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "binary_path.h"
 #include "gpu_fixture.h"
 
 namespace penumbra::test {
@@ -42,7 +43,7 @@ protected:
     RunResult run(const std::string& args, const std::string& env = "") {
         const char* device = std::getenv("PENUMBRA_TEST_DEVICE");
         std::string cmd = "cd '" + dir.string() + "' && env PENUMBRA_DEVICE=" + (device ? device : "llvmpipe") +
-                          " PENUMBRA_VALIDATION=1 " + env + " '" + PENUMBRA_BINARY_PATH + "' " + args +
+                          " PENUMBRA_VALIDATION=1 " + env + " '" + penumbraBinary() + "' " + args +
                           " >stdout.txt 2>stderr.txt";
         int status = std::system(cmd.c_str());
         RunResult result{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stderr.txt"), slurp(dir / "stdout.txt")};

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "binary_path.h"
 #include "gpu_fixture.h"
 #include "image/write.h"
 #include "scene/environment.h"
@@ -43,7 +44,7 @@ protected:
     Result run(const std::string& args) {
         const char* device = std::getenv("PENUMBRA_TEST_DEVICE");
         std::string cmd = "cd '" + dir.string() + "' && env PENUMBRA_DEVICE=" + (device ? device : "llvmpipe") +
-                          " PENUMBRA_VALIDATION=1 '" + PENUMBRA_BINARY_PATH + "' " + args + " >/dev/null 2>stderr.txt";
+                          " PENUMBRA_VALIDATION=1 '" + penumbraBinary() + "' " + args + " >/dev/null 2>stderr.txt";
         int status = std::system(cmd.c_str());
         std::stringstream ss;
         ss << std::ifstream(dir / "stderr.txt").rdbuf();

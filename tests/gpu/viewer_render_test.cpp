@@ -28,6 +28,7 @@ TEST_F(ViewerRenderTest, StillCameraConvergesToTheHeadlessRender) {
     ViewSettings vs;
     vs.samplesPerFrame = 1;
     vs.maxBounces = rs.maxBounces;
+    vs.rouletteStart = rs.rouletteStart;
     for (std::uint32_t k = 0; k < frames; ++k) {
         viewer.commands().run([&](VkCommandBuffer cmd) { viewer.record(cmd, scene.camera, vs); });
         viewer.finishFrame();

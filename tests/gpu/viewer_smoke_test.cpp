@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "binary_path.h"
 #include "scene/io/wad/units.h"
 #include "scene/io/wad/wad_loader.h"
 #include "scene/walk/walk_physics.h"
@@ -37,7 +38,7 @@ RunResult runPenumbra(const fs::path& dir, const std::string& args, bool underXv
     const char* device = std::getenv("PENUMBRA_TEST_DEVICE");
     std::string cmd = "cd '" + dir.string() + "' && env PENUMBRA_VALIDATION=1 PENUMBRA_DEVICE=" +
                       (device ? device : "llvmpipe") + " " +
-                      (underXvfb ? "xvfb-run -a -s '-screen 0 640x480x24' " : "") + PENUMBRA_BINARY_PATH + " " + args +
+                      (underXvfb ? "xvfb-run -a -s '-screen 0 640x480x24' " : "") + penumbraBinary() + " " + args +
                       " 2> stderr.txt > stdout.txt";
     int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(dir / "stderr.txt"), readText(dir / "stdout.txt")};

@@ -50,7 +50,7 @@ TEST_F(GpuTest, AreaLitWorldRendersTheSameRotatedScaledMovedAndMirrored) {
          {R"("scale": 0.4, "rotate": [-70, 45, 110], "translate": [-0.3, 0.5, 0.2])", false},
          {R"("scale": [-1.7, 1.7, 1.7], "rotate": [0, 60, 20], "translate": [1, 0, -1.5])", true},
          {R"("scale": [0.6, 0.6, -0.6], "rotate": [80, 0, 35])", true}},
-        48, "area-lit-world");
+        64, "area-lit-world");
 }
 
 TEST_F(GpuTest, PunctuallyLitWorldRendersTheSameRotatedMovedAndMirrored) {
@@ -58,7 +58,7 @@ TEST_F(GpuTest, PunctuallyLitWorldRendersTheSameRotatedMovedAndMirrored) {
         *ctx, punctuallyLitWorld(),
         {{R"("rotate": [20, 130, -40], "translate": [1, 0.5, -1])", false},
          {R"("scale": [1, -1, 1], "rotate": [0, 30, 0], "translate": [0, 1, 0])", true}},
-        48, "punctually-lit-world");
+        64, "punctually-lit-world");
 }
 
 // Fifty metres from the origin a shadow ray's origin is pushed off its surface by about 1e-3 m

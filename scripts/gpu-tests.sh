@@ -1,0 +1,302 @@
+#!/usr/bin/env bash
+# The GPU test suite on a machine with a real GPU (docs/TESTING.md, "On a GPU host").
+#
+#   scripts/gpu-tests.sh pack [BUILD_DIR]    here, on the Debian machine that built BUILD_DIR (default build):
+#                                            packs every GPU test binary, the penumbra binary the CLI tests run,
+#                                            the Khronos validation layer and the test assets into .gpu/
+#   scripts/gpu-tests.sh run [LOG_DIR]       on the GPU host, from the repository root, after `source .gpu/env.sh`:
+#                                            runs each test binary in ONE process, prints a summary, exits non-zero
+#                                            on any failure, crash, unexpected skip or validation message
+#   scripts/gpu-tests.sh diagnose [LOG_DIR]  on the GPU host likewise: the leak test with one instance per context
+#                                            (the old behaviour) and with the shared instance, and a verdict
+#
+# LOG_DIR (default .gpu/logs) receives summary.txt and gpu-tests.log, or diagnose.txt and diagnose.log.
+# PENUMBRA_TEST_DEVICE picks the device (default NVIDIA); PENUMBRA_GPU_TEST_TIMEOUT limits each binary (seconds).
+# Packing runs ../shared/tools/gpu-pack.sh (GPU_PACK overrides), which needs a checkout whose .git is a
+# folder (the main checkout or a clone, not a `git worktree`).
+set -euo pipefail
+
+# The binaries, run in this order; viewer_smoke_tests only where the build made it (PENUMBRA_VIEWER).
+TEST_BINARIES=(gpu_tests material_tests viewer_gpu_tests cli_tests invariance_tests leak_tests viewer_smoke_tests)
+# Skips that are expected on the GPU host (no display, no xvfb-run there), as extended regexes.
+EXPECTED_SKIPS='xvfb-run is not installed'
+# Real assets the tests read from Debian packages, carried xz-compressed and unpacked at the same paths.
+ASSETS=(/usr/share/games/doom/freedoom1.wad /usr/share/glmark2/models/bunny.obj)
+LAYER_MANIFEST=/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json
+LIMIT_MIB=64  # what the device tool carries: the working tree plus carried folders
+
+die() { echo "gpu-tests: $*" >&2; exit 2; }
+
+pack() {
+  local build=${1:-build}
+  local top; top=$(git rev-parse --show-toplevel)
+  cd "$top"
+  [ -d .git ] || die "gpu-pack.sh writes .git/info/exclude, so run pack in a checkout whose .git is a folder (not a worktree)"
+  local gpu_pack=${GPU_PACK:-$top/../shared/tools/gpu-pack.sh}
+  [ -x "$gpu_pack" ] || die "no packer at $gpu_pack (set GPU_PACK)"
+  local files=() b
+  for b in "${TEST_BINARIES[@]}"; do
+    if [ -x "$build/tests/gpu/$b" ]; then files+=("$build/tests/gpu/$b")
+    elif [ "$b" != viewer_smoke_tests ]; then die "$build/tests/gpu/$b is missing: build first (cmake --build $build)"; fi
+  done
+  [ -x "$build/penumbra" ] || die "$build/penumbra is missing: build first"
+  files+=("$build/penumbra")
+
+  local layer_lib
+  [ -f "$LAYER_MANIFEST" ] || die "$LAYER_MANIFEST is missing: install vulkan-validationlayers"
+  layer_lib=$(sed -n 's/.*"library_path": *"\([^"]*\)".*/\1/p' "$LAYER_MANIFEST")
+  case "$layer_lib" in /*) ;; *) layer_lib=$(ldconfig -p | awk -v n="$layer_lib" '$1 == n {print $NF; exit}') ;; esac
+  [ -f "$layer_lib" ] || die "the validation layer's library was not found"
+
+  "$gpu_pack" "${files[@]}" >/dev/null
+  # The layer's own libraries, where the programs did not bring them already (glibc stays the host's).
+  ldd "$layer_lib" | awk '/=> \//{print $3}' | while read -r lib; do
+    case "$(basename "$lib")" in
+      libc.so*|libm.so*|libpthread.so*|libdl.so*|librt.so*|ld-linux*|libresolv.so*) ;;
+      *) [ -e ".gpu/lib/$(basename "$lib")" ] || cp -L "$lib" .gpu/lib/ ;;
+    esac
+  done
+  rm -rf .gpu/layers .gpu/assets
+  mkdir -p .gpu/layers .gpu/assets
+  xz -T0 -6 -c "$layer_lib" > .gpu/layers/libVkLayer_khronos_validation.so.xz
+  # A relative library_path is resolved against the manifest's folder: the unpacked copy beside it.
+  sed 's|"library_path": *"[^"]*"|"library_path": "./libVkLayer_khronos_validation.so"|' "$LAYER_MANIFEST" \
+    > .gpu/layers/VkLayer_khronos_validation.json
+  local a
+  for a in "${ASSETS[@]}"; do
+    if [ -f "$a" ]; then
+      mkdir -p ".gpu/assets$(dirname "$a")"
+      xz -T0 -6 -c "$a" > ".gpu/assets$a.xz"
+    else
+      echo "gpu-tests: warning: $a is not installed here; the tests that read it will skip there" >&2
+    fi
+  done
+  printf '%s\n' "${TEST_BINARIES[@]}" | while read -r b; do [ -x ".gpu/bin/$b" ] && echo "$b"; done > .gpu/test-binaries
+  # The test binaries travel compressed (a quarter of their size); `run` unpacks them. penumbra stays
+  # runnable as it is, for other commands on the host.
+  for b in $(cat .gpu/test-binaries); do xz -T0 -6 -f ".gpu/bin/$b"; done
+  { git rev-parse --short HEAD; git status --porcelain --untracked-files=no | grep -q . && echo "(with uncommitted changes)" || true; } \
+    | paste -sd' ' > .gpu/commit
+  report_size
+}
+
+# What the device tool would carry: the tracked and untracked-not-ignored files, plus .gpu.
+report_size() {
+  local tree gpu total
+  tree=$(git ls-files -z --cached --others --exclude-standard | xargs -0 stat -c %s 2>/dev/null | awk '{s += $1} END {print s + 0}')
+  gpu=$(du -sb .gpu | cut -f1)
+  total=$((tree + gpu))
+  awk -v g="$gpu" -v t="$tree" -v l="$LIMIT_MIB" 'BEGIN {
+    printf "gpu-tests: packed .gpu/ (%.1f MiB) + working tree (%.1f MiB) = %.1f MiB of the %d MiB the device tool carries\n",
+      g / 1048576, t / 1048576, (g + t) / 1048576, l }'
+  du -sh .gpu/* | sed 's/^/  /'
+  [ "$total" -lt $((LIMIT_MIB * 1048576 * 9 / 10)) ] || die "that is too close to the ${LIMIT_MIB} MiB limit"
+}
+
+# xz -dc, or Python's lzma where the host has no xz.
+unxz_to() {
+  if command -v xz >/dev/null; then xz -dc "$1" > "$2"
+  else python3 -c 'import lzma, shutil, sys; shutil.copyfileobj(lzma.open(sys.argv[1]), open(sys.argv[2], "wb"))' "$1" "$2"; fi
+}
+
+# Everything `run` and `diagnose` need before a test starts.
+prepare_host() {
+  [ -f .gpu/test-binaries ] || die "no .gpu/test-binaries here: run 'scripts/gpu-tests.sh pack' first and carry .gpu"
+  root=$(pwd)
+  if [ ! -f .gpu/layers/libVkLayer_khronos_validation.so ]; then
+    unxz_to .gpu/layers/libVkLayer_khronos_validation.so.xz .gpu/layers/libVkLayer_khronos_validation.so.part
+    mv .gpu/layers/libVkLayer_khronos_validation.so.part .gpu/layers/libVkLayer_khronos_validation.so
+  fi
+  export VK_LAYER_PATH="$root/.gpu/layers"
+  local b
+  for b in $(cat .gpu/test-binaries); do
+    if [ -f ".gpu/bin/$b.xz" ] && [ ! -x ".gpu/bin/$b" ]; then
+      unxz_to ".gpu/bin/$b.xz" ".gpu/bin/$b.part" && chmod +x ".gpu/bin/$b.part" && mv ".gpu/bin/$b.part" ".gpu/bin/$b"
+    fi
+  done
+  local packed target
+  while IFS= read -r -d '' packed; do
+    target=${GPU_TESTS_ASSET_ROOT:-}${packed#.gpu/assets}  # the root is for testing this script only
+    target=${target%.xz}
+    [ -f "$target" ] && continue
+    if mkdir -p "$(dirname "$target")" 2>/dev/null && unxz_to "$packed" "$target.part" 2>/dev/null; then
+      mv "$target.part" "$target"
+    else
+      rm -f "$target.part" 2>/dev/null || true
+      echo "gpu-tests: warning: could not unpack $target (needs root); the tests that read it will skip" >&2
+    fi
+  done < <(find .gpu/assets -name '*.xz' -print0)
+  export PENUMBRA_TEST_DEVICE=${PENUMBRA_TEST_DEVICE:-NVIDIA}
+  export PENUMBRA_TEST_DATA="$root/tests/data"
+  export PENUMBRA_BINARY="$root/.gpu/bin/penumbra"
+  unset PENUMBRA_DEVICE PENUMBRA_INSTANCE_PER_CONTEXT
+  log_dir=${1:-.gpu/logs}
+  mkdir -p "$log_dir"
+  work=$(mktemp -d)
+  timeout_s=${PENUMBRA_GPU_TEST_TIMEOUT:-300}
+}
+
+header() {
+  echo "commit: $(cat .gpu/commit 2>/dev/null || echo unknown)"
+  echo "device selector: PENUMBRA_TEST_DEVICE=$PENUMBRA_TEST_DEVICE; validation layer from $VK_LAYER_PATH"
+  "$PENUMBRA_BINARY" info --device "$PENUMBRA_TEST_DEVICE" 2>&1 | sed 's/^/  /' || true
+}
+
+# run_binary NAME [VAR=value...] [-- TEST_ARGS...]: one test binary in one process; its output goes to
+# $work/NAME.log, its exit status to $work/NAME.rc.
+run_binary() {
+  local name=$1; shift
+  local vars=()
+  while [ $# -gt 0 ] && [ "$1" != -- ]; do vars+=("$1"); shift; done
+  [ $# -gt 0 ] && shift
+  local rc=0
+  env ${vars[@]+"${vars[@]}"} timeout "$timeout_s" ".gpu/bin/$name" --gtest_color=no "$@" > "$work/$name.log" 2>&1 || rc=$?
+  echo "$rc" > "$work/$name.rc"
+}
+
+# Per test: "RESULT<TAB>name<TAB>skip reason" from a gtest log.
+results() {
+  awk '
+    /: Skipped$/ { want = 1; next }
+    want == 1 { reason = $0; want = 0; next }
+    match($0, /^\[ +(OK|FAILED|SKIPPED) +\] .* \([0-9]+ ms\)$/) {
+      r = $0; sub(/^\[ +/, "", r); res = r; sub(/ .*/, "", res)
+      sub(/^[A-Z]+ +\] /, "", r); sub(/ \([0-9]+ ms\)$/, "", r)
+      print res "\t" r "\t" (res == "SKIPPED" ? reason : ""); reason = ""
+    }' "$1"
+}
+
+counts() {
+  results "$1" | awk -F'\t' '{n[$1]++} END {printf "%d passed, %d failed, %d skipped", n["OK"], n["FAILED"], n["SKIPPED"]}'
+}
+
+summarise() {
+  local bad=0 name log rc pass fail skip unexpected ran
+  printf '%-20s %7s %7s %8s %11s  %s\n' binary passed failed skipped exit note
+  for name in $(cat .gpu/test-binaries); do
+    log="$work/$name.log"
+    [ -f "$log" ] || continue
+    rc=$(cat "$work/$name.rc")
+    results "$log" > "$work/$name.results"
+    pass=$(grep -c '^OK' "$work/$name.results" || true)
+    fail=$(grep -c '^FAILED' "$work/$name.results" || true)
+    skip=$(grep -c '^SKIPPED' "$work/$name.results" || true)
+    unexpected=$(grep '^SKIPPED' "$work/$name.results" | grep -Evc "$EXPECTED_SKIPS" || true)
+    ran=$(grep -c '^\[==========\] .* ran\.' "$log" || true)
+    local note=""
+    local last; last=$(grep '^\[ RUN' "$log" | tail -1 | sed 's/^\[ RUN *\] //')
+    if [ "$rc" -eq 124 ]; then note="timed out after ${timeout_s} s, in $last"
+    elif [ "$ran" -eq 0 ]; then note="crashed or stopped (exit $rc) in $last"
+    fi
+    [ "$unexpected" -gt 0 ] && note="$note${note:+; }$unexpected unexpected skips"
+    [ "$rc" -ne 0 ] || [ "$fail" -gt 0 ] || [ "$unexpected" -gt 0 ] || [ "$ran" -eq 0 ] && bad=1
+    printf '%-20s %7s %7s %8s %11s  %s\n' "$name" "$pass" "$fail" "$skip" "$rc" "$note"
+  done
+  echo
+  for name in $(cat .gpu/test-binaries); do
+    [ -f "$work/$name.results" ] || continue
+    awk -F'\t' -v b="$name" '$1 == "FAILED" {print "FAILED  " b ": " $2}' "$work/$name.results"
+    awk -F'\t' -v b="$name" -v ok="$EXPECTED_SKIPS" '$1 == "SKIPPED" {
+      print "SKIPPED " b ": " $2 " -- " $3 ($3 ~ ok ? " (expected: no display on the GPU host)" : " (UNEXPECTED)")}' \
+      "$work/$name.results"
+  done
+  local messages
+  messages=$(cat "$work"/*.log | grep -c 'penumbra: vulkan validation' || true)
+  echo "validation messages: $messages"
+  if [ "$messages" -gt 0 ]; then
+    bad=1
+    cat "$work"/*.log | grep 'penumbra: vulkan validation' | sort | uniq -c | sort -rn | head -5 | cut -c1-400
+  fi
+  grep -h '^\[leak\]' "$work"/leak_tests.log 2>/dev/null | grep -E 'creating|passed|FAILED|reopened' || true
+  echo
+  [ "$bad" -eq 0 ] && echo "RESULT: PASS" || echo "RESULT: FAIL"
+  return "$bad"
+}
+
+run() {
+  prepare_host "${1:-}"
+  local name extra=()
+  # On a GPU, rebuilding the viewer's pipelines is quick: every reopen of the viewer test draws.
+  case "$PENUMBRA_TEST_DEVICE" in *llvmpipe*) ;; *) extra=(PENUMBRA_LEAK_REOPEN_FRAMES=100) ;; esac
+  for name in $(cat .gpu/test-binaries); do
+    local start=$SECONDS
+    run_binary "$name" ${extra[@]+"${extra[@]}"}
+    echo "gpu-tests: $name: exit $(cat "$work/$name.rc") after $((SECONDS - start)) s, $(counts "$work/$name.log")" >&2
+  done
+  local status=0
+  { header; echo; summarise; } > "$log_dir/summary.txt" || status=$?
+  for name in $(cat .gpu/test-binaries); do
+    echo "===== $name (exit $(cat "$work/$name.rc"))"
+    cat "$work/$name.log"
+  done > "$log_dir/gpu-tests.log"
+  cat "$log_dir/summary.txt"
+  rm -rf "$work"
+  return "$status"
+}
+
+# leak_run LABEL [VAR=value...]: the context leak test once; prints its lines, fails when it failed.
+leak_run() {
+  local label=$1; shift
+  run_binary leak_tests "$@" -- --gtest_filter='ContextLeakTest.*'
+  mv "$work/leak_tests.log" "$work/$label.log"
+  mv "$work/leak_tests.rc" "$work/$label.rc"
+  { echo "===== $label: $* (exit $(cat "$work/$label.rc"))"; cat "$work/$label.log"; } >> "$log_dir/diagnose.log"
+  echo "--- $label (${*:-default settings}): exit $(cat "$work/$label.rc")"
+  grep -h '^\[leak\]' "$work/$label.log" | grep -Ev '^\[leak\] after [0-9]+: ' | cut -c1-600 || true
+  grep -hE '^\[leak\] after [0-9]+: ' "$work/$label.log" | tail -2 | cut -c1-600 || true
+  [ "$(cat "$work/$label.rc")" -eq 0 ]
+}
+
+diagnose() {
+  prepare_host "${1:-}"
+  : > "$log_dir/diagnose.log"
+  local old=0 new=0 noval=1 fds=1
+  {
+    header
+    echo
+    leak_run per-context PENUMBRA_INSTANCE_PER_CONTEXT=1 || old=1
+    leak_run shared || new=1
+    if [ "$old" -eq 1 ]; then
+      if leak_run per-context-no-validation PENUMBRA_INSTANCE_PER_CONTEXT=1 PENUMBRA_LEAK_VALIDATION=0; then noval=0; fi
+      local hard; hard=$(ulimit -Hn)
+      [ "$hard" = unlimited ] && hard=1048576
+      if [ "$hard" != "$(ulimit -Sn)" ]; then
+        if ( ulimit -Sn "$hard" && leak_run per-context-fd-limit-"$hard" PENUMBRA_INSTANCE_PER_CONTEXT=1 ); then fds=0; fi
+      else
+        echo "--- the open-file limit is already at its maximum ($hard): no run with a higher one"
+      fi
+    fi
+    run_binary material_tests PENUMBRA_INSTANCE_PER_CONTEXT=1
+    { echo "===== material_tests with PENUMBRA_INSTANCE_PER_CONTEXT=1 (exit $(cat "$work/material_tests.rc"))"
+      cat "$work/material_tests.log"; } >> "$log_dir/diagnose.log"
+    echo "--- material_tests with one instance per context: exit $(cat "$work/material_tests.rc"), $(counts "$work/material_tests.log")"
+    grep -m1 -A2 'Failure$' "$work/material_tests.log" | cut -c1-600 || true
+    echo
+    if [ "$old" -eq 1 ] && [ "$new" -eq 0 ]; then
+      echo "VERDICT: instance cycling was the cause: with one VkInstance per context the driver refused a context"
+      echo "  (see 'FAILED: context N ...' above), with the shared instance all contexts worked and nothing grew."
+      if [ "$noval" -eq 0 ]; then
+        echo "  Without the validation layer the per-context run passed: the layer's per-instance state is involved."
+      fi
+      if [ "$fds" -eq 0 ]; then
+        echo "  With the open-file limit raised the per-context run passed: it ran out of file descriptors."
+      fi
+    elif [ "$old" -eq 0 ] && [ "$new" -eq 0 ]; then
+      echo "VERDICT: NOT instance cycling: one instance per context also created every context. Compare the material_tests"
+      echo "  run above with the suite's: the failure needs something else those tests do (see the 'after N' lines for growth)."
+    else
+      echo "VERDICT: the shared instance did not fix it: read the shared run's FAILED line (call, VkResult, contexts made)"
+      echo "  and its 'after N' lines (fds, threads, mappings, memory) to see what grows per context."
+    fi
+  } > "$log_dir/diagnose.txt" 2>&1
+  cat "$log_dir/diagnose.txt"
+  rm -rf "$work"
+  [ "$new" -eq 0 ]
+}
+
+case "${1:-}" in
+  pack) shift; pack "$@" ;;
+  run) shift; run "$@" ;;
+  diagnose) shift; diagnose "$@" ;;
+  *) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
+esac
