@@ -69,7 +69,7 @@ RenderKey renderKey(const Renderer& renderer, const AdaptiveSettings& adaptive) 
     };
     add(&kVersion, sizeof kVersion);
     const SceneArrays& a = renderer.sceneArrays();
-    addVector(a.nodePairs);
+    addVector(a.nodes);
     addVector(a.triVerts);
     addVector(a.triAttribs);
     addVector(a.materials);
