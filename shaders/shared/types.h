@@ -322,6 +322,7 @@ PN_STRUCT(FrameUniforms) {
 #define PN_DEBUG_INSET_MARGIN 8u
 #define PN_OVERLAY_COLOR 0xff00ffffu  // RGBA8 of an outlined pixel: opaque yellow
 #define PN_TRACE_MASKED 1u       // PassPush.mode bit of trace.comp: read the active mask (adaptive sampling)
+#define PN_GBUFFER_SUBPIXEL 1u    // PassPush.mode bit of gbuffer.comp: trace cell passIndex of a 4x4 grid in the pixel
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
 // The denoiser's per-pixel guide, written by temporal.comp: x = the shading normal, octahedral,
 // packSnorm2x16; y = the linear depth's float bits (0: the primary ray missed). 8 bytes instead of

@@ -54,24 +54,49 @@ FinalFramePasses::~FinalFramePasses() = default;
 
 void FinalFramePasses::runGBuffer() {
     if (gbufferDone_) return;
+    const std::size_t n = std::size_t(width_) * height_;
     GBufferPass pass(ctx_, renderer_.gpuScene(), renderer_.frameUniforms(), viewerUniforms_, gbuffer_,
                      kernelFeatures(renderer_.sceneArrays(), renderer_.settings().accel));
-    commands_.run([&](VkCommandBuffer cmd) { pass.record(cmd, width_, height_); });
+    auto trace = [&](int subpixel) {
+        commands_.run([&](VkCommandBuffer cmd) { pass.record(cmd, width_, height_, subpixel); });
+        return gpu::downloadBuffer<shader::GBufferTexel>(ctx_, commands_, gbuffer_, n);
+    };
+    // The centre ray's surface, normal and depth guide the filter; the albedo is averaged over
+    // a 4x4 grid of the pixel, as the radiance is over its jittered samples. (Demodulating an
+    // antialiased edge or a texture finer than a pixel by the centre's albedo alone would divide
+    // one texel's radiance by its neighbour's colour.) A ray that misses counts as albedo 0 in
+    // the AOV and as 1 (nothing divided out) for the denoiser, as demodulationAlbedo says.
+    std::vector<shader::GBufferTexel> texels = trace(-1);
+    std::vector<Vec3> demodulation(n, Vec3{0.0f});
+    albedo_.assign(n, Vec3{0.0f});
+    constexpr int kCells = 16;
+    for (int cell = 0; cell < kCells; ++cell) {
+        const std::vector<shader::GBufferTexel> sub = trace(cell);
+        for (std::size_t i = 0; i < n; ++i) {
+            const bool hit = sub[i].surfaceId != 0;
+            albedo_[i] = albedo_[i] + (hit ? sub[i].albedo : Vec3{0.0f}) / float(kCells);
+            demodulation[i] = demodulation[i] + (hit ? max(sub[i].albedo, Vec3{1e-3f}) : Vec3{1.0f}) / float(kCells);
+        }
+    }
+    centre_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        centre_[i] = texels[i];
+        texels[i].albedo = demodulation[i];
+    }
+    gbuffer_ = gpu::uploadStorageBuffer(ctx_, commands_, std::span<const shader::GBufferTexel>(texels));
     gbufferDone_ = true;
 }
 
 FrameGuides FinalFramePasses::guides() {
     runGBuffer();
     const std::size_t n = std::size_t(width_) * height_;
-    const auto texels = gpu::downloadBuffer<shader::GBufferTexel>(ctx_, commands_, gbuffer_, n);
     FrameGuides g;
-    g.albedo.resize(n);
+    g.albedo = albedo_;
     g.normal.resize(n);
     g.depth.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        g.albedo[i] = texels[i].albedo;
-        g.normal[i] = texels[i].normal;
-        g.depth[i] = texels[i].depth;
+        g.normal[i] = centre_[i].normal;
+        g.depth[i] = centre_[i].depth;
     }
     return g;
 }

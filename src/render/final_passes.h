@@ -17,12 +17,15 @@
 #include "image/image.h"
 #include "render/accumulator.h"
 #include "render/renderer.h"
+#include "shared/types.h"
 
 namespace penumbra {
 
-// What the pixel-centre primary ray saw (gbuffer.comp): noise-free guides, not antialiased.
+// What the primary rays saw (gbuffer.comp): noise-free guides. The albedo is averaged over the
+// pixel (16 rays on a 4x4 grid, like the image's jittered samples); normal and depth are the
+// pixel centre's (an average of normals or depths across an edge is no surface at all).
 struct FrameGuides {
-    std::vector<Vec3> albedo;  // textured base colour; 0 where the ray missed
+    std::vector<Vec3> albedo;  // textured base colour; 0 where the rays missed
     std::vector<Vec3> normal;  // unit shading normal facing the camera; 0 where the ray missed
     std::vector<float> depth;  // distance along the view axis; 0 where the ray missed
 };
@@ -51,7 +54,9 @@ private:
     const Renderer& renderer_;
     std::uint32_t width_, height_;
     gpu::Commands commands_;
-    gpu::Buffer viewerUniforms_, gbuffer_;
+    gpu::Buffer viewerUniforms_, gbuffer_;  // after runGBuffer: centre texels, albedo for demodulation
+    std::vector<shader::GBufferTexel> centre_;
+    std::vector<Vec3> albedo_;  // averaged over the pixel, 0 for misses (the AOV)
     bool gbufferDone_ = false;
 };
 
