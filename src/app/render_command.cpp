@@ -127,9 +127,14 @@ void runRender(const RenderArgs& args, const CLI::App& cmd) {
     FrameJob& job = loaded.job;
     applyFrameOptions(args, job);
     const bool sequence = !args.frames.empty();
+    const FrameRange frames = sequence ? parseFrames(args.frames) : FrameRange{};
     const std::filesystem::path output = defaultOutput(args, sequence);
     // Fail before rendering, not after: a bad name or folder would waste the whole render.
     formatFromPath(output);
+    std::error_code ec;
+    if (!sequence && !args.resume.empty() && !std::filesystem::is_regular_file(args.resume, ec))
+        throw Error("--resume " + args.resume + ": no such checkpoint file (it is OUTPUT.state, written by --checkpoint "
+                    "or when a render is interrupted)");
     checkWritable(sequence ? framePath(output, 0) : output);
     if (job.aovs.any()) checkWritable(aovPathFor(output));
 
@@ -140,7 +145,7 @@ void runRender(const RenderArgs& args, const CLI::App& cmd) {
         if (!args.resume.empty() && args.resume != output.string())
             throw UsageError("with --frames, --resume takes the output pattern ('" + output.string() + "')");
         renderSequence(*ctx, loaded.scene, job, output,
-                       SequenceOptions{parseFrames(args.frames), args.fps, args.time, !args.resume.empty()});
+                       SequenceOptions{frames, args.fps, args.time, !args.resume.empty()});
         return;
     }
     applySceneTime(loaded.scene, args.time);
