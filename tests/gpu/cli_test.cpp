@@ -67,7 +67,7 @@ TEST_F(CliTest, BadFlagsAreUsageErrors) {
     expectOneLineError(run("render --look-at 0,0,-800 --camera 0,0,-800"), 2, "look-at");
     expectOneLineError(run("render --accel octree"), 2, "bvh");
     expectOneLineError(run("render --mis sometimes"), 2, "light");
-    expectOneLineError(run("render -o picture.jpg"), 2, ".png");
+    expectOneLineError(run("render -o picture.gif"), 2, ".png");
     EXPECT_TRUE(filesIn(dir).empty());
 }
 

@@ -6,6 +6,7 @@
 #include <set>
 
 #include <nlohmann/json.hpp>
+#include <stb/stb_image.h>
 
 #include "cli_fixture.h"
 #include "image/exr_layers.h"
@@ -133,6 +134,35 @@ TEST_F(CliTest, FramesFollowACameraPathOneFileEachAndResumeSkipsFinishedOnes) {
     EXPECT_NE(again.err.find("2 finished frames were skipped"), std::string::npos) << again.err;
     EXPECT_NE(again.err.find("frame 1 "), std::string::npos) << again.err;
     EXPECT_TRUE(fs::exists(dir / "f_01.exr"));
+}
+
+TEST_F(CliTest, JpegTgaBmpAndRadianceHdrOutputs) {
+    for (const char* name : {"a.jpg", "a.tga", "a.bmp", "a.hdr"}) {
+        ASSERT_EQ(run(std::string(kSmall) + "--spp 2 -q -o " + name).exitCode, 0) << name;
+        int w = 0, h = 0, n = 0;
+        void* data = std::string(name) == "a.hdr" ? static_cast<void*>(stbi_loadf((dir / name).c_str(), &w, &h, &n, 3))
+                                                  : static_cast<void*>(stbi_load((dir / name).c_str(), &w, &h, &n, 3));
+        ASSERT_NE(data, nullptr) << name;
+        EXPECT_EQ(w, 8);
+        EXPECT_EQ(h, 8);
+        stbi_image_free(data);
+    }
+}
+
+// A plain `render` on lavapipe picks a size and a budget that finish in about 10 s, and says so.
+TEST_F(CliTest, OnACpuThePlainRenderIsSmallAndBudgeted) {
+    const RunResult r = run("render -o a.png");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("runs Vulkan on the CPU, so this render is 320x240"), std::string::npos) << r.err;
+    int w = 0, h = 0, n = 0;
+    unsigned char* data = stbi_load((dir / "a.png").c_str(), &w, &h, &n, 3);
+    ASSERT_NE(data, nullptr);
+    stbi_image_free(data);
+    EXPECT_EQ(w, 320);
+    EXPECT_EQ(h, 240);
+    // A size chosen by the user is kept, and nothing is said.
+    const RunResult sized = run("render --width 8 --height 8 --spp 1 -o b.png");
+    EXPECT_EQ(sized.err.find("runs Vulkan on the CPU"), std::string::npos) << sized.err;
 }
 
 TEST_F(CliTest, BadFinalFrameOptionsAreOneLineErrors) {
