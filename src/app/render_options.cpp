@@ -46,8 +46,8 @@ std::filesystem::path statePathFor(const std::filesystem::path& output) {
 
 void addRenderOptions(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("scene", a.scene,
-                   "built-in scene (cornell, furnace, ...) or a .obj, .ply, .gltf, .glb, .wad, .json file, or one Assimp "
-                   "reads (.fbx, .dae, .3ds, .stl, ...) (default cornell)");
+                   "built-in scene (cornell, furnace, ...) or a .obj, .ply, .gltf, .glb, .wad or .json file (default "
+                   "cornell)");
     cmd.add_option("--map", a.map, "level of a .wad file, e.g. E1M1 or MAP01 (default: the first)");
     cmd.add_option("-o,--output", a.output,
                    "output file, .png or .exr (default out/SCENE.png); with --frames, %04d in the name is the frame number");

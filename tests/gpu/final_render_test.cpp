@@ -100,6 +100,22 @@ TEST_F(GpuTest, ResumedAdaptiveRenderEqualsTheUninterruptedOne) {
     expectIdentical(resumed, renderStraight(*ctx, scene, s, adaptive));
 }
 
+TEST_F(GpuTest, CheckpointsComeDuringTheRenderNeverAfterIt) {
+    const RenderSettings s = finalSettings(8, 24, 1);
+    Renderer renderer(*ctx, makeCornellBox(), s);
+    ProgressiveRender render(renderer, AdaptiveSettings{});
+    RenderBudget b = samplesBudget(24);
+    b.checkpointSeconds = 1e-9;  // after every submission but the last
+    std::vector<std::uint32_t> at;
+    b.onCheckpoint = [&] { at.push_back(render.samplesPerPixel()); };
+    ASSERT_EQ(render.run(b), StopReason::Samples);
+    ASSERT_FALSE(at.empty());
+    for (std::size_t i = 0; i < at.size(); ++i) {
+        EXPECT_LT(at[i], 24u);
+        if (i > 0) EXPECT_GT(at[i], at[i - 1]);
+    }
+}
+
 // Rows 0-15 see a uniform sky (every sample the same: converged at once), rows 16-31 a grey
 // floor it lights, and a dark ball on the floor whose occlusion makes the floor noisy (never
 // converged at a tiny threshold; under the open sky alone a diffuse floor has no variance).
