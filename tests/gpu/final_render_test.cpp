@@ -263,13 +263,13 @@ DenoiseResult denoiseAgainstReference(const gpu::Context& ctx, const Scene& scen
     return r;
 }
 
-// At 24x24 the filter's widest step spans most of the image, so the gain is far below what a
-// full-size render gets (docs/RENDERING.md); 2.5 dB measured on lavapipe, 1.5 asserted.
-TEST_F(GpuTest, DenoisingTheCornellBoxGainsAtLeastOneAndAHalfDecibels) {
-    const DenoiseResult r = denoiseAgainstReference(*ctx, makeCornellBox(), 24, 8, 512);
+// 4.7 dB measured on lavapipe (the 256-spp reference's own noise caps any gain at 15 dB);
+// 3 asserted.
+TEST_F(GpuTest, DenoisingTheCornellBoxGainsAtLeastThreeDecibels) {
+    const DenoiseResult r = denoiseAgainstReference(*ctx, makeCornellBox(), 64, 8, 256);
     const double gain = psnrGain(r.noisy, r.denoised, r.reference);
-    std::printf("Cornell box 24x24, 8 spp: PSNR gain %.2f dB\n", gain);
-    EXPECT_GT(gain, 1.5);
+    std::printf("Cornell box 64x64, 8 spp: PSNR gain %.2f dB\n", gain);
+    EXPECT_GT(gain, 3.0);
     EXPECT_NEAR(meanLuminance(displayed(r.denoised)), meanLuminance(displayed(r.reference)),
                 0.03 * meanLuminance(displayed(r.reference)));
 }
