@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     penumbra::app::registerInfo(app, action);
     penumbra::app::registerBench(app, action);
     penumbra::app::registerExport(app, action);
+    penumbra::app::registerCompare(app, action);
 #ifdef PENUMBRA_HAVE_VIEWER
     penumbra::app::registerView(app, action);
 #endif

@@ -165,6 +165,23 @@ TEST_F(CliTest, OnACpuThePlainRenderIsSmallAndBudgeted) {
     EXPECT_EQ(sized.err.find("runs Vulkan on the CPU"), std::string::npos) << sized.err;
 }
 
+TEST_F(CliTest, CompareReportsTheNumbersAndReadsMultiLayerFiles) {
+    ASSERT_EQ(run(std::string(kSmall) + "--spp 2 -q -o a.exr --aov albedo").exitCode, 0);
+    ASSERT_EQ(run(std::string(kSmall) + "--spp 8 -q -o b.exr").exitCode, 0);
+    const RunResult same = run("compare a.exr a.exr");
+    ASSERT_EQ(same.exitCode, 0) << same.err;
+    EXPECT_NE(same.out.find("rmse 0\n"), std::string::npos) << same.out;
+    EXPECT_NE(same.out.find("psnr inf dB"), std::string::npos) << same.out;
+    const RunResult other = run("compare a.exr b.exr");
+    ASSERT_EQ(other.exitCode, 0) << other.err;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(other.out, m, std::regex("psnr ([0-9.]+) dB"))) << other.out;
+    EXPECT_GT(std::stod(m[1]), 5.0);
+    ASSERT_EQ(run("render cornell --width 4 --height 4 --spp 1 -q -o c.exr").exitCode, 0);
+    expectOneLineError(run("compare a.exr c.exr"), 1, "different sizes");
+    expectOneLineError(run("compare a.exr none.exr"), 1, "none.exr");
+}
+
 TEST_F(CliTest, BadFinalFrameOptionsAreOneLineErrors) {
     expectOneLineError(run("render --time-limit 5x"), 2, "--time-limit");
     expectOneLineError(run("render --noise-threshold 2"), 2, "--noise-threshold");
