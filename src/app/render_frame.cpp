@@ -23,12 +23,13 @@ void writeCheckpointFiles(const std::filesystem::path& output, const FrameJob& j
 }
 
 [[noreturn]] void throwInterrupted(int signal, const std::filesystem::path& output, std::uint32_t spp,
-                                   std::uint32_t target) {
+                                   const FrameJob& job) {
     const std::string state = statePathFor(output).string();
+    const std::string resume = job.resumeArgument.empty() ? state : job.resumeArgument;
     throw Interrupted(std::string("interrupted by ") + StopOnSignals::signalName(signal) + " at " + std::to_string(spp) +
-                          " of " + std::to_string(target) + " spp; the image so far is in " + output.string() +
-                          " and the state in " + state + "; run the same command with --resume " + state +
-                          " to finish",
+                          " of " + std::to_string(job.settings.samplesPerPixel) + " spp; the image so far is in " +
+                          output.string() + " and the state in " + state + "; run the same command with --resume '" +
+                          resume + "' to finish",
                       128 + signal);
 }
 
@@ -71,7 +72,7 @@ FrameOutcome renderFrame(const gpu::Context& ctx, const Scene& scene, const Fram
 
     if (outcome.reason == StopReason::Signal) {
         writeCheckpointFiles(output, job, render, passes, key);
-        throwInterrupted(StopOnSignals::signal().load(), output, outcome.samplesPerPixel, job.settings.samplesPerPixel);
+        throwInterrupted(StopOnSignals::signal().load(), output, outcome.samplesPerPixel, job);
     }
     writeFrameOutputs(output, job, render, passes, true);
     removeState(output);

@@ -69,6 +69,7 @@ struct FrameJob {
     ProgressMode progress = ProgressMode::Bar;
     bool quiet = false;
     std::string progressLabel = "render";
+    std::string resumeArgument;  // what --resume takes to continue after an interrupt ("": the state file)
 };
 
 // The checkpoint file that goes with an output image: "<output>.state".

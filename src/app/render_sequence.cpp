@@ -60,6 +60,7 @@ void renderSequence(const gpu::Context& ctx, Scene& scene, const FrameJob& job, 
         applySceneTime(scene, double(frame) / o.fps + o.offsetSeconds);
         FrameJob frameJob = job;
         frameJob.progressLabel = "frame " + std::to_string(frame);
+        frameJob.resumeArgument = pattern.string();  // a sequence resumes by its output pattern
         const std::optional<std::filesystem::path> resumeFrom =
             o.resume && haveState ? std::optional<std::filesystem::path>(state) : std::nullopt;
         const FrameOutcome r = renderFrame(ctx, scene, frameJob, output, resumeFrom);

@@ -69,7 +69,7 @@ TEST_F(CliTest, CtrlCKeepsTheImageAndResumeFinishesItAsAnUninterruptedRenderWoul
     const std::string args = std::string(kSmall) + "--spp 1000000 -o a.exr";
     const RunResult r = interruptedRun(dir, args, SIGINT);
     expectOneLineError(r, 128 + SIGINT, "interrupted by SIGINT");
-    EXPECT_NE(r.err.find("--resume a.exr.state"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--resume 'a.exr.state'"), std::string::npos) << r.err;
     ASSERT_TRUE(fs::exists(dir / "a.exr.state"));
     EXPECT_EQ(readExrChannels(dir / "a.exr").width, 8);  // a valid image of what was rendered
     std::smatch m;
@@ -93,11 +93,13 @@ TEST_F(CliTest, CtrlCKeepsTheImageAndResumeFinishesItAsAnUninterruptedRenderWoul
     for (const char* c : {"R", "G", "B"}) EXPECT_EQ(a.channels.at(c), b.channels.at(c)) << c;
 }
 
-TEST_F(CliTest, SigtermAlsoStopsCleanly) {
-    const RunResult r = interruptedRun(dir, std::string(kSmall) + "--spp 1000000 -o a.png", SIGTERM);
+TEST_F(CliTest, SigtermStopsASequenceWhichResumesByItsPattern) {
+    const RunResult r = interruptedRun(dir, std::string(kSmall) + "--spp 1000000 --frames 0..1 -o s_%d.png", SIGTERM);
     expectOneLineError(r, 128 + SIGTERM, "interrupted by SIGTERM");
-    EXPECT_TRUE(fs::exists(dir / "a.png"));
-    EXPECT_TRUE(fs::exists(dir / "a.png.state"));
+    EXPECT_NE(r.err.find("--resume 's_%d.png'"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "s_0.png"));
+    EXPECT_TRUE(fs::exists(dir / "s_0.png.state"));
+    EXPECT_FALSE(fs::exists(dir / "s_1.png"));
 }
 
 TEST_F(CliTest, AovLayersAreNamedAsDocumented) {
