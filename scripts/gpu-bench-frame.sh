@@ -8,7 +8,8 @@
 #   scripts/gpu-bench-frame.sh run                      on the GPU host from the repo root, after
 #                                 `source .gpu/env.sh` (device tool: carry [".gpu", ".assets"])
 #
-# Environment for `run`: BINARIES (default "penumbra"), SCENES (default: all below), OUT.
+# Environment for `run`: BINARIES (default "penumbra"), SCENES (default: all below), OUT, and
+# VIEWER_FLAGS (extra `bench --viewer` options for both figures, e.g. "--roulette-start 3").
 # Per build and scene it writes $OUT/<build>-<scene>-frame.json (1920x1080, 1 spp, 4 bounces,
 # temporal + 5 a-trous passes) and $OUT/<build>-<scene>-error.json: the relative MSE against the
 # build's own 2048-spp reference after ERROR_BUDGET_MS (default 30) of GPU frame time at 480x270,
@@ -62,14 +63,14 @@ for bin in ${BINARIES:-penumbra}; do
     asset=${s%% *}
     case "$asset" in /*) [ -f "$asset" ] || { echo "$name: $asset was not carried, skipped" >&2; continue; } ;; esac
     # shellcheck disable=SC2086
-    "$bin" bench $s --viewer --width 1920 --height 1080 --spp 1 --bounces 4 --denoise 5 --frames 100 --json \
+    "$bin" bench $s --viewer --width 1920 --height 1080 --spp 1 --bounces 4 --denoise 5 --frames 100 --json ${VIEWER_FLAGS:-} \
       > "$out/$bin-$name-frame.json" 2> "$out/$bin-$name-frame.err" || echo "$bin $name: frame bench failed" >&2
     # shellcheck disable=SC2086
     "$bin" render $s --width 480 --height 270 --spp 2048 --bounces 4 --quiet -o "$out/$bin-$name-ref.exr" \
       2> "$out/$bin-$name-ref.err" || echo "$bin $name: reference failed" >&2
     # shellcheck disable=SC2086
     "$bin" bench $s --viewer --width 480 --height 270 --spp 1 --bounces 4 --denoise 5 --frames 10 \
-      --warmup-seconds 0.5 --reference "$out/$bin-$name-ref.exr" --budget-ms "$budget" --json \
+      --warmup-seconds 0.5 --reference "$out/$bin-$name-ref.exr" --budget-ms "$budget" --json ${VIEWER_FLAGS:-} \
       > "$out/$bin-$name-error.json" 2> "$out/$bin-$name-error.err" || echo "$bin $name: error bench failed" >&2
     rm -f "$out/$bin-$name-ref.exr"
   done

@@ -53,7 +53,7 @@ void main() {
     vec3 origin = offsetRayOrigin(p.position, p.normal);
     if (push.mode == PN_RAYBENCH_SHADOW) {
         results[index] = -1.0;
-        LightPick pick = pickLight(p.position, p.normal, rngNext(rng));
+        LightPick pick = pickLight(p.position, p.normal, rngNext(rng), rng);
         if (pick.ref == PN_NO_LIGHT) return;
         LightSample ls = sampleChosenLight(pick, p.position, p.normal, rng);
         if (!(ls.pdf > 0.0)) return;

@@ -73,7 +73,7 @@ vec3 shadeLightSample(ShadingPoint sp, LightSample ls) {
 // Direct light: one light chosen among all of them by the unified sampler (with pickU, a
 // stratified number), one sample of it, one shadow ray.
 vec3 sampleDirectLight(ShadingPoint sp, float pickU, inout uint rng) {
-    LightPick pick = pickLight(sp.surface.position, sp.frame.n, pickU);
+    LightPick pick = pickLight(sp.surface.position, sp.frame.n, pickU, rng);
     if (pick.ref == PN_NO_LIGHT) return vec3(0.0);
     return shadeLightSample(sp, sampleChosenLight(pick, sp.surface.position, sp.frame.n, rng));
 }

@@ -101,13 +101,15 @@ struct LightPick {
     float pmf;  // probability of this pick at p
 };
 
-// Picks with one number u in [0, 1), rescaled at every choice (the part of u within the chosen
-// interval, stretched back to [0, 1)), so stratified u values stay stratified down the tree.
-LightPick pickLight(vec3 p, vec3 n, float u) {
-    const float belowOne = 1.0 - 1.0 / 16777216.0;
+// Picks among the top-level lights with u in [0, 1) (a stratified number: a scene with a few
+// lights gives each its share of a pixel's samples), then down the light tree with fresh numbers
+// from rng: u rescaled level after level would keep too few of its 24 bits to choose fairly deep
+// in a tree of many emitters. Uniform picks take 32 random bits, exact for any count.
+LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
     if (frame.lightPickUniform != 0u) {
         if (frame.lightRefCount == 0u) return LightPick(PN_NO_LIGHT, 0.0);
-        uint k = min(uint(u * float(frame.lightRefCount)), frame.lightRefCount - 1u);
+        uint k, low;
+        umulExtended(rngNextUint(rng), frame.lightRefCount, k, low);  // floor(bits * count / 2^32)
         return LightPick(k, 1.0 / float(frame.lightRefCount));
     }
     float tree = treeImportance(p, n);
@@ -123,7 +125,6 @@ LightPick pickLight(vec3 p, vec3 n, float u) {
         x -= w;
     }
     if (!(tree > 0.0)) return pick;  // rounding carried x past the last top-level light
-    u = min(x / tree, belowOne);
     pick = LightPick(PN_NO_LIGHT, tree / total);
     uint node = frame.topLightCount;
     for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
@@ -131,14 +132,12 @@ LightPick pickLight(vec3 p, vec3 n, float u) {
         if ((child & PN_LIGHT_NODE_LEAF) != 0u) return LightPick(child & ~PN_LIGHT_NODE_LEAF, pick.pmf);
         float first = firstChildProbability(node, p, n);
         if (first < 0.0) break;
-        if (u < first) {
+        if (rngNext(rng) < first) {
             node = node + 1u;
             pick.pmf *= first;
-            u = min(u / first, belowOne);
         } else {
             node = child;
             pick.pmf *= 1.0 - first;
-            u = min((u - first) / (1.0 - first), belowOne);
         }
     }
     return LightPick(PN_NO_LIGHT, 0.0);

@@ -24,7 +24,7 @@ void main() {
     if (push.mode == 0u) {
         RayDesc q = points[i / push.passIndex];
         uint rng = rngSeed(i, 0u, frame.seed);
-        LightPick pick = pickLight(q.origin, q.direction, rngNext(rng));
+        LightPick pick = pickLight(q.origin, q.direction, rngNext(rng), rng);
         float again = pick.ref == PN_NO_LIGHT ? 0.0 : lightPickPmf(pick.ref, q.origin, q.direction);
         results[i] = vec4(uintBitsToFloat(pick.ref), pick.pmf, again, 0.0);
     } else {

@@ -24,7 +24,8 @@ struct BenchArgs {
     CameraOverrides camera;
     // --viewer: the viewer's whole frame
     bool viewer = false;
-    std::uint32_t spp = 1, denoise = 5, rouletteStart = ViewSettings{}.rouletteStart;
+    std::uint32_t spp = 1, denoise = 5;
+    std::optional<std::uint32_t> rouletteStart;  // unset: the scene's, as in the viewer
     bool noTemporal = false;
     std::string motion = "static";
     int frames = 200;
@@ -50,11 +51,11 @@ std::string jsonEscape(const std::string& text) {
 void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Context& ctx, const ViewerBenchOptions& o,
                      const ViewerBenchResult& r) {
     std::printf("{\n  \"scene\": \"%s\",\n  \"device\": \"%s\",\n  \"width\": %u,\n  \"height\": %u,\n"
-                "  \"spp\": %u,\n  \"bounces\": %u,\n  \"temporal\": %s,\n  \"denoise_passes\": %u,\n"
-                "  \"camera_motion\": \"%s\",\n  \"frames\": %d,\n  \"viewer_frame_ms\": %.4f,\n  \"passes\": {",
+                "  \"spp\": %u,\n  \"bounces\": %u,\n  \"roulette_start\": %u,\n  \"temporal\": %s,\n"
+                "  \"denoise_passes\": %u,\n  \"camera_motion\": \"%s\",\n  \"frames\": %d,\n  \"viewer_frame_ms\": %.4f,\n  \"passes\": {",
                 jsonEscape(scene.name).c_str(), jsonEscape(ctx.info().name).c_str(), o.width, o.height, o.view.samplesPerFrame,
-                o.view.maxBounces, o.view.temporal ? "true" : "false", o.view.denoise ? o.view.denoiseIterations : 0,
-                cameraMotionName(o.motion), r.frames, r.frameMs);
+                o.view.maxBounces, o.view.rouletteStart, o.view.temporal ? "true" : "false",
+                o.view.denoise ? o.view.denoiseIterations : 0, cameraMotionName(o.motion), r.frames, r.frameMs);
     const char* sep = "";
     for (const auto& [name, ms] : r.passMs) {
         std::printf("%s\n    \"%s\": %.4f", sep, name.c_str(), ms);
@@ -78,10 +79,10 @@ void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Conte
 
 void printViewerText(const Scene& scene, const gpu::Context& ctx, const ViewerBenchOptions& o,
                      const ViewerBenchResult& r) {
-    std::printf("%s on %s, viewer frame %ux%u, %u spp, %u bounces, temporal %s, %u denoise passes, camera %s; "
+    std::printf("%s on %s, viewer frame %ux%u, %u spp, %u bounces (roulette from %u), temporal %s, %u denoise passes, camera %s; "
                 "medians of %d frames\n",
                 scene.name.c_str(), ctx.info().name.c_str(), o.width, o.height, o.view.samplesPerFrame,
-                o.view.maxBounces, o.view.temporal ? "on" : "off", o.view.denoise ? o.view.denoiseIterations : 0,
+                o.view.maxBounces, o.view.rouletteStart, o.view.temporal ? "on" : "off", o.view.denoise ? o.view.denoiseIterations : 0,
                 cameraMotionName(o.motion), r.frames);
     std::printf("  whole frame      %10.3f ms\n", r.frameMs);
     for (const auto& [name, ms] : r.passMs) std::printf("  %-16s %10.3f ms\n", name.c_str(), ms);
@@ -101,7 +102,6 @@ void runViewerBenchCommand(const BenchArgs& args) {
     o.height = args.height;
     o.view.samplesPerFrame = args.spp;
     o.view.maxBounces = args.bounces;
-    o.view.rouletteStart = args.rouletteStart;
     o.view.temporal = !args.noTemporal;
     o.view.denoise = args.denoise > 0;
     o.view.denoiseIterations = std::max(args.denoise, 1u);
@@ -124,6 +124,8 @@ void runViewerBenchCommand(const BenchArgs& args) {
     o.view.torchColor = scene.torch.color;
     o.view.torchIntensity = scene.torch.intensity;
     o.view.torchRange = scene.torch.range;
+    o.view.rouletteStart = args.rouletteStart.value_or(
+        scene.viewerRouletteStart.value_or(ViewSettings{}.rouletteStart));
     if (scene.camera.apertureRadius > 0) {
         o.view.apertureRadius = scene.camera.apertureRadius;
         o.view.focusDistance = scene.camera.focusDistance;
@@ -195,7 +197,7 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--spp", args->spp, "--viewer: samples per pixel per frame (default 1)");
     cmd->add_option("--denoise", args->denoise, "--viewer: a-trous denoiser passes, 0 turns it off (default 5)");
     cmd->add_flag("--no-temporal", args->noTemporal, "--viewer: no temporal accumulation");
-    cmd->add_option("--roulette-start", args->rouletteStart, "--viewer: bounce from which Russian roulette may end paths (default 1, as in the viewer)");
+    cmd->add_option("--roulette-start", args->rouletteStart, "--viewer: bounce from which Russian roulette may end paths (default as in the viewer: 2 for WAD levels, else 3)");
     cmd->add_option("--camera-motion", args->motion, "--viewer: static, orbit or walk (default static)");
     cmd->add_option("--frames", args->frames, "--viewer: timed frames (default 200)");
     cmd->add_option("--warmup-frames", args->warmupFrames, "--viewer: untimed frames first, at least (default 30)");

@@ -103,7 +103,10 @@ private:
     std::uint32_t width_ = 0, height_ = 0;
     std::uint32_t features_ = PN_FEATURE_ALL;  // what the scene kernels are specialised for
     bool historyValid_ = false;
-    std::uint32_t frameIndex_ = 0;  // frames since the last reset: the trace pass index
+    std::uint32_t frameIndex_ = 0;  // frames since the history was last reset
+    // Frames traced since the renderer was made, never reset: the trace pass index that seeds the
+    // random numbers, so frames without history (temporal off, settings changed) still differ.
+    std::uint32_t tracedFrames_ = 0;
     std::optional<shader::FrameUniforms> previousFrame_;
     std::optional<ViewSettings> previousSettings_;
     bool heatFrame_ = false;

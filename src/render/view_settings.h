@@ -25,10 +25,10 @@ enum class DebugView : std::uint32_t {
 struct ViewSettings {
     std::uint32_t samplesPerFrame = 1;
     std::uint32_t maxBounces = 8;
-    // Russian roulette may end paths from this bounce on. From the first in the viewer: Doom's dark
-    // walls end most paths after one bounce, which halves the frame's rays at no loss in error at
-    // equal time (docs/PERFORMANCE.md); `penumbra render` starts at bounce 3.
-    std::uint32_t rouletteStart = 1;
+    // Russian roulette may end paths from this bounce on. Earlier starts make frames faster but
+    // noisier per unit of time on most scenes (docs/PERFORMANCE.md, "Equal-time error"); a scene
+    // may ask for another start (Scene::viewerRouletteStart: Doom levels use 2).
+    std::uint32_t rouletteStart = 3;
     float resolutionScale = 1.0f;  // render at this fraction of the window, upscaled to it
     bool temporal = true;
     bool denoise = false;

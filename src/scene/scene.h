@@ -174,6 +174,9 @@ struct Scene {
     Vec3 background{0};  // radiance of rays that leave the scene (when environment has no map)
     Environment environment;
     Torch torch;
+    // The bounce from which the viewer's Russian roulette may end paths, where the scene's kind is
+    // known to do better than ViewSettings::rouletteStart at equal time (Doom levels: 2).
+    std::optional<std::uint32_t> viewerRouletteStart;
     // Doom levels: the lines walking collides with (map units); none where a format has no levels.
     std::optional<walk::WalkMap> walkMap;
 

@@ -1,6 +1,8 @@
 // `penumbra bench --viewer`: the viewer's whole frame, headless, with the JSON keys scripts read.
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+
 #include "cli_fixture.h"
 
 namespace penumbra::test {
@@ -39,6 +41,22 @@ TEST_F(BenchCliTest, ViewerCameraMotionsRunAndBadOnesAreUsageErrors) {
     }
     expectOneLineError(run(std::string(kTinyViewer) + " --camera-motion spin"), 2, "static, orbit or walk");
     expectOneLineError(run(std::string(kTinyViewer) + " --denoise 9"), 2, "--denoise");
+}
+
+// Russian roulette starts where the viewer starts it: bounce 3, bounce 2 on Doom levels (the scene
+// asks for it), or where --roulette-start says.
+TEST_F(BenchCliTest, ViewerRouletteStartFollowsTheSceneUnlessGiven) {
+    auto rouletteStart = [&](const std::string& command) {
+        RunResult r = run(command);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return r.exitCode == 0 ? nlohmann::json::parse(r.out).at("roulette_start").get<int>() : -1;
+    };
+    EXPECT_EQ(rouletteStart(kTinyViewer), 3);
+    EXPECT_EQ(rouletteStart(std::string(kTinyViewer) + " --roulette-start 2"), 2);
+    const std::string wad = "/usr/share/games/doom/freedoom1.wad";
+    if (!std::filesystem::exists(wad)) GTEST_SKIP() << wad << " is not installed (Debian package freedoom)";
+    EXPECT_EQ(rouletteStart("bench " + wad + " --map E1M1 --viewer --width 32 --height 20 --frames 1 "
+                            "--warmup-frames 0 --warmup-seconds 0 --json"), 2);
 }
 
 TEST_F(BenchCliTest, EqualTimeErrorAgainstAReference) {

@@ -120,6 +120,34 @@ TEST_F(GpuTest, LightPicksFollowTheProbabilitiesMisUses) {
     }
 }
 
+// Uniform picks among 3 * 2^22 lights: a pick made as floor(u * count) from a 24-bit float u can
+// reach only 2^24 of the indices' fractions, and picks the multiples of 3 twice as often as the
+// others; the picks must be uniform over the residues mod 3 (and over the two halves).
+TEST_F(GpuTest, UniformPicksStayUniformAmongMillionsOfLights) {
+    const Scene scene = manyLightsScene(4, 0.6f, 9);
+    const SceneArrays arrays = buildSceneArrays(scene);
+    const std::vector<shader::RayDesc> point = {queryPoints()[0]};
+    const std::uint32_t count = 3u << 22, picks = 300000;
+    RenderSettings settings;
+    settings.uniformLightPick = true;
+    const auto out = runSceneKernel<Vec4, shader::RayDesc>(
+        *ctx, scene, arrays, "test_light_pick", point, picks, {picks, 0, picks, 0}, settings,
+        [&](shader::FrameUniforms& f) { f.lightRefCount = count; });
+    std::vector<double> residues(3, 0.0), halves(2, 0.0);
+    for (const Vec4& pick : out) {
+        std::uint32_t ref;
+        std::memcpy(&ref, &pick.x, sizeof ref);
+        ASSERT_LT(ref, count);
+        ASSERT_FLOAT_EQ(pick.y, 1.0f / float(count));
+        residues[ref % 3] += 1;
+        halves[ref < count / 2] += 1;
+    }
+    const ChiSquareResult r = chiSquareTest(residues, std::vector<double>(3, picks / 3.0));
+    const ChiSquareResult h = chiSquareTest(halves, std::vector<double>(2, picks / 2.0));
+    EXPECT_GT(r.pValue, 1e-4) << "picks per residue: " << residues[0] << " " << residues[1] << " " << residues[2];
+    EXPECT_GT(h.pValue, 1e-4) << "picks per half: " << halves[0] << " " << halves[1];
+}
+
 // A thousand small emitters facing a floor, seen from above (so no pixel sees an emitter, whose
 // edges would add noise that no light sampler can touch): choosing by contribution changes only
 // the noise, so the image mean agrees with uniform picking within the two estimates' standard

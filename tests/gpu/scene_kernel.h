@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstring>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -17,11 +18,13 @@ namespace penumbra::test {
 template <typename Out, typename In>
 std::vector<Out> runSceneKernel(const gpu::Context& ctx, const Scene& scene, const SceneArrays& arrays,
                                 const std::string& kernel, std::span<const In> input, std::size_t outCount,
-                                shader::PassPush push, const RenderSettings& settings = {}) {
+                                shader::PassPush push, const RenderSettings& settings = {},
+                                const std::function<void(shader::FrameUniforms&)>& editFrame = {}) {
     gpu::Commands commands(ctx);
     GpuScene gpuScene(ctx, commands, arrays);
     shader::FrameUniforms frame =
         makeSceneFrameUniforms(scene.camera, scene.background, scene.environment, settings, gpuScene);
+    if (editFrame) editFrame(frame);
     gpu::Buffer frameBuffer(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryKind::HostVisible);
     std::memcpy(frameBuffer.mapped(), &frame, sizeof(frame));
     gpu::Buffer in = gpu::uploadStorageBuffer<In>(ctx, commands, input);

@@ -47,6 +47,35 @@ TEST_F(ViewerRenderTest, StillCameraConvergesToTheHeadlessRender) {
     EXPECT_GT(total, 0.0);  // the comparison was not between two black images
 }
 
+// Without history (temporal accumulation off) each frame shows only its own samples; they must
+// be new samples every frame, or the noise freezes on the screen.
+TEST_F(ViewerRenderTest, FramesWithoutHistoryDrawNewSamples) {
+    Scene scene = makeCornellBox();
+    const std::uint32_t w = 24, h = 18;
+    InteractiveRenderer viewer(*ctx, scene, false);
+    viewer.resize(w, h);
+    ViewSettings vs;
+    vs.temporal = false;
+    auto frame = [&] {
+        viewer.commands().run([&](VkCommandBuffer cmd) { viewer.record(cmd, scene.camera, vs); });
+        viewer.finishFrame();
+        return gpu::downloadBuffer<shader::HistoryTexel>(*ctx, viewer.commands(), viewer.history(), w * h);
+    };
+    const auto first = frame(), second = frame();
+    std::uint32_t same = 0, lit = 0;
+    for (std::uint32_t i = 0; i < w * h; ++i) {
+        EXPECT_EQ(second[i].samples, 1.0f);
+        if (first[i].color[0] + first[i].color[1] + first[i].color[2] <= 0) continue;
+        ++lit;
+        same += first[i].color[0] == second[i].color[0] && first[i].color[1] == second[i].color[1] &&
+                first[i].color[2] == second[i].color[2];
+    }
+    ASSERT_GT(lit, w * h / 2);
+    // One path per pixel through a diffuse box: a repeat of the same value is rare, except where
+    // both frames see only the light (its emission, no noise).
+    EXPECT_LT(same, lit / 4) << same << " of " << lit << " lit pixels are unchanged";
+}
+
 TEST_F(ViewerRenderTest, HeatMapMaximaAreCountsWithinTheBvh) {
     Scene scene = makeCornellBox();
     InteractiveRenderer viewer(*ctx, scene, false);

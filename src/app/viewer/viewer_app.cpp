@@ -71,9 +71,10 @@ bool imguiWantsKeyboard() { return ImGui::GetIO().WantCaptureKeyboard; }
 
 InputState* inputOf(GLFWwindow* w) { return static_cast<InputState*>(glfwGetWindowUserPointer(w)); }
 
-// The torch: attached as the scene's last punctual light so the renderer can move it; when the
-// scene did not ask for one it starts switched off.
-void prepareTorch(Scene& scene, ViewSettings& settings) {
+// What the scene decides of the view. The torch: attached as the scene's last punctual light so
+// the renderer can move it; when the scene did not ask for one it starts switched off. Russian
+// roulette: from the bounce the scene asks for, if any.
+void prepareSceneSettings(Scene& scene, ViewSettings& settings) {
     settings.torch = scene.torch.enabled && scene.torch.intensity > 0;
     if (!settings.torch) {
         scene.torch.enabled = true;
@@ -83,6 +84,7 @@ void prepareTorch(Scene& scene, ViewSettings& settings) {
     settings.torchColor = scene.torch.color;
     settings.torchIntensity = scene.torch.intensity;
     settings.torchRange = scene.torch.range;
+    settings.rouletteStart = scene.viewerRouletteStart.value_or(ViewSettings{}.rouletteStart);
 }
 
 std::string defaultScreenshotPath() {
@@ -245,7 +247,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     settings.samplesPerFrame = options.samplesPerFrame;
     settings.denoise = options.denoise;
     settings.debug = options.debug;
-    prepareTorch(scene, settings);
+    prepareSceneSettings(scene, settings);
 
     Window window(options.width, options.height, "penumbra - " + scene.name);
     gpu::ContextOptions ctxOptions;
@@ -410,7 +412,7 @@ void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& setti
             }
             Scene next = std::move(*opened.scene);
             ViewSettings nextSettings = settings;
-            prepareTorch(next, nextSettings);
+            prepareSceneSettings(next, nextSettings);
             renderer.rebuildScene(next, true);
             scene = std::move(next);
             settings = nextSettings;

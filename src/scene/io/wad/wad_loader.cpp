@@ -276,6 +276,9 @@ private:
         // Doom lights rooms by sector light level, not by lamps; a path tracer needs real light,
         // so levels come with a torch, as in the WebGPU E1M1 renderer we measure against.
         scene_.torch.enabled = true;
+        // Measured on DOOM1 and Freedoom E1M1 (docs/PERFORMANCE.md): roulette from bounce 2 is both
+        // faster and less noisy at equal time than from 3 on their dark walls; from 1 is noisier.
+        scene_.viewerRouletteStart = 2;
         cam.up = Vec3(0, 1, 0);
         for (const Thing& t : map_.things) {
             if (t.type != 1) continue;
