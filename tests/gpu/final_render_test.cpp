@@ -240,7 +240,7 @@ DenoiseResult denoiseAgainstReference(const gpu::Context& ctx, const Scene& scen
     return r;
 }
 
-// 4.7 dB measured on lavapipe (the 256-spp reference's own noise caps any gain at 15 dB);
+// 4.9 dB measured on lavapipe (the 256-spp reference's own noise caps any gain at 15 dB);
 // 3 asserted.
 TEST_F(GpuTest, DenoisingTheCornellBoxGainsAtLeastThreeDecibels) {
     const DenoiseResult r = denoiseAgainstReference(*ctx, makeCornellBox(), 64, 8, 256);
