@@ -9,6 +9,7 @@ packages=(
   mesa-vulkan-drivers vulkan-validationlayers   # lavapipe (CPU Vulkan) + validation for tests
   vulkan-validationlayers-dev                   # vk_enum_string_helper.h (string_VkResult)
   libstb-dev libtinyexr-dev libcli11-dev
+  libopenexr-dev libxxhash-dev                  # render --aov (multi-layer EXR), checkpoint keys
   libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev zlib1g-dev   # zlib: .ply.gz
   libgtest-dev libbenchmark-dev
   libglfw3-dev libimgui-dev xvfb xauth         # the viewer (penumbra view) and its test under Xvfb

@@ -1,7 +1,9 @@
 #version 460
 // The G-buffer: what the pixel-centre primary ray hits (normal, linear depth, textured albedo,
 // surface id) and the motion vector to where that point was in the previous frame. A pass of its
-// own, so the path tracer stays untouched and the denoiser's guides are noise-free.
+// own, so the path tracer stays untouched and the denoiser's guides are noise-free. Final frames
+// also trace the 16 cells of a 4x4 grid in each pixel (PN_GBUFFER_SUBPIXEL) to average the albedo
+// over the pixel as the path tracer's jittered samples average the radiance.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/types.h"
@@ -21,6 +23,8 @@ void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (!insideImage(p)) return;
     vec2 centre = vec2(p) + 0.5;
+    if ((push.mode & PN_GBUFFER_SUBPIXEL) != 0u)
+        centre = vec2(p) + (vec2(float(push.passIndex % 4u), float(push.passIndex / 4u % 4u)) + 0.5) * 0.25;
     vec3 direction = viewDirection(centre);
     Hit hit = traceClosest(frame.cameraPosition, direction, PN_INFINITY);
     GBufferTexel g;

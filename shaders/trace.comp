@@ -27,6 +27,7 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 
 layout(std430, set = 0, binding = PN_BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
 layout(std430, set = 0, binding = PN_BINDING_COUNTERS) buffer CounterBuffer { RayCounters counters; };
+layout(std430, set = 0, binding = PN_BINDING_ACTIVE_MASK) readonly buffer ActiveMask { uint activeMask[]; };
 
 uint closestRays = 0u;
 uint shadowRays = 0u;
@@ -148,7 +149,11 @@ vec3 radiance(vec3 origin, vec3 direction, uint pixelIndex, uint sampleIndex, in
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
-    if (pixel.x < frame.width && pixel.y < frame.height) {
+    // Adaptive sampling (render/adaptive.h): a pixel whose mask entry is 0 takes no samples this
+    // pass. Whole tiles share an entry, so the threads of a workgroup mostly agree and skip together.
+    bool sampled = pixel.x < frame.width && pixel.y < frame.height;
+    if (sampled && (push.mode & PN_TRACE_MASKED) != 0u) sampled = activeMask[pixel.y * frame.width + pixel.x] != 0u;
+    if (sampled) {
         uint pixelIndex = pixel.y * frame.width + pixel.x;
         vec3 sum = vec3(0.0);
         float sumSquares = 0.0;

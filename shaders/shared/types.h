@@ -51,6 +51,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_OVERLAY_BOXES 25  // BvhNode per box the viewer's box overlay outlines (bounds only)
 #define PN_BINDING_LIGHT_NODES 26    // LightNode per node of the light BVH (depth-first, root first)
 #define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
+#define PN_BINDING_ACTIVE_MASK 29    // uint per pixel: 0 skips the pixel in trace.comp when PN_TRACE_MASKED is set
 
 // ---- kernel features: specialization constant 0 of the tracing kernels, a bit set. A pipeline
 // made for a scene leaves out what the scene does not use (render/kernel_features.h); the
@@ -341,6 +342,8 @@ PN_STRUCT(FrameUniforms) {
 #define PN_DEBUG_INSET_DIVISOR 4u
 #define PN_DEBUG_INSET_MARGIN 8u
 #define PN_OVERLAY_COLOR 0xff00ffffu  // RGBA8 of an outlined pixel: opaque yellow
+#define PN_TRACE_MASKED 1u       // PassPush.mode bit of trace.comp: read the active mask (adaptive sampling)
+#define PN_GBUFFER_SUBPIXEL 1u    // PassPush.mode bit of gbuffer.comp: trace cell passIndex of a 4x4 grid in the pixel
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
 // The denoiser's per-pixel guide, written by temporal.comp: x = the shading normal, octahedral,
 // packSnorm2x16; y = the linear depth's float bits (0: the primary ray missed). 8 bytes instead of

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     penumbra::app::registerInfo(app, action);
     penumbra::app::registerBench(app, action);
     penumbra::app::registerExport(app, action);
+    penumbra::app::registerCompare(app, action);
 #ifdef PENUMBRA_HAVE_VIEWER
     penumbra::app::registerView(app, action);
 #endif
@@ -40,6 +41,9 @@ int main(int argc, char** argv) {
     } catch (const penumbra::UsageError& e) {
         std::fprintf(stderr, "penumbra: error: %s\n", e.what());
         return 2;
+    } catch (const penumbra::Interrupted& e) {
+        std::fprintf(stderr, "penumbra: error: %s\n", e.what());
+        return e.exitCode;
     } catch (const penumbra::Error& e) {
         std::fprintf(stderr, "penumbra: error: %s\n", e.what());
         return 1;

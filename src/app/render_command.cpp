@@ -1,43 +1,45 @@
-// penumbra render [SCENE]: progressive headless rendering to PNG or EXR.
+// penumbra render [SCENE]: final frames and image sequences to PNG or EXR (docs/RENDERING.md).
+// The flags live in render_options.cpp, one frame's work in render_frame.cpp, sequences in
+// render_sequence.cpp, the files in render_outputs.cpp.
 #include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 
 #include "app/commands.h"
-#include "app/common_options.h"
+#include "app/render_frame.h"
+#include "app/render_outputs.h"
+#include "app/render_options.h"
+#include "app/render_sequence.h"
 #include "core/atomic_file.h"
-#include "core/progress.h"
+#include "core/duration.h"
+#include "core/error.h"
 #include "image/write.h"
-#include "render/renderer.h"
+#include "scene/animation.h"
 
 namespace penumbra::app {
 namespace {
 
-struct RenderArgs {
-    std::string scene = "cornell";
-    std::string map;
-    std::string output;  // default: out/<scene>.png
-    std::string device;
-    std::string accel = "bvh";
-    std::string mis = "both";
-    float exposure = 0;
-    bool quiet = false;
-    CameraOverrides camera;
-    EnvironmentSpec env;
-    WadOptions wad;
-    RenderSettings settings;
+// What a CPU implementation (lavapipe) renders by default: about ten seconds of work.
+constexpr std::uint32_t kCpuWidth = 320, kCpuHeight = 240;
+constexpr double kCpuSeconds = 10;
+
+struct LoadedRender {
+    Scene scene;
+    FrameJob job;
 };
 
-void runRender(const RenderArgs& args, const CLI::App& cmd) {
-    RenderSettings settings = args.settings;
+// The scene, and the settings with the scene file's defaults under the command line's flags.
+LoadedRender loadRender(const RenderArgs& args, const CLI::App& cmd) {
+    LoadedRender r;
+    RenderSettings& settings = r.job.settings;
+    settings = args.settings;
     settings.accel = parseAccel(args.accel);
     settings.mis = parseMisMode(args.mis);
     validateSettings(settings);
     SceneFileSettings fileSettings;
-    Scene scene = loadScene(args.scene, args.map, args.camera, &fileSettings, args.env, args.wad);
+    r.scene = loadScene(args.scene, args.map, args.camera, &fileSettings, args.env, args.wad);
     // A scene file's render settings apply unless the command line gave the same flag.
     auto fromFile = [&](const char* flag, const auto& value, auto& target) {
         if (value && cmd.count(flag) == 0) target = *value;
@@ -48,41 +50,110 @@ void runRender(const RenderArgs& args, const CLI::App& cmd) {
     fromFile("--height", fileSettings.height, settings.height);
     float exposure = args.exposure;
     fromFile("--exposure", fileSettings.exposure, exposure);
+    r.job.toneMap = ToneMapSettings{exposure};
     validateSettings(settings);
+    // Sizes and budgets the user chose (on the command line or in the scene file) are kept on a CPU.
+    r.job.quiet = args.quiet;
+    const bool sized = cmd.count("--width") || cmd.count("--height") || fileSettings.width || fileSettings.height;
+    const bool budgeted = cmd.count("--spp") || cmd.count("--time-limit") || fileSettings.samplesPerPixel;
+    r.job.progressLabel = sized || budgeted ? "render" : "";  // "": the CPU default may apply
+    return r;
+}
 
-    std::filesystem::path output = args.output;
-    if (output.empty()) {
-        std::string stem = std::filesystem::path(args.scene).stem().string();
-        if (!args.map.empty()) stem += "-" + args.map;
-        output = std::filesystem::path("out") / (stem + ".png");
-        std::error_code ec;
-        std::filesystem::create_directories(output.parent_path(), ec);  // our own default folder
-    }
-    // Fail before rendering, not after: a bad name or folder would waste the whole render.
-    formatFromPath(output);
-    checkWritable(output);
+// The final-frame flags, checked (budget, adaptivity, checkpoints, outputs, progress).
+void applyFrameOptions(const RenderArgs& args, FrameJob& job) {
+    if (!args.timeLimit.empty()) job.timeLimit = parseDuration(args.timeLimit, "--time-limit");
+    if (!(args.noiseThreshold >= 0 && args.noiseThreshold < 1))
+        throw UsageError("--noise-threshold must be a relative error between 0 and 1, e.g. 0.02");
+    job.adaptive.threshold = args.noiseThreshold;
+    if (!(args.checkpointSeconds >= 0 && args.checkpointSeconds <= 1e7))
+        throw UsageError("--checkpoint must be a number of seconds >= 0");
+    job.checkpointSeconds = args.checkpointSeconds;
+    job.denoise = args.denoise;
+    job.aovs = parseAovs(args.aovs);
+    if (args.progress == "bar") job.progress = ProgressMode::Bar;
+    else if (args.progress == "json") job.progress = ProgressMode::Json;
+    else if (args.progress == "none") job.progress = ProgressMode::Off;
+    else throw UsageError("unknown --progress '" + args.progress + "'; use bar, json or none");
+    if (!(args.fps > 0 && args.fps <= 1e6)) throw UsageError("--fps must be a number of frames per second > 0");
+    if (!std::isfinite(args.time) || args.time < -1e9 || args.time > 1e9) throw UsageError("--time must be a number of seconds");
+}
 
-    auto ctx = openDevice(args.device);
-    Renderer renderer(*ctx, scene, settings);
-    const bool showProgress = !args.quiet && isatty(STDERR_FILENO);
-    ProgressBar progress("render", settings.samplesPerPixel, showProgress);
-    auto start = std::chrono::steady_clock::now();
-    renderer.render([&](std::uint32_t done) { progress.update(done); });
-    progress.finish();
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+// On a CPU implementation, unless the user chose a size or a budget: a smaller image and a time
+// budget, said in one line.
+void applyCpuDefaults(const gpu::Context& ctx, FrameJob& job) {
+    const bool chosen = !job.progressLabel.empty();
+    job.progressLabel = "render";
+    if (chosen || ctx.info().type != VK_PHYSICAL_DEVICE_TYPE_CPU || job.timeLimit > 0) return;
+    job.settings.width = kCpuWidth;
+    job.settings.height = kCpuHeight;
+    job.timeLimit = kCpuSeconds;
+    if (!job.quiet)
+        std::fprintf(stderr,
+                     "penumbra: %s runs Vulkan on the CPU, so this render is %ux%u with up to %u spp in about %.0f s "
+                     "(choose with --width, --height, --spp or --time-limit)\n",
+                     ctx.info().name.c_str(), kCpuWidth, kCpuHeight, job.settings.samplesPerPixel, kCpuSeconds);
+}
 
-    writeImage(output, renderer.image(), ToneMapSettings{exposure});
-    const RenderStats& st = renderer.stats();
-    const double rays = double(st.closestRays + st.shadowRays);
-    const double gpuSeconds = st.gpuMilliseconds * 1e-3;
+std::filesystem::path defaultOutput(const RenderArgs& args, bool sequence) {
+    if (!args.output.empty()) return args.output;
+    std::string stem = std::filesystem::path(args.scene).stem().string();
+    if (!args.map.empty()) stem += "-" + args.map;
+    std::filesystem::path output = std::filesystem::path("out") / (stem + (sequence ? "_%04d.png" : ".png"));
+    std::error_code ec;
+    std::filesystem::create_directories(output.parent_path(), ec);  // our own default folder
+    return output;
+}
+
+void printSummary(const Scene& scene, const FrameJob& job, const gpu::Context& ctx, const FrameOutcome& r,
+                  const std::filesystem::path& output) {
+    const RenderStats& st = r.stats;
     if (st.invalidSamples)
         std::fprintf(stderr, "penumbra: warning: %llu path samples were NaN or infinite and were dropped\n",
                      static_cast<unsigned long long>(st.invalidSamples));
-    if (!args.quiet)
-        std::fprintf(stderr, "penumbra: %s %ux%u, %u spp, %s, in %.2f s (GPU %.2f s), %.1f Mrays/s -> %s\n",
-                     scene.name.c_str(), settings.width, settings.height, st.samplesPerPixel,
-                     ctx->info().name.c_str(), seconds, gpuSeconds,
-                     gpuSeconds > 0 ? rays / gpuSeconds * 1e-6 : 0.0, output.string().c_str());
+    if (job.quiet) return;
+    const double rays = double(st.closestRays + st.shadowRays), gpuSeconds = st.gpuMilliseconds * 1e-3;
+    std::string why = r.reason == StopReason::TimeLimit ? ", time limit reached" : "";
+    if (job.adaptive.enabled())
+        why += ", adaptive: " + std::to_string(int(100 * r.sampledFraction + 0.5)) + "% of the samples traced";
+    std::fprintf(stderr, "penumbra: %s %ux%u, %u spp%s, %s, in %.2f s (GPU %.2f s), %.1f Mrays/s -> %s\n",
+                 scene.name.c_str(), job.settings.width, job.settings.height, r.samplesPerPixel, why.c_str(),
+                 ctx.info().name.c_str(), r.seconds, gpuSeconds, gpuSeconds > 0 ? rays / gpuSeconds * 1e-6 : 0.0,
+                 output.string().c_str());
+}
+
+void runRender(const RenderArgs& args, const CLI::App& cmd) {
+    LoadedRender loaded = loadRender(args, cmd);
+    FrameJob& job = loaded.job;
+    applyFrameOptions(args, job);
+    const bool sequence = !args.frames.empty();
+    const FrameRange frames = sequence ? parseFrames(args.frames) : FrameRange{};
+    const std::filesystem::path output = defaultOutput(args, sequence);
+    // Fail before rendering, not after: a bad name or folder would waste the whole render.
+    formatFromPath(output);
+    std::error_code ec;
+    if (!sequence && !args.resume.empty() && !std::filesystem::is_regular_file(args.resume, ec))
+        throw Error("--resume " + args.resume + ": no such checkpoint file (it is OUTPUT.state, written by --checkpoint "
+                    "or when a render is interrupted)");
+    checkWritable(sequence ? framePath(output, 0) : output);
+    if (job.aovs.any()) checkWritable(aovPathFor(output));
+
+    auto ctx = openDevice(args.device);
+    applyCpuDefaults(*ctx, job);
+    validateSettings(job.settings);
+    if (sequence) {
+        if (!args.resume.empty() && args.resume != output.string())
+            throw UsageError("with --frames, --resume takes the output pattern ('" + output.string() + "')");
+        renderSequence(*ctx, loaded.scene, job, output,
+                       SequenceOptions{frames, args.fps, args.time, !args.resume.empty()});
+        return;
+    }
+    applySceneTime(loaded.scene, args.time);
+    job.settings.time = textureTime(args.time);
+    std::optional<std::filesystem::path> resumeFrom;
+    if (!args.resume.empty()) resumeFrom = args.resume;
+    const FrameOutcome r = renderFrame(*ctx, loaded.scene, job, output, resumeFrom);
+    printSummary(loaded.scene, job, *ctx, r, output);
 }
 
 }  // namespace
@@ -90,25 +161,7 @@ void runRender(const RenderArgs& args, const CLI::App& cmd) {
 void registerRender(CLI::App& app, Action& action) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "render a scene to a PNG (tone mapped) or EXR (linear HDR) file");
-    cmd->add_option("scene", args->scene, sceneArgumentHelp());
-    cmd->add_option("--map", args->map, "level of a .wad file, e.g. E1M1 or MAP01 (default: the first)");
-    cmd->add_option("-o,--output", args->output, "output file, .png or .exr (default out/SCENE.png)");
-    cmd->add_option("--spp", args->settings.samplesPerPixel, "samples per pixel");
-    cmd->add_option("--bounces", args->settings.maxBounces, "maximum path segments after the camera ray");
-    cmd->add_option("--width", args->settings.width, "image width in pixels");
-    cmd->add_option("--height", args->settings.height, "image height in pixels");
-    cmd->add_option("--seed", args->settings.seed, "random seed (same seed, same device: same image)");
-    cmd->add_option("--accel", args->accel, "bvh, or brute (every triangle per ray: the oracle)");
-    cmd->add_option("--mis", args->mis,
-                    "direct light estimators: both (MIS, default), light (light sampling only) or bsdf (BSDF sampling only)");
-    cmd->add_option("--exposure", args->exposure, "exposure in stops for PNG output");
-    cmd->add_option("--time", args->settings.time, "seconds: the moment animated textures show (Doom's liquids; default 0)");
-    cmd->add_flag("-q,--quiet", args->quiet, "no progress bar or summary");
-    addDeviceOption(*cmd, args->device);
-    addBvhCacheOption(*cmd);
-    addCameraOptions(*cmd, args->camera);
-    addEnvironmentOptions(*cmd, args->env);
-    addWadOptions(*cmd, args->wad);
+    addRenderOptions(*cmd, *args);
     cmd->callback([args, cmd, &action] { action = [args, cmd] { runRender(*args, *cmd); }; });
 }
 

@@ -31,4 +31,26 @@ double rmse(const ImageRgb& a, const ImageRgb& b) {
     return std::sqrt(sum / (3.0 * static_cast<double>(a.pixels.size())));
 }
 
+ImageRgb displayedImage(const ImageRgb& image, const ToneMapSettings& settings) {
+    ImageRgb out = image;
+    for (Vec3& p : out.pixels)
+        for (int c = 0; c < 3; ++c) p[c] = srgbOetf(toneMapChannel(p[c], settings));
+    return out;
+}
+
+double displayedPsnr(const ImageRgb& image, const ImageRgb& reference) {
+    return -20.0 * std::log10(rmse(displayedImage(image), displayedImage(reference)));
+}
+
+double gradientEnergy(const ImageRgb& img) {
+    double e = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const double c = luminance(img.at(x, y));
+            if (x + 1 < img.width) e += std::pow(luminance(img.at(x + 1, y)) - c, 2);
+            if (y + 1 < img.height) e += std::pow(luminance(img.at(x, y + 1)) - c, 2);
+        }
+    return e;
+}
+
 }  // namespace penumbra

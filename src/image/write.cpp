@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -27,16 +28,43 @@ std::string lowercase(std::string s) {
 
 // Encoders write to memory and atomic_file does the I/O: neither stb nor tinyexr reports why
 // a file write failed, while our own write() reports errno (disk full, permission denied).
+// stb's write callback: appends to the std::vector<unsigned char> in context.
+void append(void* context, void* data, int size) {
+    auto* bytes = static_cast<unsigned char*>(data);
+    auto* out = static_cast<std::vector<unsigned char>*>(context);
+    out->insert(out->end(), bytes, bytes + size);
+}
+
 std::vector<unsigned char> encodePngRgb8(int width, int height, const std::vector<std::uint8_t>& rgb) {
     std::vector<unsigned char> out;
-    auto append = [](void* context, void* data, int size) {
-        auto* bytes = static_cast<unsigned char*>(data);
-        static_cast<std::vector<unsigned char>*>(context)->insert(
-            static_cast<std::vector<unsigned char>*>(context)->end(), bytes, bytes + size);
-    };
     if (!stbi_write_png_to_func(append, &out, width, height, 3, rgb.data(), width * 3)) {
         throw Error("PNG encoding failed");
     }
+    return out;
+}
+
+// The other 8-bit formats stb writes: JPEG, TGA (RLE), BMP.
+std::vector<unsigned char> encodeStb8(ImageFormat format, int width, int height, const std::vector<std::uint8_t>& rgb) {
+    std::vector<unsigned char> out;
+    int ok = 0;
+    if (format == ImageFormat::Jpeg) ok = stbi_write_jpg_to_func(append, &out, width, height, 3, rgb.data(), 95);
+    else if (format == ImageFormat::Tga) ok = stbi_write_tga_to_func(append, &out, width, height, 3, rgb.data());
+    else ok = stbi_write_bmp_to_func(append, &out, width, height, 3, rgb.data());
+    if (!ok) throw Error("image encoding failed");
+    return out;
+}
+
+// Radiance RGBE; negative and non-finite values (none in a render) become 0.
+std::vector<unsigned char> encodeHdr(const ImageRgb& image) {
+    std::vector<float> rgb(image.pixels.size() * 3);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            const float v = image.pixels[i][c];
+            rgb[3 * i + c] = std::isfinite(v) && v > 0 ? v : 0.0f;
+        }
+    std::vector<unsigned char> out;
+    if (!stbi_write_hdr_to_func(append, &out, image.width, image.height, 3, rgb.data()))
+        throw Error("HDR encoding failed");
     return out;
 }
 
@@ -101,17 +129,28 @@ ImageFormat formatFromPath(const fs::path& path) {
     std::string ext = lowercase(path.extension().string());
     if (ext == ".png") return ImageFormat::Png;
     if (ext == ".exr") return ImageFormat::Exr;
+    if (ext == ".jpg" || ext == ".jpeg") return ImageFormat::Jpeg;
+    if (ext == ".tga") return ImageFormat::Tga;
+    if (ext == ".bmp") return ImageFormat::Bmp;
+    if (ext == ".hdr") return ImageFormat::Hdr;
     throw UsageError("cannot tell the image format of '" + path.string() +
-                     "': use a .png or .exr file name");
+                     "': use a .png or .exr file name (or .jpg, .tga, .bmp, .hdr)");
 }
+
+bool isLinearFormat(ImageFormat format) { return format == ImageFormat::Exr || format == ImageFormat::Hdr; }
 
 void writeImage(const fs::path& path, const ImageRgb& image, const ToneMapSettings& settings) {
     PN_CHECK(image.pixels.size() ==
              static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height));
     if (image.empty()) throw Error("cannot write '" + path.string() + "': the image is empty");
     ImageFormat format = formatFromPath(path);
-    std::vector<unsigned char> bytes =
-        format == ImageFormat::Png ? encodePng(image, settings) : encodeExr(image);
+    std::vector<unsigned char> bytes;
+    switch (format) {
+        case ImageFormat::Png: bytes = encodePng(image, settings); break;
+        case ImageFormat::Exr: bytes = encodeExr(image); break;
+        case ImageFormat::Hdr: bytes = encodeHdr(image); break;
+        default: bytes = encodeStb8(format, image.width, image.height, toneMapToSrgb8(image, settings)); break;
+    }
     writeBytesAtomically(path, bytes);
 }
 

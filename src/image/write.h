@@ -1,4 +1,5 @@
-// Image files: PNG (tone-mapped sRGB, for looking at) and EXR (linear float32, for comparing).
+// Image files: PNG, JPEG, TGA and BMP (tone-mapped sRGB, for looking at), EXR (linear float32,
+// for comparing and compositing) and Radiance HDR (linear RGBE, for tools that read no EXR).
 // Every write goes through writeFileAtomically, so a failed write leaves no partial file and
 // never damages an existing one.
 #pragma once
@@ -12,13 +13,16 @@
 
 namespace penumbra {
 
-enum class ImageFormat { Png, Exr };
+enum class ImageFormat { Png, Exr, Jpeg, Tga, Bmp, Hdr };
 
 // By extension, case-insensitive. Anything else throws UsageError.
 ImageFormat formatFromPath(const std::filesystem::path& path);
+bool isLinearFormat(ImageFormat format);  // EXR and HDR
 
-// PNG: tone mapped with settings, RGB8. EXR: linear RGB float32, ZIP-compressed; settings ignored
-// (an EXR keeps the radiance the renderer computed; exposure is a viewing choice).
+// PNG, JPEG (quality 95), TGA, BMP: tone mapped with settings, RGB8. EXR: linear RGB float32,
+// ZIP-compressed; HDR: linear RGBE (8-bit mantissas sharing an exponent, about 1% precision).
+// The linear formats ignore settings (they keep the radiance the renderer computed; exposure is
+// a viewing choice).
 void writeImage(const std::filesystem::path& path, const ImageRgb& image,
                 const ToneMapSettings& settings);
 

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstring>
 
+#include "core/error.h"
 #include "render/frame_uniforms.h"
 #include "render/kernel_features.h"
 
@@ -30,20 +31,23 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
                             gpu::MemoryKind::HostVisible);
     std::memset(counters_.mapped(), 0, sizeof(shader::RayCounters));
     commands_.run([&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0); });
+    activeMask_ = gpu::Buffer(ctx, pixels * sizeof(std::uint32_t),
+                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                              gpu::MemoryKind::DeviceLocal);
     trace_ = std::make_unique<TracePass>(ctx, *gpuScene_, frameUniforms_, accumulation_, counters_,
-                                         kernelFeatures(arrays_, settings_.accel));
+                                         kernelFeatures(arrays_, settings_.accel), &activeMask_);
 }
 
 Renderer::~Renderer() = default;
 
-double Renderer::renderPasses(std::uint32_t passes, bool countRays) {
+double Renderer::renderPasses(std::uint32_t passes, bool countRays, bool masked) {
     timer_.reset();
     commands_.run([&](VkCommandBuffer cmd) {
         // The fill that cleared the buffer, and earlier passes, must land before we add to it.
         gpu::computeBarrier(cmd);
         timer_.begin(cmd, 0);
         for (std::uint32_t i = 0; i < passes; ++i) {
-            trace_->record(cmd, settings_.width, settings_.height, passesDone_ + i, countRays);
+            trace_->record(cmd, settings_.width, settings_.height, passesDone_ + i, countRays, masked);
             gpu::computeBarrier(cmd);
         }
         timer_.end(cmd, 0);
@@ -83,6 +87,48 @@ void Renderer::restart(const Camera& camera) {
     commands_.run([&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0); });
     passesDone_ = 0;
     stats_ = {};
+}
+
+namespace {
+
+// Copies host data into an existing device buffer through a staging buffer.
+void copyToBuffer(const gpu::Context& ctx, gpu::Commands& commands, const gpu::Buffer& dst, const void* data,
+                  VkDeviceSize bytes) {
+    PN_CHECK(bytes <= dst.size());
+    if (bytes == 0) return;
+    gpu::Buffer staging(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryKind::HostVisible);
+    std::memcpy(staging.mapped(), data, bytes);
+    commands.run([&](VkCommandBuffer cmd) {
+        gpu::computeBarrier(cmd);  // passes still reading the buffer finish first
+        VkBufferCopy region{0, 0, bytes};
+        vkCmdCopyBuffer(cmd, staging.get(), dst.get(), 1, &region);
+    });
+}
+
+}  // namespace
+
+void Renderer::setActiveMask(std::span<const std::uint32_t> mask) {
+    PN_CHECK(mask.size() == std::size_t(settings_.width) * settings_.height);
+    copyToBuffer(ctx_, commands_, activeMask_, mask.data(), mask.size_bytes());
+}
+
+std::vector<Vec4> Renderer::takeAccumulation() {
+    std::vector<Vec4> sums = accumulation();
+    commands_.run([&](VkCommandBuffer cmd) {
+        gpu::computeBarrier(cmd);
+        vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0);
+    });
+    return sums;
+}
+
+void Renderer::loadAccumulation(std::span<const Vec4> sums) {
+    PN_CHECK(sums.size() == std::size_t(settings_.width) * settings_.height);
+    copyToBuffer(ctx_, commands_, accumulation_, sums.data(), sums.size_bytes());
+}
+
+void Renderer::setPassesDone(std::uint32_t passes) {
+    passesDone_ = passes;
+    stats_.samplesPerPixel = passesDone_ * settings_.samplesPerPass;
 }
 
 std::vector<Vec4> Renderer::accumulation() {

@@ -3,6 +3,8 @@
 
 #include <functional>
 #include <memory>
+#include <span>
+#include <vector>
 
 #include "gpu/timer.h"
 #include "image/image.h"
@@ -30,10 +32,21 @@ public:
     void render(const std::function<void(std::uint32_t)>& onProgress = {});
     // Adds `passes` more passes in one submission; returns its GPU milliseconds (-1 if the device
     // has no timestamps). countRays=false keeps the ray-count atomics out of timed runs.
-    double renderPasses(std::uint32_t passes, bool countRays = true);
+    // masked: only pixels whose active-mask entry is nonzero take samples (setActiveMask).
+    double renderPasses(std::uint32_t passes, bool countRays = true, bool masked = false);
+
+    // For final renders in rounds (render/progressive.h): the mask masked passes obey (one uint
+    // per pixel), reading the sums back and starting the buffer afresh, putting saved sums back
+    // (resuming a checkpoint), and the pass index the next pass gets (its random numbers depend
+    // on it, so a resumed render continues where the interrupted one stopped).
+    void setActiveMask(std::span<const std::uint32_t> mask);
+    std::vector<Vec4> takeAccumulation();  // accumulation(), then zeroes the buffer
+    void loadAccumulation(std::span<const Vec4> sums);
     // Drops every sample so far and looks through `camera` from now on: one pipeline for several
     // views of a scene (compiling it is most of a small render's time).
     void restart(const Camera& camera);
+    std::uint32_t passesDone() const { return passesDone_; }
+    void setPassesDone(std::uint32_t passes);
 
     // Mean radiance per pixel so far (top row first).
     ImageRgb image();
@@ -57,6 +70,7 @@ private:
     gpu::Buffer frameUniforms_;
     gpu::Buffer accumulation_;
     gpu::Buffer counters_;
+    gpu::Buffer activeMask_;  // uint per pixel (adaptive sampling)
     std::unique_ptr<TracePass> trace_;
     gpu::GpuTimer timer_;
     std::uint32_t passesDone_ = 0;

@@ -35,6 +35,12 @@ constexpr std::uint32_t kMaxSamplesPerPixel = 1u << 20;
 constexpr std::uint32_t kMaxBounces = 1024;
 constexpr float kMaxTime = 1e6f;  // seconds; beyond it float time loses the animation frames
 
+// RenderSettings::time at a moment of the scene (render --time, a sequence's frame): animated
+// textures stand still before 0 and after kMaxTime, where a camera path may go on.
+inline float textureTime(double sceneSeconds) {
+    return float(sceneSeconds > 0 ? (sceneSeconds < double(kMaxTime) ? sceneSeconds : double(kMaxTime)) : 0.0);
+}
+
 // Throws UsageError naming the bad value and the allowed range.
 void validateSettings(const RenderSettings& settings);
 

@@ -174,6 +174,22 @@ struct Camera {
     float focusDistance = 0.0f;   // metres along the view direction to the sharp plane; 0: the look-at distance
 };
 
+// A camera path (scene files' "camera_path", docs/SCENES.md): keyframes the camera passes
+// through; scene/animation.h puts the camera where the path says at a moment.
+struct CameraKey {
+    double time = 0;  // seconds, strictly increasing along the path
+    Vec3 position{0};
+    Vec3 lookAt{0, 0, -1};
+    float fovYDegrees = 40.0f;  // loaders fill it from the scene's camera when a key has none
+};
+
+enum class PathInterpolation { CatmullRom, Linear };
+
+struct CameraPath {
+    std::vector<CameraKey> keys;  // empty: the camera stands still
+    PathInterpolation interpolation = PathInterpolation::CatmullRom;
+};
+
 // A light carried with the camera (the Doom renderer's handheld torch): a point light placed at
 // the camera, slightly below eye level, whenever the scene is rendered.
 struct Torch {
@@ -192,6 +208,7 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<Light> lights;
     Camera camera;
+    CameraPath cameraPath;  // moves the camera over time (scene/animation.h); empty: still
     Vec3 background{0};  // radiance of rays that leave the scene (when environment has no map)
     Environment environment;
     Torch torch;

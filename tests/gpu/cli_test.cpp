@@ -79,11 +79,11 @@ TEST_F(CliTest, BadFlagsAreUsageErrors) {
     expectOneLineError(run("render --look-at 0,0,-800 --camera 0,0,-800"), 2, "look-at");
     expectOneLineError(run("render --accel octree"), 2, "bvh");
     expectOneLineError(run("render --mis sometimes"), 2, "light");
-    expectOneLineError(run("render -o picture.jpg"), 2, ".png");
+    expectOneLineError(run("render -o picture.gif"), 2, ".png");
     expectOneLineError(run("render --wad-glow -1"), 2, "--wad-glow");
     expectOneLineError(run("render --wad-sector-light nan"), 2, "--wad-sector-light");
     expectOneLineError(run("render --wad-filter smooth"), 2, "--wad-filter");
-    expectOneLineError(run("render --time -2"), 2, "--time");
+    expectOneLineError(run("render --time nan"), 2, "--time");
     EXPECT_TRUE(filesIn(dir).empty());
 }
 

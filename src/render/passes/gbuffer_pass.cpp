@@ -13,8 +13,12 @@ GBufferPass::GBufferPass(const gpu::Context& ctx, const GpuScene& scene, const g
     pipeline_->bind(PN_BINDING_GBUFFER, gbuffer);
 }
 
-void GBufferPass::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height) const {
+void GBufferPass::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, int subpixel) const {
     shader::PassPush push{};
+    if (subpixel >= 0) {
+        push.mode = PN_GBUFFER_SUBPIXEL;
+        push.passIndex = std::uint32_t(subpixel);
+    }
     dispatchImage(*pipeline_, cmd, width, height, &push);
 }
 

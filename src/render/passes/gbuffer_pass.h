@@ -13,7 +13,8 @@ class GBufferPass {
 public:
     GBufferPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
                 const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer, std::uint32_t features);
-    void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height) const;
+    // subpixel < 0: the pixel centre; 0..15: that cell of a 4x4 grid in the pixel (row-major).
+    void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, int subpixel = -1) const;
 
 private:
     std::unique_ptr<gpu::ComputePipeline> pipeline_;

@@ -3,6 +3,7 @@
 
 #include <memory>
 
+#include "gpu/buffer.h"
 #include "gpu/pipeline.h"
 #include "render/gpu_scene.h"
 
@@ -10,16 +11,22 @@ namespace penumbra {
 
 class TracePass {
 public:
-    // features: what the kernel is specialised for (render/kernel_features.h).
+    // features: what the kernel is specialised for (render/kernel_features.h). activeMask: one
+    // uint per pixel that record(..., masked = true) obeys (adaptive sampling); without one the
+    // pass binds a placeholder of its own and never reads it.
     TracePass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-              const gpu::Buffer& accumulation, const gpu::Buffer& counters, std::uint32_t features);
+              const gpu::Buffer& accumulation, const gpu::Buffer& counters, std::uint32_t features,
+              const gpu::Buffer* activeMask = nullptr);
 
     const gpu::ComputePipeline& pipeline() const { return *pipeline_; }
 
+    // masked: pixels whose mask entry is 0 take no samples (needs the constructor's activeMask).
     void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, std::uint32_t passIndex,
-                bool countRays) const;
+                bool countRays, bool masked = false) const;
 
 private:
+    gpu::Buffer placeholderMask_;
+    bool hasMask_;
     std::unique_ptr<gpu::ComputePipeline> pipeline_;
 };
 

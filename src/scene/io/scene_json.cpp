@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/transform.h"
+#include "scene/animation.h"
 #include "scene/face_check.h"
 #include "scene/io/env_spec.h"
 #include "scene/io/load.h"
@@ -318,6 +319,37 @@ EnvironmentSpec readEnvironment(const Reader& r, const Json& j, const std::files
 
 }  // namespace
 
+// "camera_path": {"interpolation": "catmull-rom" | "linear", "keys": [{"time", "position",
+// "look_at", "fov"?}, ...]}; keys without a fov take the camera's.
+CameraPath readCameraPath(const Reader& r, const Json& j, const Camera& camera) {
+    if (!j.is_object()) r.fail("camera_path", "expected an object with \"keys\"");
+    CameraPath path;
+    if (j.contains("interpolation")) {
+        const std::string mode = r.string(j["interpolation"], "camera_path.interpolation");
+        if (mode == "linear") path.interpolation = PathInterpolation::Linear;
+        else if (mode != "catmull-rom") r.fail("camera_path.interpolation", "must be \"catmull-rom\" or \"linear\"");
+    }
+    const Json& keys = r.member(j, "keys", "camera_path");
+    if (!keys.is_array() || keys.empty() || keys.size() > 100000)
+        r.fail("camera_path.keys", "expected an array of 1 to 100000 keys");
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        const std::string where = "camera_path.keys[" + std::to_string(i) + "]";
+        CameraKey k;
+        k.time = r.number(r.member(keys[i], "time", where), where + ".time", 0, 1e7f);
+        k.position = r.vec3(r.member(keys[i], "position", where), where + ".position");
+        k.lookAt = r.vec3(r.member(keys[i], "look_at", where), where + ".look_at");
+        k.fovYDegrees = keys[i].contains("fov") ? r.number(keys[i]["fov"], where + ".fov", 0.01f, 179.99f)
+                                                : camera.fovYDegrees;
+        path.keys.push_back(k);
+    }
+    try {
+        validateCameraPath(path);
+    } catch (const Error& e) {
+        r.fail("camera_path", e.what());
+    }
+    return path;
+}
+
 Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& baseDir, const std::string& name,
                             SceneFileSettings* settings) {
     Reader r(name);
@@ -383,6 +415,7 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
         if (c.contains("focus_distance"))
             scene.camera.focusDistance = r.number(c["focus_distance"], "camera.focus_distance", 1e-6f, 1e9f);
     }
+    if (doc.contains("camera_path")) scene.cameraPath = readCameraPath(r, doc["camera_path"], scene.camera);
     if (doc.contains("render")) {
         // Checked even when the caller does not want them: a bad file is bad either way.
         SceneFileSettings read;
@@ -427,6 +460,12 @@ std::string sceneToJson(const Scene& scene) {
                      {"up", v3(scene.camera.up)}, {"fov", scene.camera.fovYDegrees}};
     if (scene.camera.apertureRadius > 0) doc["camera"]["aperture"] = scene.camera.apertureRadius;
     if (scene.camera.focusDistance > 0) doc["camera"]["focus_distance"] = scene.camera.focusDistance;
+    for (const CameraKey& k : scene.cameraPath.keys)
+        doc["camera_path"]["keys"].push_back(
+            {{"time", k.time}, {"position", v3(k.position)}, {"look_at", v3(k.lookAt)}, {"fov", k.fovYDegrees}});
+    if (!scene.cameraPath.keys.empty())
+        doc["camera_path"]["interpolation"] =
+            scene.cameraPath.interpolation == PathInterpolation::Linear ? "linear" : "catmull-rom";
     doc["background"] = v3(scene.background);
     if (!scene.textures.empty())
         logWarning("scene '" + scene.name + "' has textures, which scene files do not carry yet; they are left out");

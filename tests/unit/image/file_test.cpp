@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <vector>
 #include <limits>
 
 #include "core/error.h"
@@ -29,14 +32,65 @@ TEST(FormatFromPath, ByExtensionCaseInsensitive) {
     EXPECT_EQ(formatFromPath("out.png"), ImageFormat::Png);
     EXPECT_EQ(formatFromPath("dir/OUT.PNG"), ImageFormat::Png);
     EXPECT_EQ(formatFromPath("a.b/render.Exr"), ImageFormat::Exr);
-    EXPECT_THROW(formatFromPath("x.jpg"), UsageError);
+    EXPECT_EQ(formatFromPath("x.jpg"), ImageFormat::Jpeg);
+    EXPECT_EQ(formatFromPath("x.JPEG"), ImageFormat::Jpeg);
+    EXPECT_EQ(formatFromPath("x.tga"), ImageFormat::Tga);
+    EXPECT_EQ(formatFromPath("x.bmp"), ImageFormat::Bmp);
+    EXPECT_EQ(formatFromPath("x.hdr"), ImageFormat::Hdr);
+    EXPECT_TRUE(isLinearFormat(ImageFormat::Hdr));
+    EXPECT_FALSE(isLinearFormat(ImageFormat::Jpeg));
+    EXPECT_THROW(formatFromPath("x.gif"), UsageError);
     EXPECT_THROW(formatFromPath("png"), UsageError);
     EXPECT_THROW(formatFromPath("dir.png/noext"), UsageError);
     try {
-        formatFromPath("x.jpg");
+        formatFromPath("x.gif");
     } catch (const UsageError& e) {
-        EXPECT_STREQ(e.what(), "cannot tell the image format of 'x.jpg': use a .png or .exr file name");
+        EXPECT_STREQ(e.what(),
+                     "cannot tell the image format of 'x.gif': use a .png or .exr file name (or .jpg, .tga, .bmp, .hdr)");
     }
+}
+
+// The 8-bit formats hold the same tone-mapped pixels as the PNG (JPEG within its compression).
+TEST(EightBitFormats, HoldThePngsPixels) {
+    TempDir dir;
+    ImageRgb img(9, 6);
+    for (int y = 0; y < 6; ++y)
+        for (int x = 0; x < 9; ++x) img.at(x, y) = {0.05f * float(x), 0.2f * float(y), 0.5f};  // smooth: JPEG-friendly
+    for (const char* name : {"a.png", "a.tga", "a.bmp", "a.jpg"}) writeImage(dir / name, img, {});
+    auto load = [&](const char* name) {
+        int w = 0, h = 0, n = 0;
+        unsigned char* data = stbi_load((dir / name).c_str(), &w, &h, &n, 3);
+        EXPECT_NE(data, nullptr) << name;
+        EXPECT_EQ(w, 9);
+        EXPECT_EQ(h, 6);
+        std::vector<int> out(data, data + (data ? 9 * 6 * 3 : 0));
+        stbi_image_free(data);
+        return out;
+    };
+    const std::vector<int> png = load("a.png");
+    EXPECT_EQ(load("a.tga"), png);
+    EXPECT_EQ(load("a.bmp"), png);
+    const std::vector<int> jpg = load("a.jpg");
+    ASSERT_EQ(jpg.size(), png.size());
+    for (std::size_t i = 0; i < png.size(); ++i) EXPECT_NEAR(jpg[i], png[i], 12) << i;
+}
+
+TEST(Hdr, HoldsLinearRadianceToRgbePrecision) {
+    TempDir dir;
+    ImageRgb img = gradient(7, 5);
+    for (Vec3& p : img.pixels) p = Vec3{std::abs(p.x), std::abs(p.y) + 1e-3f, std::abs(p.z) + 1.0f};
+    writeImage(dir / "a.hdr", img, {.exposure = 3});  // exposure must not touch linear data
+    int w = 0, h = 0, n = 0;
+    float* data = stbi_loadf((dir / "a.hdr").c_str(), &w, &h, &n, 3);
+    ASSERT_NE(data, nullptr);
+    ASSERT_EQ(w, 7);
+    ASSERT_EQ(h, 5);
+    for (int i = 0; i < 7 * 5; ++i) {
+        // RGBE: 8-bit mantissas under the largest channel's exponent.
+        const float largest = std::max({img.pixels[i].x, img.pixels[i].y, img.pixels[i].z});
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(data[3 * i + c], img.pixels[i][c], largest / 128.0f) << i << "," << c;
+    }
+    stbi_image_free(data);
 }
 
 TEST(Exr, RoundTripIsExactForFloat32) {
@@ -117,7 +171,7 @@ TEST(WriteImage, ReplacesExistingFileAndLeavesNoTemp) {
 
 TEST(WriteImage, UnknownExtensionIsUsageErrorBeforeAnyFile) {
     TempDir dir;
-    EXPECT_THROW(writeImage(dir / "a.jpg", gradient(2, 2), {}), UsageError);
+    EXPECT_THROW(writeImage(dir / "a.gif", gradient(2, 2), {}), UsageError);
     EXPECT_TRUE(dir.entries().empty());
 }
 

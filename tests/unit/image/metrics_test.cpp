@@ -30,6 +30,32 @@ TEST(Metrics, Rmse) {
     EXPECT_TRUE(std::isnan(rmse(a, b)));
 }
 
+TEST(Metrics, DisplayedPsnrMeasuresWhatAPngShows) {
+    ImageRgb ref(4, 4), img(4, 4);
+    for (Vec3& p : ref.pixels) p = Vec3{0.5f};
+    img = ref;
+    EXPECT_TRUE(std::isinf(displayedPsnr(img, ref)));
+    // Displayed values: reinhard then sRGB. One pixel's three channels changed from 0.5 to 1.
+    img.at(1, 2) = Vec3{1.0f};
+    const double d = srgbOetf(0.5f) - srgbOetf(1.0f / 3.0f);
+    EXPECT_NEAR(displayedPsnr(img, ref), -20.0 * std::log10(std::sqrt(d * d / 16.0)), 1e-4);
+    // A blown-out light barely counts: 100 vs 1000 is almost the same white.
+    ImageRgb light = ref, brighter = ref;
+    light.at(0, 0) = Vec3{100.0f};
+    brighter.at(0, 0) = Vec3{1000.0f};
+    EXPECT_GT(displayedPsnr(brighter, light), 40.0);
+}
+
+TEST(Metrics, GradientEnergyOfAStripePattern) {
+    // Vertical stripes of luminance 0 and 1 on a 4x3 image: 3 horizontal differences of 1 per
+    // row, none vertical.
+    ImageRgb img(4, 3);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 4; ++x) img.at(x, y) = Vec3{float(x % 2)};
+    EXPECT_NEAR(gradientEnergy(img), 9.0, 1e-9);
+    EXPECT_EQ(gradientEnergy(ImageRgb(5, 5)), 0.0);
+}
+
 TEST(ImageRgb, StatsAndAccess) {
     ImageRgb img(3, 2);
     img.at(2, 1) = {6, 0, 3};

@@ -62,5 +62,23 @@ TEST(ProgressBar, DisabledOrNotATerminalIsSilent) {
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
 }
 
+TEST(FormatProgressJson, OneObjectWithCountsTimesAndEta) {
+    ProgressState s{250, 1000, 10.0, -1, "spp"};
+    EXPECT_EQ(formatProgressJson("render", s, false),
+              R"({"progress":"render","done":250,"total":1000,"unit":"spp","elapsed":10.000,"eta":30.000,"final":false})");
+    s.etaSeconds = 4.5;  // a time limit that comes first replaces the rate's estimate
+    EXPECT_TRUE(contains(formatProgressJson("render", s, false), R"("eta":4.500)"));
+    EXPECT_TRUE(contains(formatProgressJson("render", s, true), R"("eta":0.000,"final":true})"));
+    EXPECT_TRUE(contains(formatProgressJson("r", ProgressState{0, 10, 0.5, -1, "spp"}, false), R"("eta":null)"));
+    // A label can never break the JSON.
+    EXPECT_TRUE(contains(formatProgressJson("frame \"7\"\n", s, false), R"("progress":"frame 7")"));
+}
+
+TEST(FormatProgress, AGivenEtaReplacesTheRatesEstimate) {
+    const std::string line = formatProgress("render", ProgressState{250, 1000, 10.0, 5.0, "spp"}, 100);
+    EXPECT_TRUE(contains(line, "ETA 0:05")) << line;
+    EXPECT_TRUE(contains(line, "250/1000 spp")) << line;
+}
+
 }  // namespace
 }  // namespace penumbra

@@ -1,0 +1,147 @@
+#include "render/final_passes.h"
+
+#include <cstring>
+
+#include "render/kernel_features.h"
+#include "render/passes/denoise_pass.h"
+#include "render/passes/gbuffer_pass.h"
+#include "render/passes/temporal_pass.h"
+#include "shared/types.h"
+
+namespace penumbra {
+namespace {
+
+constexpr VkBufferUsageFlags kPixelUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+// The viewer's uniforms for a still camera whose history is valid: "previous" camera = this one.
+shader::ViewerUniforms stillCameraUniforms(const shader::FrameUniforms& f, const FinalDenoiseSettings& s) {
+    shader::ViewerUniforms v{};
+    v.prevCameraPosition = f.cameraPosition;
+    v.prevTanHalfFovY = f.tanHalfFovY;
+    v.prevCameraRight = f.cameraRight;
+    v.prevAspect = f.aspect;
+    v.prevCameraUp = f.cameraUp;
+    v.prevCameraForward = f.cameraForward;
+    v.historyValid = 1;
+    v.cameraMoved = 0;
+    v.samplesPerFrame = 1;  // the "current frame" is the mean itself, one sample's worth
+    v.depthTolerance = 0.1f;
+    v.normalTolerance = 0.9f;
+    v.maxHistory = 1e30f;
+    v.sigmaLuminance = s.sigmaLuminance;
+    v.sigmaNormal = s.sigmaNormal;
+    v.sigmaDepth = s.sigmaDepth;
+    v.denoise = 1;
+    return v;
+}
+
+}  // namespace
+
+FinalFramePasses::FinalFramePasses(const gpu::Context& ctx, const Renderer& renderer)
+    : ctx_(ctx), renderer_(renderer), width_(renderer.settings().width), height_(renderer.settings().height),
+      commands_(ctx) {
+    viewerUniforms_ = gpu::Buffer(ctx, sizeof(shader::ViewerUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                  gpu::MemoryKind::HostVisible);
+    const auto* frame = static_cast<const shader::FrameUniforms*>(renderer.frameUniforms().mapped());
+    const shader::ViewerUniforms v = stillCameraUniforms(*frame, FinalDenoiseSettings{});
+    std::memcpy(viewerUniforms_.mapped(), &v, sizeof v);
+    gbuffer_ = gpu::Buffer(ctx, VkDeviceSize(width_) * height_ * sizeof(shader::GBufferTexel), kPixelUsage,
+                           gpu::MemoryKind::DeviceLocal);
+}
+
+FinalFramePasses::~FinalFramePasses() = default;
+
+void FinalFramePasses::runGBuffer() {
+    if (gbufferDone_) return;
+    const std::size_t n = std::size_t(width_) * height_;
+    GBufferPass pass(ctx_, renderer_.gpuScene(), renderer_.frameUniforms(), viewerUniforms_, gbuffer_,
+                     kernelFeatures(renderer_.sceneArrays(), renderer_.settings().accel));
+    auto trace = [&](int subpixel) {
+        commands_.run([&](VkCommandBuffer cmd) { pass.record(cmd, width_, height_, subpixel); });
+        return gpu::downloadBuffer<shader::GBufferTexel>(ctx_, commands_, gbuffer_, n);
+    };
+    // The centre ray's surface, normal and depth guide the filter; the albedo is averaged over
+    // a 4x4 grid of the pixel, as the radiance is over its jittered samples. (Demodulating an
+    // antialiased edge or a texture finer than a pixel by the centre's albedo alone would divide
+    // one texel's radiance by its neighbour's colour.) A ray that misses counts as albedo 0 in
+    // the AOV and as 1 (nothing divided out) for the denoiser, as demodulationAlbedo says.
+    std::vector<shader::GBufferTexel> texels = trace(-1);
+    std::vector<Vec3> demodulation(n, Vec3{0.0f});
+    albedo_.assign(n, Vec3{0.0f});
+    constexpr int kCells = 16;
+    for (int cell = 0; cell < kCells; ++cell) {
+        const std::vector<shader::GBufferTexel> sub = trace(cell);
+        for (std::size_t i = 0; i < n; ++i) {
+            const bool hit = sub[i].surfaceId != 0;
+            albedo_[i] = albedo_[i] + (hit ? sub[i].albedo : Vec3{0.0f}) / float(kCells);
+            demodulation[i] = demodulation[i] + (hit ? max(sub[i].albedo, Vec3{1e-3f}) : Vec3{1.0f}) / float(kCells);
+        }
+    }
+    centre_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        centre_[i] = texels[i];
+        texels[i].albedo = demodulation[i];
+    }
+    gbuffer_ = gpu::uploadStorageBuffer(ctx_, commands_, std::span<const shader::GBufferTexel>(texels));
+    gbufferDone_ = true;
+}
+
+FrameGuides FinalFramePasses::guides() {
+    runGBuffer();
+    const std::size_t n = std::size_t(width_) * height_;
+    FrameGuides g;
+    g.albedo = albedo_;
+    g.normal.resize(n);
+    g.depth.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        g.normal[i] = centre_[i].normal;
+        g.depth[i] = centre_[i].depth;
+    }
+    return g;
+}
+
+ImageRgb FinalFramePasses::denoise(const PixelAccumulator& sums, const FinalDenoiseSettings& settings) {
+    PN_CHECK(sums.width() == width_ && sums.height() == height_ && settings.iterations >= 1);
+    const auto* frame = static_cast<const shader::FrameUniforms*>(renderer_.frameUniforms().mapped());
+    const shader::ViewerUniforms v = stillCameraUniforms(*frame, settings);
+    std::memcpy(viewerUniforms_.mapped(), &v, sizeof v);
+    runGBuffer();
+
+    // The render's statistics as a still camera's history, and a "current frame" equal to the mean.
+    const std::size_t n = std::size_t(width_) * height_;
+    const ImageRgb mean = sums.image();
+    std::vector<shader::HistoryTexel> history(n);
+    std::vector<Vec4> current(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double taken = std::max<std::uint32_t>(sums.samplesTaken(i), 1);
+        const double m1 = luminance(sums.rawMean(i));
+        const double m2 = sums.data().squares[i] / taken;  // mean squared luminance of the samples
+        history[i] = shader::HistoryTexel{mean.pixels[i], float(taken), float(m1), float(m2), 0.0f, 0.0f};
+        current[i] = Vec4{mean.pixels[i].x, mean.pixels[i].y, mean.pixels[i].z, float(m2)};
+    }
+    gpu::Buffer historyIn = gpu::uploadStorageBuffer(ctx_, commands_, std::span<const shader::HistoryTexel>(history));
+    gpu::Buffer accumulation = gpu::uploadStorageBuffer(ctx_, commands_, std::span<const Vec4>(current));
+    auto pixelBuffer = [&](VkDeviceSize bytes) {
+        return gpu::Buffer(ctx_, VkDeviceSize(n) * bytes, kPixelUsage, gpu::MemoryKind::DeviceLocal);
+    };
+    gpu::Buffer historyOut = pixelBuffer(sizeof(shader::HistoryTexel));
+    gpu::Buffer filterA = pixelBuffer(sizeof(Vec4)), filterB = pixelBuffer(sizeof(Vec4));
+    gpu::Buffer guide = pixelBuffer(PN_DENOISE_GUIDE_BYTES);
+    TemporalPass temporal(ctx_, TemporalBuffers{&renderer_.frameUniforms(), &viewerUniforms_, &accumulation, &gbuffer_,
+                                                &gbuffer_, &historyIn, &historyOut, &filterA, &guide});
+    DenoisePass atrous(ctx_, renderer_.frameUniforms(), viewerUniforms_, gbuffer_, guide, filterA, filterB);
+    const gpu::Buffer* result = nullptr;
+    commands_.run([&](VkCommandBuffer cmd) {
+        gpu::computeBarrier(cmd);
+        temporal.record(cmd, width_, height_);
+        gpu::computeBarrier(cmd);
+        result = &atrous.record(cmd, width_, height_, settings.iterations);
+    });
+    const auto filtered = gpu::downloadBuffer<Vec4>(ctx_, commands_, *result, n);
+    ImageRgb out{int(width_), int(height_)};
+    for (std::size_t i = 0; i < n; ++i) out.pixels[i] = Vec3{filtered[i].x, filtered[i].y, filtered[i].z};
+    return out;
+}
+
+}  // namespace penumbra
