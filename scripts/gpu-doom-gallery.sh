@@ -14,13 +14,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 mode=${1:-run}
 
-if [ "$mode" = pack ]; then
-  ../shared/tools/gpu-pack.sh build/penumbra "${@:2}"
-  rm -rf .peer && mkdir -p .peer && cp -r ../shared/peers/seed-webgpu/. .peer/
-  grep -qx '/.peer/' .git/info/exclude || echo '/.peer/' >> .git/info/exclude
-  du -sh .gpu .peer
-  exit 0
-fi
+# The side-by-side benchmark packs the same two programs.
+[ "$mode" = pack ] && exec scripts/gpu-bench-vs-seed.sh pack "${@:2}"
 
 out=${OUT:-/tmp/doom-gallery}
 mkdir -p "$out"

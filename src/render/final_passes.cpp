@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "render/frame_uniforms.h"
 #include "render/kernel_features.h"
 #include "render/passes/denoise_pass.h"
 #include "render/passes/gbuffer_pass.h"
@@ -17,12 +18,7 @@ constexpr VkBufferUsageFlags kPixelUsage =
 // The viewer's uniforms for a still camera whose history is valid: "previous" camera = this one.
 shader::ViewerUniforms stillCameraUniforms(const shader::FrameUniforms& f, const FinalDenoiseSettings& s) {
     shader::ViewerUniforms v{};
-    v.prevCameraPosition = f.cameraPosition;
-    v.prevTanHalfFovY = f.tanHalfFovY;
-    v.prevCameraRight = f.cameraRight;
-    v.prevAspect = f.aspect;
-    v.prevCameraUp = f.cameraUp;
-    v.prevCameraForward = f.cameraForward;
+    setPreviousCamera(v, f);
     v.historyValid = 1;
     v.cameraMoved = 0;
     v.samplesPerFrame = 1;  // the "current frame" is the mean itself, one sample's worth

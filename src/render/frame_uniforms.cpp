@@ -67,4 +67,13 @@ void setEnvironmentUniforms(shader::FrameUniforms& frame, const Environment& env
     frame.envRotation = env.rotationDegrees * 3.14159265358979f / 180.0f;
 }
 
+void setPreviousCamera(shader::ViewerUniforms& viewer, const shader::FrameUniforms& previous) {
+    viewer.prevCameraPosition = previous.cameraPosition;
+    viewer.prevTanHalfFovY = previous.tanHalfFovY;
+    viewer.prevCameraRight = previous.cameraRight;
+    viewer.prevAspect = previous.aspect;
+    viewer.prevCameraUp = previous.cameraUp;
+    viewer.prevCameraForward = previous.cameraForward;
+}
+
 }  // namespace penumbra

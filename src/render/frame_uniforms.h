@@ -23,4 +23,7 @@ void setEnvironmentUniforms(shader::FrameUniforms& frame, const Environment& env
 shader::FrameUniforms makeSceneFrameUniforms(const Camera& camera, Vec3 background, const Environment& env,
                                              const RenderSettings& settings, const GpuScene& scene);
 
+// The viewer passes reproject through the previous frame's camera: copies it from that frame.
+void setPreviousCamera(shader::ViewerUniforms& viewer, const shader::FrameUniforms& previous);
+
 }  // namespace penumbra

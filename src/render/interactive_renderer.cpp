@@ -224,12 +224,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     const shader::FrameUniforms& prev = previousFrame_ ? *previousFrame_ : f;
 
     shader::ViewerUniforms v{};
-    v.prevCameraPosition = prev.cameraPosition;
-    v.prevTanHalfFovY = prev.tanHalfFovY;
-    v.prevCameraRight = prev.cameraRight;
-    v.prevAspect = prev.aspect;
-    v.prevCameraUp = prev.cameraUp;
-    v.prevCameraForward = prev.cameraForward;
+    setPreviousCamera(v, prev);
     v.historyValid = historyValid_ ? 1u : 0u;
     v.cameraMoved = moved ? 1u : 0u;
     v.exposure = s.exposure;

@@ -54,14 +54,7 @@ protected:
         std::memcpy(frame.mapped(), &frameUniforms, sizeof(frameUniforms));
     }
     // The previous camera, as the viewer passes it: the frame uniforms of that camera.
-    void setPreviousCamera(const shader::FrameUniforms& prev) {
-        viewerUniforms.prevCameraPosition = prev.cameraPosition;
-        viewerUniforms.prevTanHalfFovY = prev.tanHalfFovY;
-        viewerUniforms.prevCameraRight = prev.cameraRight;
-        viewerUniforms.prevAspect = prev.aspect;
-        viewerUniforms.prevCameraUp = prev.cameraUp;
-        viewerUniforms.prevCameraForward = prev.cameraForward;
-    }
+    void setPreviousCamera(const shader::FrameUniforms& prev) { penumbra::setPreviousCamera(viewerUniforms, prev); }
     void writeViewer() { std::memcpy(viewer.mapped(), &viewerUniforms, sizeof(viewerUniforms)); }
 
     gpu::Buffer storage(VkDeviceSize bytes, VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
