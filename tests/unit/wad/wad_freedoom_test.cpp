@@ -14,25 +14,10 @@
 #include "scene/io/wad/triangulate.h"
 #include "scene/io/wad/wad_file.h"
 #include "scene/io/wad/wad_loader.h"
+#include "freedoom_wad.h"
 
 namespace penumbra {
 namespace {
-
-const char* kDoomDir = "/usr/share/games/doom/";
-
-std::string readWad(const std::string& name) {
-    std::filesystem::path path = std::filesystem::path(kDoomDir) / name;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return {};
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-#define REQUIRE_WAD(bytes, name)                                                        \
-    std::string bytes = readWad(name);                                                  \
-    if (bytes.empty()) {                                                                \
-        if (std::getenv("CI")) FAIL() << name << " is missing (install freedoom)";      \
-        GTEST_SKIP() << name << " is not installed (apt install freedoom)";             \
-    }
 
 // Counts as read by the parser equal lump size / record size.
 void checkCounts(const std::string& bytes, const std::string& file, const std::string& mapName) {
@@ -200,7 +185,7 @@ TEST(WadFreedoom, LoadTimeOfEveryMap) {
 }
 
 TEST(WadFreedoom, LoadFromFile) {
-    std::filesystem::path path = std::filesystem::path(kDoomDir) / "freedoom1.wad";
+    std::filesystem::path path = std::filesystem::path(test::kDoomDir) / "freedoom1.wad";
     if (!std::filesystem::exists(path)) {
         if (std::getenv("CI")) FAIL() << path << " is missing";
         GTEST_SKIP() << path << " is not installed";

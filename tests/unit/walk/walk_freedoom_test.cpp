@@ -12,22 +12,10 @@
 #include "scene/io/wad/wad_file.h"
 #include "scene/walk/wad_walk_map.h"
 #include "scene/walk/walk_physics.h"
+#include "../wad/freedoom_wad.h"
 
 namespace penumbra::walk {
 namespace {
-
-std::string readWad(const std::string& name) {
-    std::ifstream in(std::filesystem::path("/usr/share/games/doom") / name, std::ios::binary);
-    if (!in) return {};
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-#define REQUIRE_WAD(bytes, name)                                                   \
-    std::string bytes = readWad(name);                                             \
-    if (bytes.empty()) {                                                           \
-        if (std::getenv("CI")) FAIL() << name << " is missing (install freedoom)"; \
-        GTEST_SKIP() << name << " is not installed (apt install freedoom)";        \
-    }
 
 std::vector<wad::MapData> allMaps(const std::string& bytes, const std::string& file) {
     wad::WadFile wad(bytes, file);

@@ -1,0 +1,31 @@
+// Freedoom's WADs as Debian's freedoom package installs them, for the tests that read real
+// levels: skipped where the package is missing, a failure on CI (which installs it).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace penumbra::test {
+
+inline const char* kDoomDir = "/usr/share/games/doom/";
+
+// The file's bytes, or nothing when it cannot be read.
+inline std::string readWad(const std::string& name) {
+    std::ifstream in(std::filesystem::path(kDoomDir) / name, std::ios::binary);
+    if (!in) return {};
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+}  // namespace penumbra::test
+
+#define REQUIRE_WAD(bytes, name)                                                   \
+    std::string bytes = ::penumbra::test::readWad(name);                           \
+    if (bytes.empty()) {                                                           \
+        if (std::getenv("CI")) FAIL() << name << " is missing (install freedoom)"; \
+        GTEST_SKIP() << name << " is not installed (apt install freedoom)";        \
+    }
