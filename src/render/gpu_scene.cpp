@@ -212,7 +212,7 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
         a.materialId = t.material;
         a.area = 0.5f * length(cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
         const Material& m = scene.materials[t.material];
-        if (m.isEmissive() && a.area > 0) {
+        if (m.isEmissive() && m.lightSampled && a.area > 0) {
             // Emission textures scale the light by their mean (over an animation's frames): the
             // tree's power estimate. A sky portal passes on the environment's mean from above.
             float texture = 1.0f;

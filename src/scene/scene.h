@@ -77,6 +77,10 @@ struct Material {
     // Its emission lights other surfaces but camera rays do not see it (Doom's sector light: the
     // unseen fixtures that light a room); the surface itself looks lit, not glowing.
     bool emissionHiddenFromCamera = false;
+    // Whether light sampling (next event estimation) aims at it. false: only rays that hit it
+    // find its light (with MIS weight 1), for large dim emitters that BSDF sampling finds well
+    // and that would otherwise crowd the light list (Doom's floors and ceilings).
+    bool lightSampled = true;
     TextureRef albedoTexture;             // sRGB; alpha is coverage
     TextureRef emissionTexture;           // sRGB, multiplies emission
     TextureRef normalTexture;             // tangent-space normal map, linear

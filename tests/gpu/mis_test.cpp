@@ -50,7 +50,7 @@ struct Estimate {
     double variance;  // mean per-sample variance over pixels: what MIS should lower
 };
 
-Estimate render(const gpu::Context& ctx, MisMode mode) {
+Estimate render(const gpu::Context& ctx, MisMode mode, Scene scene = misScene()) {
     RenderSettings s;
     s.width = 24;
     s.height = 18;
@@ -59,7 +59,7 @@ Estimate render(const gpu::Context& ctx, MisMode mode) {
     s.maxBounces = 2;
     s.seed = 21 + std::uint32_t(mode);
     s.mis = mode;
-    Renderer renderer(ctx, misScene(), s);
+    Renderer renderer(ctx, std::move(scene), s);
     renderer.render();
     EXPECT_EQ(renderer.stats().invalidSamples, 0u);
     std::vector<Vec4> sums = renderer.accumulation();
@@ -92,6 +92,20 @@ TEST_F(GpuTest, MisModesConvergeToTheSameImageAndBothHasTheLowestVariance) {
                 "bsdf %.5f (%.5f) %.4f\n",
                 both.mean, both.stderr, both.variance, light.mean, light.stderr, light.variance, bsdf.mean,
                 bsdf.stderr, bsdf.variance);
+}
+
+// An emitter that light sampling leaves out (Material::lightSampled false, as Doom's fill light)
+// is found by BSDF-sampled rays alone, with MIS weight 1 at every mode: the image is the same.
+TEST_F(GpuTest, AnEmitterLeftOutOfLightSamplingLightsTheSameImage) {
+    Scene unsampled = misScene();
+    for (Material& m : unsampled.materials)
+        if (m.name == "large-light") m.lightSampled = false;
+    const Estimate both = render(*ctx, MisMode::Both);
+    const double z = sidakZ(1e-3, 2);
+    for (MisMode mode : {MisMode::Both, MisMode::LightOnly}) {
+        const Estimate e = render(*ctx, mode, unsampled);
+        EXPECT_NEAR(e.mean, both.mean, z * std::hypot(e.stderr, both.stderr)) << "mode " << int(mode);
+    }
 }
 
 }  // namespace

@@ -66,6 +66,14 @@ TEST(WadSynthetic, RoomWithPillarFloorsCeilingsWalls) {
     for (Vec3 p : floor->positions) EXPECT_EQ(p.y, 0.0f);
     for (Vec3 p : ceiling->positions) EXPECT_EQ(p.y, 4.0f);
     EXPECT_NEAR(floor->lightLevel, 160.0f / 255.0f, 1e-6);
+    // The sector's fill light leaves floor and ceiling, unseen by the camera and found only by
+    // rays that hit them (light sampling would spend its picks on them).
+    for (const Mesh* flat : {floor, ceiling}) {
+        const Material& m = scene.materials[flat->material];
+        EXPECT_FLOAT_EQ(m.emission.x, wad::sectorRadiance(160));
+        EXPECT_TRUE(m.emissionHiddenFromCamera);
+        EXPECT_FALSE(m.lightSampled);
+    }
 
     // 8 one-sided walls of 128 units (4 m), each a quad facing into the room.
     ASSERT_EQ(walls->triangleCount(), 16u);
