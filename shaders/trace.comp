@@ -1,6 +1,6 @@
 #version 460
-// The path tracer: one thread per pixel, samplesPerPass paths each, added into the accumulation
-// buffer (rgb = sum of radiance, a = sum of squared luminance, for variance estimates).
+// The path tracer: one thread per pixel, samplesPerPass paths each (tracePixel), added into the
+// accumulation buffer (rgb = sum of radiance, a = sum of squared luminance, for variance estimates).
 // Unidirectional path tracing with next event estimation (one light per vertex, chosen among
 // emissive triangles and spheres, punctual lights, sun disks and the environment by
 // lib/light_sampler.glsl), combined with BSDF sampling per frame.misMode (lib/mis.glsl); every
@@ -48,9 +48,9 @@ vec3 leavingOrigin(Surface s, vec3 wi) {
 }
 
 // The light a light sample brings, arriving at the shading point along ls.wi (world) from
-// ls.dist away: radiance / pdf weighted by the BSDF, visibility, absorption and MIS. The pdf is a
-// solid-angle density, or for a delta light the probability of having picked it (isDelta).
-vec3 shadeLightSample(ShadingPoint sp, LightSample ls) {
+// ls.dist away, if nothing blocks it: radiance / pdf weighted by the BSDF, absorption and MIS. The
+// pdf is a solid-angle density, or for a delta light the probability of having picked it (isDelta).
+vec3 unoccludedLight(ShadingPoint sp, LightSample ls) {
     vec3 wi = ls.wi, radiance = ls.radiance;
     float dist = ls.dist, lightPdf = ls.pdf;
     bool isDeltaLight = ls.isDelta;
@@ -63,88 +63,169 @@ vec3 shadeLightSample(ShadingPoint sp, LightSample ls) {
     if (max(f.r, max(f.g, f.b)) <= 0.0) return vec3(0.0);
     float weight = isDeltaLight ? 1.0 : misWeightLight(lightPdf, bsdfPdf(sp.bsdf, sp.wo, wiLocal));
     if (weight <= 0.0) return vec3(0.0);
-    ++shadowRays;
-    if (shadowRayBlocked(leavingOrigin(sp.surface, wi), ls)) return vec3(0.0);
     vec3 sigma = above ? sp.mediumAbove : sp.mediumBelow;
     vec3 transmittance = dist == PN_INFINITY ? vec3(sigma == vec3(0.0) ? 1.0 : 0.0) : exp(-sigma * dist);
     return f * abs(wiLocal.z) * radiance * transmittance * (weight / lightPdf);
 }
 
-// Direct light: one light chosen among all of them by the unified sampler (with pickU, a
-// stratified number), one sample of it, one shadow ray.
-vec3 sampleDirectLight(ShadingPoint sp, float pickU, inout uint rng) {
-    LightPick pick = pickLight(sp.surface.position, sp.frame.n, pickU, rng);
-    if (pick.ref == PN_NO_LIGHT) return vec3(0.0);
-    return shadeLightSample(sp, sampleChosenLight(pick, sp.surface.position, sp.frame.n, rng));
+// One path of one pixel sample, between two of its rays.
+struct Path {
+    vec3 origin;     // the next ray
+    vec3 direction;
+    vec3 throughput;
+    vec3 result;     // radiance gathered so far
+    vec3 medium;     // absorption coefficient of the medium the ray travels in
+    vec3 previousNormal;    // shading normal where the current direction was sampled
+    vec3 previousPosition;  // and the surface point there (what light sampling saw)
+    float bsdfPdfPrev;      // solid-angle pdf of the direction that led here
+    bool afterDelta;        // the camera ray, or a delta lobe: light sampling could not see this
+    uint depth;
+    uint sampleIndex;
+    uint rng;
+};
+
+// The direct light a path's vertex is waiting for: `light` arrives unless `ray` is blocked.
+struct PendingShadow {
+    ShadowRay ray;
+    vec3 light;
+    bool pending;
+};
+
+PendingShadow noShadow() { return PendingShadow(ShadowRay(vec3(0.0), vec3(0.0, 0.0, 1.0), 0.0), vec3(0.0), false); }
+
+Path startPath(uvec2 pixel, uint pixelIndex, uint sampleIndex) {
+    Path path;
+    path.rng = rngSeed(pixelIndex, sampleIndex, frame.seed);
+    vec2 jitter = rngNext2(path.rng);
+    cameraRay(vec2(pixel) + jitter, path.rng, path.origin, path.direction);
+    path.throughput = vec3(1.0);
+    path.result = vec3(0.0);
+    path.medium = vec3(0.0);
+    path.previousNormal = vec3(0.0);
+    path.previousPosition = vec3(0.0);
+    path.bsdfPdfPrev = 0.0;
+    path.afterDelta = true;
+    path.depth = 0u;
+    path.sampleIndex = sampleIndex;
+    return path;
 }
 
-// pixelIndex and sampleIndex stratify the light picks of this pixel's samples (one R1 sequence
-// per path depth): a scene with a few lights gets each in its share of the samples.
-vec3 radiance(vec3 origin, vec3 direction, uint pixelIndex, uint sampleIndex, inout uint rng) {
-    vec3 result = vec3(0.0);
-    vec3 throughput = vec3(1.0);
-    float bsdfPdfPrev = 0.0;  // solid-angle pdf of the direction that led here
-    bool afterDelta = true;   // the camera ray, or a delta lobe: light sampling could not see this
-    vec3 medium = vec3(0.0);  // absorption coefficient of the medium the ray travels in
-    vec3 previousNormal = vec3(0.0);    // shading normal where the current direction was sampled
-    vec3 previousPosition = vec3(0.0);  // and the surface point there (what light sampling saw)
-    for (uint depth = 0u;; ++depth) {
-        ++closestRays;
-        Hit hit = traceClosest(origin, direction, PN_INFINITY);
-        if (hit.triangle == PN_NO_HIT) {
-            // Escaping inside an absorbing medium (an open mesh) leaves nothing.
-            if (medium == vec3(0.0))
-                result += throughput * escapedRadiance(previousPosition, previousNormal, direction, afterDelta ? 0.0 : bsdfPdfPrev);
-            break;
-        }
-        if (PN_HAS(PN_FEATURE_ABSORPTION)) throughput *= exp(-medium * hit.t);
-        Surface s = surfaceAt(hit, origin, direction);
-        Material m = materials[s.material];
+// Direct light at a shading point: one light chosen among all of them by the unified sampler
+// (with pickU, a stratified number), one sample of it; its shadow ray is left for the caller.
+PendingShadow sampleDirectLight(ShadingPoint sp, vec3 throughput, float pickU, inout uint rng) {
+    PendingShadow shadow = noShadow();
+    LightPick pick = pickLight(sp.surface.position, sp.frame.n, pickU, rng);
+    if (pick.ref == PN_NO_LIGHT) return shadow;
+    LightSample ls = sampleChosenLight(pick, sp.surface.position, sp.frame.n, rng);
+    shadow.light = throughput * unoccludedLight(sp, ls);
+    shadow.ray = shadowRayTo(leavingOrigin(sp.surface, ls.wi), ls);
+    shadow.pending = shadow.light != vec3(0.0);
+    return shadow;
+}
 
-        if ((m.flags & PN_MATERIAL_EMISSIVE) != 0u && s.frontFace) {
-            float lightPdf = 0.0;
-            if (!afterDelta && s.lightIndex != PN_NO_LIGHT && misSamplesLights())
-                lightPdf = emitterHitPdf(hit, s, previousPosition, previousNormal, origin, direction);
-            result += throughput * emittedRadiance(m, s.uv, direction, depth == 0u) * misWeightHit(bsdfPdfPrev, lightPdf, afterDelta);
-        }
-        if (depth >= frame.maxBounces) break;
-
-        ShadingPoint sp;
-        sp.surface = s;
-        sp.frame = shadingFrameAt(s, m, hit.triangle, -direction);
-        sp.bsdf = materialBsdf(m, s.uv, s.frontFace);
-        sp.wo = toLocal(sp.frame, -direction);
-        sp.mediumAbove = medium;
-        // Refraction leaves the medium through a back face and enters the material's through a front one.
-        sp.mediumBelow = PN_HAS(PN_FEATURE_ABSORPTION) && s.frontFace ? m.absorption : vec3(0.0);
-
-        float pickU = stratifiedSample(pixelIndex, depth, sampleIndex, frame.seed);
-        result += throughput * sampleDirectLight(sp, pickU, rng);
-
-        vec3 u = vec3(rngNext2(rng), rngNext(rng));
-        BsdfSample bs = bsdfSample(sp.bsdf, sp.wo, u);
-        if (!(bs.pdf > 0.0) || max(bs.weight.r, max(bs.weight.g, bs.weight.b)) <= 0.0) break;
-        vec3 wi = toWorld(sp.frame, bs.wi);
-        // A sample on the other side of the true surface than the shading frame says would leak
-        // light through it (or carry none): the path ends.
-        bool above = dot(wi, s.geometricNormal) > 0.0;
-        if (above != (bs.wi.z > 0.0)) break;
-        throughput *= bs.weight;
-        bsdfPdfPrev = bs.pdf;
-        afterDelta = bs.isDelta;
-        if (!above) medium = sp.mediumBelow;
-
-        if (depth + 1u >= frame.rouletteStart) {
-            float survive = min(max(throughput.r, max(throughput.g, throughput.b)), 1.0);
-            if (rngNext(rng) >= survive) break;
-            throughput /= survive;
-        }
-        origin = leavingOrigin(s, wi);
-        direction = wi;
-        previousNormal = sp.frame.n;
-        previousPosition = s.position;
+// The path meets `hit` (its closest hit along its ray): gathers emission there, leaves the
+// vertex's light sample in `shadow` and samples the BSDF for the next ray. False: the path ends
+// (its pending shadow ray, if any, still counts). pixelIndex and the path's sample index stratify
+// the light picks of a pixel's samples (one R1 sequence per path depth).
+bool extendPath(inout Path path, Hit hit, uint pixelIndex, out PendingShadow shadow) {
+    shadow = noShadow();
+    if (hit.triangle == PN_NO_HIT) {
+        // Escaping inside an absorbing medium (an open mesh) leaves nothing.
+        if (path.medium == vec3(0.0))
+            path.result += path.throughput * escapedRadiance(path.previousPosition, path.previousNormal, path.direction,
+                                                             path.afterDelta ? 0.0 : path.bsdfPdfPrev);
+        return false;
     }
-    return result;
+    if (PN_HAS(PN_FEATURE_ABSORPTION)) path.throughput *= exp(-path.medium * hit.t);
+    Surface s = surfaceAt(hit, path.origin, path.direction);
+    Material m = materials[s.material];
+
+    if ((m.flags & PN_MATERIAL_EMISSIVE) != 0u && s.frontFace) {
+        float lightPdf = 0.0;
+        if (!path.afterDelta && s.lightIndex != PN_NO_LIGHT && misSamplesLights())
+            lightPdf = emitterHitPdf(hit, s, path.previousPosition, path.previousNormal, path.origin, path.direction);
+        path.result += path.throughput * emittedRadiance(m, s.uv, path.direction, path.depth == 0u) *
+                       misWeightHit(path.bsdfPdfPrev, lightPdf, path.afterDelta);
+    }
+    if (path.depth >= frame.maxBounces) return false;
+
+    ShadingPoint sp;
+    sp.surface = s;
+    sp.frame = shadingFrameAt(s, m, hit.triangle, -path.direction);
+    sp.bsdf = materialBsdf(m, s.uv, s.frontFace);
+    sp.wo = toLocal(sp.frame, -path.direction);
+    sp.mediumAbove = path.medium;
+    // Refraction leaves the medium through a back face and enters the material's through a front one.
+    sp.mediumBelow = PN_HAS(PN_FEATURE_ABSORPTION) && s.frontFace ? m.absorption : vec3(0.0);
+
+    float pickU = stratifiedSample(pixelIndex, path.depth, path.sampleIndex, frame.seed);
+    shadow = sampleDirectLight(sp, path.throughput, pickU, path.rng);
+
+    vec3 u = vec3(rngNext2(path.rng), rngNext(path.rng));
+    BsdfSample bs = bsdfSample(sp.bsdf, sp.wo, u);
+    if (!(bs.pdf > 0.0) || max(bs.weight.r, max(bs.weight.g, bs.weight.b)) <= 0.0) return false;
+    vec3 wi = toWorld(sp.frame, bs.wi);
+    // A sample on the other side of the true surface than the shading frame says would leak
+    // light through it (or carry none): the path ends.
+    bool above = dot(wi, s.geometricNormal) > 0.0;
+    if (above != (bs.wi.z > 0.0)) return false;
+    path.throughput *= bs.weight;
+    path.bsdfPdfPrev = bs.pdf;
+    path.afterDelta = bs.isDelta;
+    if (!above) path.medium = sp.mediumBelow;
+
+    if (path.depth + 1u >= frame.rouletteStart) {
+        float survive = min(max(path.throughput.r, max(path.throughput.g, path.throughput.b)), 1.0);
+        if (rngNext(path.rng) >= survive) return false;
+        path.throughput /= survive;
+    }
+    path.origin = leavingOrigin(s, wi);
+    path.direction = wi;
+    path.previousNormal = sp.frame.n;
+    path.previousPosition = s.position;
+    ++path.depth;
+    return true;
+}
+
+// A finished sample into the pixel's sums. A NaN or inf sample would poison the pixel forever:
+// it is dropped, and counted so that tests (and the render summary) see it.
+void addSample(vec3 L, inout vec3 sum, inout float sumSquares) {
+    if (any(isnan(L)) || any(isinf(L))) {
+        L = vec3(0.0);
+        atomicAdd(counters.invalidSamples, 1u);
+    }
+    sum += L;
+    float y = luminance(L);
+    sumSquares += y * y;
+}
+
+// The pixel's samplesPerPass paths, one after another in one loop that traces one ray per
+// iteration: a path's closest-hit rays and its shadow rays share the loop's single traversal
+// (one inlined copy, and the lanes of a subgroup traverse together whatever kind of ray each
+// holds), and a lane whose path ends starts its next sample at once instead of idling until the
+// subgroup's longest path is done.
+// The pixel's samplesPerPass paths. Each vertex samples its light and its BSDF before the light's
+// shadow ray is traced, so that the shading point's state is dead during that traversal.
+void tracePixel(uvec2 pixel, uint pixelIndex) {
+    uint firstSample = push.passIndex * frame.samplesPerPass;
+    vec3 sum = vec3(0.0);
+    float sumSquares = 0.0;
+    for (uint k = 0u; k < frame.samplesPerPass; ++k) {
+        Path path = startPath(pixel, pixelIndex, firstSample + k);
+        bool alive = true;
+        while (alive) {
+            ++closestRays;
+            Hit hit = traceClosest(path.origin, path.direction, PN_INFINITY);
+            PendingShadow shadow;
+            alive = extendPath(path, hit, pixelIndex, shadow);
+            if (shadow.pending) {
+                ++shadowRays;
+                if (!traceOccluded(shadow.ray.origin, shadow.ray.direction, shadow.ray.tMax)) path.result += shadow.light;
+            }
+        }
+        addSample(path.result, sum, sumSquares);
+    }
+    accum[pixelIndex] += vec4(sum, sumSquares);
 }
 
 void main() {
@@ -153,28 +234,7 @@ void main() {
     // pass. Whole tiles share an entry, so the threads of a workgroup mostly agree and skip together.
     bool sampled = pixel.x < frame.width && pixel.y < frame.height;
     if (sampled && (push.mode & PN_TRACE_MASKED) != 0u) sampled = activeMask[pixel.y * frame.width + pixel.x] != 0u;
-    if (sampled) {
-        uint pixelIndex = pixel.y * frame.width + pixel.x;
-        vec3 sum = vec3(0.0);
-        float sumSquares = 0.0;
-        for (uint s = 0u; s < frame.samplesPerPass; ++s) {
-            uint rng = rngSeed(pixelIndex, push.passIndex * frame.samplesPerPass + s, frame.seed);
-            vec2 jitter = rngNext2(rng);
-            vec3 cameraOrigin, cameraDirection;
-            cameraRay(vec2(pixel) + jitter, rng, cameraOrigin, cameraDirection);
-            vec3 L = radiance(cameraOrigin, cameraDirection, pixelIndex, push.passIndex * frame.samplesPerPass + s, rng);
-            // A NaN or inf sample would poison the pixel forever: it is dropped, and counted so
-            // that tests (and the render summary) see it.
-            if (any(isnan(L)) || any(isinf(L))) {
-                L = vec3(0.0);
-                atomicAdd(counters.invalidSamples, 1u);
-            }
-            sum += L;
-            float y = luminance(L);
-            sumSquares += y * y;
-        }
-        accum[pixelIndex] += vec4(sum, sumSquares);
-    }
+    if (sampled) tracePixel(pixel, pixel.y * frame.width + pixel.x);
     if (push.countRays != 0u) {
         uint closest = subgroupAdd(closestRays);
         uint shadow = subgroupAdd(shadowRays);

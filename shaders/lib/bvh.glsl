@@ -98,15 +98,14 @@ Hit traverseBrute(vec3 o, vec3 d, float tMax, bool anyHit) {
     return hit;
 }
 
-Hit traceClosest(vec3 o, vec3 d, float tMax) {
-    return PN_HAS(PN_FEATURE_BRUTE_FORCE) && frame.accel == PN_ACCEL_BRUTE ? traverseBrute(o, d, tMax, false)
-                                                                           : traverseBvh(o, d, tMax, false);
+// One ray through the chosen acceleration structure; anyHit for shadow rays.
+Hit traceRay(vec3 o, vec3 d, float tMax, bool anyHit) {
+    return PN_HAS(PN_FEATURE_BRUTE_FORCE) && frame.accel == PN_ACCEL_BRUTE ? traverseBrute(o, d, tMax, anyHit)
+                                                                           : traverseBvh(o, d, tMax, anyHit);
 }
 
-bool traceOccluded(vec3 o, vec3 d, float tMax) {
-    Hit h = PN_HAS(PN_FEATURE_BRUTE_FORCE) && frame.accel == PN_ACCEL_BRUTE ? traverseBrute(o, d, tMax, true)
-                                                                            : traverseBvh(o, d, tMax, true);
-    return h.triangle != PN_NO_HIT;
-}
+Hit traceClosest(vec3 o, vec3 d, float tMax) { return traceRay(o, d, tMax, false); }
+
+bool traceOccluded(vec3 o, vec3 d, float tMax) { return traceRay(o, d, tMax, true).triangle != PN_NO_HIT; }
 
 #endif

@@ -241,16 +241,27 @@ LightSample sampleChosenLight(LightPick pick, vec3 p, vec3 n, inout uint rng) {
     return ls;
 }
 
-// Whether the shadow ray from `origin` (already off the shading point's surface) to the light
-// sample is blocked. Both ends are off their surfaces, so the ray meets neither the shading
-// surface nor the emitter itself, however far from the world's origin they are.
-bool shadowRayBlocked(vec3 origin, LightSample ls) {
-    if (ls.dist == PN_INFINITY) return traceOccluded(origin, ls.wi, PN_INFINITY);
+// The shadow ray from `origin` (already off the shading point's surface) to a light sample.
+// Both ends are off their surfaces, so the ray meets neither the shading surface nor the emitter
+// itself, however far from the world's origin they are. tMax 0: the ends coincide, nothing blocks.
+struct ShadowRay {
+    vec3 origin;
+    vec3 direction;
+    float tMax;
+};
+
+ShadowRay shadowRayTo(vec3 origin, LightSample ls) {
+    if (ls.dist == PN_INFINITY) return ShadowRay(origin, ls.wi, PN_INFINITY);
     vec3 span = ls.target - origin;
     float length2 = dot(span, span);
-    if (!(length2 > 0.0)) return false;
+    if (!(length2 > 0.0)) return ShadowRay(origin, ls.wi, 0.0);
     float len = sqrt(length2);
-    return traceOccluded(origin, span / len, len * (1.0 - 1e-4));
+    return ShadowRay(origin, span / len, len * (1.0 - 1e-4));
+}
+
+bool shadowRayBlocked(vec3 origin, LightSample ls) {
+    ShadowRay r = shadowRayTo(origin, ls);
+    return r.tMax > 0.0 && traceOccluded(r.origin, r.direction, r.tMax);
 }
 
 // The solid-angle pdf with which light sampling at the previous vertex (position p, shading
