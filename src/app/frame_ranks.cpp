@@ -141,11 +141,11 @@ void printRanksSummary(const Comm& comm, const RenderPlan& plan, const RanksOutc
     if (plan.job.quiet) return;
     const double rays = double(st.closestRays + st.shadowRays), gpuSeconds = st.gpuMilliseconds * 1e-3;
     std::fprintf(stderr,
-                 "penumbra: %s %ux%u, %u spp%s, on %d ranks, in %.2f s (GPU %.2f s over all ranks, reduction %.3f s), "
+                 "penumbra: %s %ux%u, %u spp%s, on %d rank%s, in %.2f s (GPU %.2f s over all ranks, reduction %.3f s), "
                  "%.1f Mrays/s per GPU second -> %s\n",
                  plan.scene.name.c_str(), plan.job.settings.width, plan.job.settings.height,
                  r.passes * plan.job.settings.samplesPerPass,
-                 r.reason == StopReason::TimeLimit ? ", time limit reached" : "", comm.size(), r.seconds, gpuSeconds,
+                 r.reason == StopReason::TimeLimit ? ", time limit reached" : "", comm.size(), comm.size() == 1 ? "" : "s", r.seconds, gpuSeconds,
                  reduceSeconds, gpuSeconds > 0 ? rays / gpuSeconds * 1e-6 : 0.0, plan.output.string().c_str());
 }
 
