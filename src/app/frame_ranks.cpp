@@ -134,18 +134,21 @@ RenderStats reduceStats(Comm& comm, const RenderStats& mine) {
 }
 
 void printRanksSummary(const Comm& comm, const RenderPlan& plan, const RanksOutcome& r, const RenderStats& st,
-                       double reduceSeconds) {
+                       double reduceSeconds, double sampled) {
     if (st.invalidSamples)
         std::fprintf(stderr, "penumbra: warning: %llu path samples were NaN or infinite and were dropped\n",
                      static_cast<unsigned long long>(st.invalidSamples));
     if (plan.job.quiet) return;
     const double rays = double(st.closestRays + st.shadowRays), gpuSeconds = st.gpuMilliseconds * 1e-3;
+    std::string why = r.reason == StopReason::TimeLimit ? ", time limit reached" : "";
+    if (plan.job.adaptive.enabled())
+        why += ", adaptive: " + std::to_string(int(100 * sampled + 0.5)) + "% of the samples traced";
     std::fprintf(stderr,
                  "penumbra: %s %ux%u, %u spp%s, on %d rank%s, in %.2f s (GPU %.2f s over all ranks, reduction %.3f s), "
                  "%.1f Mrays/s per GPU second -> %s\n",
                  plan.scene.name.c_str(), plan.job.settings.width, plan.job.settings.height,
                  r.passes * plan.job.settings.samplesPerPass,
-                 r.reason == StopReason::TimeLimit ? ", time limit reached" : "", comm.size(), comm.size() == 1 ? "" : "s", r.seconds, gpuSeconds,
+                 why.c_str(), comm.size(), comm.size() == 1 ? "" : "s", r.seconds, gpuSeconds,
                  reduceSeconds, gpuSeconds > 0 ? rays / gpuSeconds * 1e-6 : 0.0, plan.output.string().c_str());
 }
 
@@ -187,7 +190,7 @@ void renderFrameOnRanks(Comm& comm, RenderPlan& plan, double sceneTime) {
     distributed::agree(comm, [&] {
         if (!comm.primary()) return;
         writeFrameOutputs(plan.output, job, total, *passes, true);
-        printRanksSummary(comm, plan, outcome, stats, reduceSeconds);
+        printRanksSummary(comm, plan, outcome, stats, reduceSeconds, sampledFraction(total));
     });
 }
 
