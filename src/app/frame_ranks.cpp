@@ -67,8 +67,12 @@ struct RanksOutcome {
 RanksOutcome renderRounds(Comm& comm, Renderer& renderer, const FrameJob& job, PixelAccumulator& sums) {
     const RenderSettings& s = renderer.settings();
     const std::uint32_t totalPasses = (job.settings.samplesPerPixel + s.samplesPerPass - 1) / s.samplesPerPass;
-    const std::uint32_t perRound = roundPasses(job.adaptive);
     const bool adaptive = job.adaptive.enabled();
+    // Rounds are where rank 0 checks the clock. Adaptive rounds are fixed (the plans depend on
+    // them); otherwise the rounds only decide the order of float additions, so under a time
+    // limit they shrink to a few passes per rank and the render stops close to the limit.
+    const std::uint32_t perRound = !adaptive && job.timeLimit > 0 ? std::uint32_t(4 * comm.size())
+                                                                   : roundPasses(job.adaptive);
     ProgressBar progress(job.progressLabel, job.settings.samplesPerPixel,
                          comm.primary() && !job.quiet ? job.progress : ProgressMode::Off, "spp");
     RanksOutcome outcome;
