@@ -13,6 +13,7 @@ packages=(
   libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev zlib1g-dev   # zlib: .ply.gz
   libgtest-dev libbenchmark-dev
   libglfw3-dev libimgui-dev xvfb xauth         # the viewer (penumbra view) and its test under Xvfb
+  libopenmpi-dev openmpi-bin                    # render across ranks under mpirun (docs/DISTRIBUTED.md)
   clang libclang-rt-14-dev                      # libFuzzer targets (tests/fuzz)
   freedoom glmark2-data assimp-testmodels       # real scenes the tests load (never committed)
 )

@@ -6,6 +6,8 @@
 
 #include "app/commands.h"
 #include "app/common_options.h"
+#include "app/info_ranks.h"
+#include "app/render_ranks.h"
 #include "render/gpu_scene.h"
 
 namespace penumbra::app {
@@ -17,6 +19,7 @@ struct InfoArgs {
     std::string device;
     EnvironmentSpec env;
     WadOptions wad;
+    bool mpi = false;
 };
 
 void printScene(const std::string& name, const std::string& map, const EnvironmentSpec& env, const WadOptions& wad) {
@@ -49,6 +52,11 @@ void printScene(const std::string& name, const std::string& map, const Environme
 }
 
 void runInfo(const InfoArgs& args) {
+    if (std::unique_ptr<distributed::Comm> comm = startRanks(args.mpi)) {
+        printRanksInfo(*comm, args.device);
+        if (comm->primary() && !args.scene.empty()) printScene(args.scene, args.map, args.env, args.wad);
+        return;
+    }
     std::string error;
     std::vector<gpu::DeviceInfo> devices = gpu::Context::listDevices(&error);
     if (devices.empty()) std::printf("no Vulkan devices: %s\n", error.empty() ? "none found" : error.c_str());
@@ -77,6 +85,7 @@ void registerInfo(CLI::App& app, Action& action) {
     cmd->add_option("scene", args->scene, "built-in scene or scene file");
     cmd->add_option("--map", args->map, "level of a .wad file");
     addDeviceOption(*cmd, args->device);
+    cmd->add_flag("--mpi", args->mpi, "list every rank's host and device (implied when started by mpirun)");
     addBvhCacheOption(*cmd);
     addEnvironmentOptions(*cmd, args->env);
     addWadOptions(*cmd, args->wad);

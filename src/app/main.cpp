@@ -8,6 +8,7 @@
 #include "app/common_options.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "distributed/launch.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"penumbra: a GPU path tracer on Vulkan compute"};
@@ -30,6 +31,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForAllHelp& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
+        // Under mpirun every rank parses the same command: one of them says what is wrong.
+        if (penumbra::distributed::launchFromEnvironment().rank != 0) return 2;
         std::fprintf(stderr, "penumbra: error: %s; run 'penumbra --help' for usage\n", e.what());
         return 2;
     }
@@ -38,6 +41,8 @@ int main(int argc, char** argv) {
         penumbra::app::configureBvhCache();
         action();
         return 0;
+    } catch (const penumbra::distributed::Reported& e) {
+        return e.exitCode;  // a rank of an MPI job, whose error rank 0 printed
     } catch (const penumbra::UsageError& e) {
         std::fprintf(stderr, "penumbra: error: %s\n", e.what());
         return 2;

@@ -11,6 +11,7 @@
 #include "app/render_frame.h"
 #include "app/render_outputs.h"
 #include "app/render_options.h"
+#include "app/render_ranks.h"
 #include "app/render_sequence.h"
 #include "core/atomic_file.h"
 #include "core/duration.h"
@@ -122,38 +123,54 @@ void printSummary(const Scene& scene, const FrameJob& job, const gpu::Context& c
                  output.string().c_str());
 }
 
-void runRender(const RenderArgs& args, const CLI::App& cmd) {
+// Everything before rendering: the scene, the checked job, the output, the device. writesOutput:
+// whether this process writes the output (a rank other than 0 of a single image does not).
+RenderPlan prepareRender(const RenderArgs& args, const CLI::App& cmd, const std::string& device, bool writesOutput) {
     LoadedRender loaded = loadRender(args, cmd);
-    FrameJob& job = loaded.job;
+    RenderPlan plan{std::move(loaded.scene), std::move(loaded.job)};
+    FrameJob& job = plan.job;
     applyFrameOptions(args, job);
-    const bool sequence = !args.frames.empty();
-    const FrameRange frames = sequence ? parseFrames(args.frames) : FrameRange{};
-    const std::filesystem::path output = defaultOutput(args, sequence);
+    plan.sequence = !args.frames.empty();
+    plan.frames = plan.sequence ? parseFrames(args.frames) : FrameRange{};
+    plan.output = defaultOutput(args, plan.sequence);
+    const std::filesystem::path& output = plan.output;
     // Fail before rendering, not after: a bad name or folder would waste the whole render.
     formatFromPath(output);
     std::error_code ec;
-    if (!sequence && !args.resume.empty() && !std::filesystem::is_regular_file(args.resume, ec))
+    if (!plan.sequence && !args.resume.empty() && !std::filesystem::is_regular_file(args.resume, ec))
         throw Error("--resume " + args.resume + ": no such checkpoint file (it is OUTPUT.state, written by --checkpoint "
                     "or when a render is interrupted)");
-    checkWritable(sequence ? framePath(output, 0) : output);
-    if (job.aovs.any()) checkWritable(aovPathFor(output));
-
-    auto ctx = openDevice(args.device);
-    applyCpuDefaults(*ctx, job);
+    if (plan.sequence && !args.resume.empty() && args.resume != output.string())
+        throw UsageError("with --frames, --resume takes the output pattern ('" + output.string() + "')");
+    if (writesOutput) {
+        checkWritable(plan.sequence ? framePath(output, 0) : output);
+        if (job.aovs.any()) checkWritable(aovPathFor(output));
+    }
+    plan.ctx = openDevice(device);
+    applyCpuDefaults(*plan.ctx, job);
     validateSettings(job.settings);
-    if (sequence) {
-        if (!args.resume.empty() && args.resume != output.string())
-            throw UsageError("with --frames, --resume takes the output pattern ('" + output.string() + "')");
-        renderSequence(*ctx, loaded.scene, job, output,
-                       SequenceOptions{frames, args.fps, args.time, !args.resume.empty()});
+    plan.sequenceOptions = SequenceOptions{plan.frames, args.fps, args.time, !args.resume.empty()};
+    return plan;
+}
+
+void runRender(const RenderArgs& args, const CLI::App& cmd) {
+    if (std::unique_ptr<distributed::Comm> comm = startRanks(args.mpi)) {
+        renderOnRanks(*comm, args, [&](const std::string& device, bool writesOutput) {
+            return prepareRender(args, cmd, device, writesOutput);
+        });
         return;
     }
-    applySceneTime(loaded.scene, args.time);
-    job.settings.time = textureTime(args.time);
+    RenderPlan plan = prepareRender(args, cmd, args.device, true);
+    if (plan.sequence) {
+        renderSequence(*plan.ctx, plan.scene, plan.job, plan.output, plan.sequenceOptions);
+        return;
+    }
+    applySceneTime(plan.scene, args.time);
+    plan.job.settings.time = textureTime(args.time);
     std::optional<std::filesystem::path> resumeFrom;
     if (!args.resume.empty()) resumeFrom = args.resume;
-    const FrameOutcome r = renderFrame(*ctx, loaded.scene, job, output, resumeFrom);
-    printSummary(loaded.scene, job, *ctx, r, output);
+    const FrameOutcome r = renderFrame(*plan.ctx, plan.scene, plan.job, plan.output, resumeFrom);
+    printSummary(plan.scene, plan.job, *plan.ctx, r, plan.output);
 }
 
 }  // namespace

@@ -52,7 +52,8 @@ FrameOutcome renderFrame(const gpu::Context& ctx, const Scene& scene, const Fram
             std::fprintf(stderr, "penumbra: resuming %s at %u spp\n", resumeFrom->string().c_str(), render.samplesPerPixel());
     }
 
-    StopOnSignals signals;
+    std::optional<StopOnSignals> signals;
+    if (job.stopOnSignals) signals.emplace();
     ProgressBar progress(job.progressLabel, job.settings.samplesPerPixel, job.quiet ? ProgressMode::Off : job.progress,
                          "spp");
     RenderBudget budget;

@@ -75,6 +75,8 @@ void addRenderOptions(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--time", a.time, "the moment of the scene to render, in seconds (camera paths, animations, Doom's animated textures)");
     cmd.add_option("--fps", a.fps, "frames per second of --frames (default 24)");
     cmd.add_option("--progress", a.progress, "bar (default, on a terminal), json (lines on stdout) or none");
+    cmd.add_flag("--mpi", a.mpi,
+                 "render across the ranks of an MPI job (implied when started by mpirun; docs/DISTRIBUTED.md)");
     addDeviceOption(cmd, a.device);
     addWadOptions(cmd, a.wad);
     addBvhCacheOption(cmd);

@@ -43,6 +43,7 @@ struct RenderArgs {
     double time = 0;                 // --time SECONDS: the scene's moment (sequences: the offset)
     double fps = 24;                 // --fps: frames per second of a sequence
     std::string progress = "bar";    // --progress bar|json|none
+    bool mpi = false;                // --mpi: join an MPI job even when not started by mpirun
 };
 
 // Which AOV layers to write.
@@ -71,6 +72,9 @@ struct FrameJob {
     bool quiet = false;
     std::string progressLabel = "render";
     std::string resumeArgument;  // what --resume takes to continue after an interrupt ("": the state file)
+    // SIGINT/SIGTERM stop the render cleanly and keep what it has. Off across MPI ranks, where
+    // mpirun's SIGTERM ends a failed job and must leave no partial output behind.
+    bool stopOnSignals = true;
 };
 
 // The checkpoint file that goes with an output image: "<output>.state".

@@ -49,7 +49,11 @@ std::filesystem::path aovPathFor(const std::filesystem::path& output) {
 
 void writeFrameOutputs(const std::filesystem::path& output, const FrameJob& job, ProgressiveRender& render,
                        FinalFramePasses& passes, bool final) {
-    const PixelAccumulator sums = render.current();
+    writeFrameOutputs(output, job, render.current(), passes, final);
+}
+
+void writeFrameOutputs(const std::filesystem::path& output, const FrameJob& job, const PixelAccumulator& sums,
+                       FinalFramePasses& passes, bool final) {
     const ImageRgb beauty = final && job.denoise ? passes.denoise(sums) : sums.image();
     const bool aovs = final && job.aovs.any();
     const bool exr = formatFromPath(output) == ImageFormat::Exr;

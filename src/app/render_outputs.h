@@ -17,5 +17,8 @@ std::filesystem::path aovPathFor(const std::filesystem::path& output);
 // denoised image when job.denoise, and the AOVs.
 void writeFrameOutputs(const std::filesystem::path& output, const FrameJob& job, ProgressiveRender& render,
                        FinalFramePasses& passes, bool final);
+// The same from sums made elsewhere (a render across ranks, reduced on rank 0).
+void writeFrameOutputs(const std::filesystem::path& output, const FrameJob& job, const PixelAccumulator& sums,
+                       FinalFramePasses& passes, bool final);
 
 }  // namespace penumbra::app

@@ -2,7 +2,6 @@
 
 #include <cstdio>
 
-#include "app/render_frame.h"
 #include "core/error.h"
 #include "scene/animation.h"
 
@@ -43,33 +42,44 @@ std::filesystem::path framePath(const std::filesystem::path& pattern, std::int64
     return pattern.parent_path() / (name.substr(0, d.at) + number + name.substr(d.at + d.length));
 }
 
+bool frameFinished(const std::filesystem::path& pattern, std::int64_t frame) {
+    const std::filesystem::path output = framePath(pattern, frame);
+    std::error_code ec;
+    // A frame's image is written atomically, so an image without a state beside it is finished.
+    return !std::filesystem::exists(statePathFor(output), ec) && std::filesystem::exists(output, ec);
+}
+
+FrameOutcome renderSequenceFrame(const gpu::Context& ctx, Scene& scene, const FrameJob& job,
+                                 const std::filesystem::path& pattern, const SequenceOptions& o, std::int64_t frame) {
+    const std::filesystem::path output = framePath(pattern, frame);
+    const std::filesystem::path state = statePathFor(output);
+    std::error_code ec;
+    const bool haveState = std::filesystem::exists(state, ec);
+    applySceneTime(scene, double(frame) / o.fps + o.offsetSeconds);
+    FrameJob frameJob = job;
+    frameJob.settings.time = textureTime(double(frame) / o.fps + o.offsetSeconds);
+    frameJob.progressLabel = "frame " + std::to_string(frame);
+    frameJob.resumeArgument = pattern.string();  // a sequence resumes by its output pattern
+    const std::optional<std::filesystem::path> resumeFrom =
+        o.resume && haveState ? std::optional<std::filesystem::path>(state) : std::nullopt;
+    return renderFrame(ctx, scene, frameJob, output, resumeFrom);
+}
+
 void renderSequence(const gpu::Context& ctx, Scene& scene, const FrameJob& job, const std::filesystem::path& pattern,
                     const SequenceOptions& o) {
     const std::int64_t count = o.frames.last - o.frames.first + 1;
     std::int64_t skipped = 0;
     for (std::int64_t frame = o.frames.first; frame <= o.frames.last; ++frame) {
-        const std::filesystem::path output = framePath(pattern, frame);
-        const std::filesystem::path state = statePathFor(output);
-        std::error_code ec;
-        const bool haveState = std::filesystem::exists(state, ec);
-        // A frame's image is written atomically, so an image without a state beside it is finished.
-        if (o.resume && !haveState && std::filesystem::exists(output, ec)) {
+        if (o.resume && frameFinished(pattern, frame)) {
             ++skipped;
             continue;
         }
-        applySceneTime(scene, double(frame) / o.fps + o.offsetSeconds);
-        FrameJob frameJob = job;
-        frameJob.settings.time = textureTime(double(frame) / o.fps + o.offsetSeconds);
-        frameJob.progressLabel = "frame " + std::to_string(frame);
-        frameJob.resumeArgument = pattern.string();  // a sequence resumes by its output pattern
-        const std::optional<std::filesystem::path> resumeFrom =
-            o.resume && haveState ? std::optional<std::filesystem::path>(state) : std::nullopt;
-        const FrameOutcome r = renderFrame(ctx, scene, frameJob, output, resumeFrom);
+        const FrameOutcome r = renderSequenceFrame(ctx, scene, job, pattern, o, frame);
         if (!job.quiet)
             std::fprintf(stderr, "penumbra: frame %lld (%lld of %lld) at t = %.4g s: %u spp in %.2f s -> %s\n",
                          static_cast<long long>(frame), static_cast<long long>(frame - o.frames.first + 1),
                          static_cast<long long>(count), double(frame) / o.fps + o.offsetSeconds, r.samplesPerPixel,
-                         r.seconds, output.string().c_str());
+                         r.seconds, framePath(pattern, frame).string().c_str());
     }
     if (skipped && !job.quiet)
         std::fprintf(stderr, "penumbra: %lld finished frames were skipped (--resume)\n", static_cast<long long>(skipped));

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "app/render_frame.h"
 #include "app/render_options.h"
 #include "gpu/context.h"
 #include "scene/scene.h"
@@ -21,6 +22,16 @@ struct SequenceOptions {
     double offsetSeconds = 0;
     bool resume = false;  // skip finished frames, continue interrupted ones
 };
+
+// Whether --resume skips frame `frame`: its image was written (atomically) and no state file
+// beside it says it was interrupted.
+bool frameFinished(const std::filesystem::path& pattern, std::int64_t frame);
+
+// Renders one frame of the sequence (moving `scene` to its moment), continuing it from its state
+// file when resuming and one is there.
+FrameOutcome renderSequenceFrame(const gpu::Context& ctx, Scene& scene, const FrameJob& job,
+                                 const std::filesystem::path& pattern, const SequenceOptions& options,
+                                 std::int64_t frame);
 
 // Renders the frames in order; `scene` is moved to each frame's moment in place.
 void renderSequence(const gpu::Context& ctx, Scene& scene, const FrameJob& job, const std::filesystem::path& pattern,
