@@ -11,6 +11,7 @@ packages=(
   libstb-dev libtinyexr-dev libcli11-dev
   libopenexr-dev libxxhash-dev                  # render --aov (multi-layer EXR), checkpoint keys
   libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev zlib1g-dev   # zlib: .ply.gz
+  libassimp-dev                                 # FBX, Collada, 3DS, STL, ... (src/scene/io/assimp_loader.cpp)
   libgtest-dev libbenchmark-dev
   libglfw3-dev libimgui-dev xvfb xauth         # the viewer (penumbra view) and its test under Xvfb
   clang libclang-rt-14-dev                      # libFuzzer targets (tests/fuzz)
