@@ -92,6 +92,9 @@ auto guarded(const std::string& name, F&& body) {
     } catch (const std::exception& e) {
         std::string what = e.what();
         std::replace(what.begin(), what.end(), '\n', ' ');
+        // OpenEXR repeats the file name: 'Cannot read image file "x.exr". <why>'.
+        if (what.rfind("Cannot read image file \"", 0) == 0 && what.find("\". ") != std::string::npos)
+            what = what.substr(what.find("\". ") + 3);
         throw Error("cannot read OpenEXR file '" + name + "': " + what);
     }
 }

@@ -136,6 +136,18 @@ TEST_F(ColladaQuads, PhongAndLambertMaterialsAreMapped) {
     EXPECT_TRUE(tex.srgb);
 }
 
+TEST(AssimpLoader, ColladaZUpIsTurnedToYUp) {
+    std::string dae = readBytes(dataDir() / "assimp/two_quads.dae");
+    dae.replace(dae.find("Y_UP"), 4, "Z_UP");
+    const Scene s = loadAssimpFromMemory(dae, "zup.dae", "dae");
+    // (x, y, z) in the file is (x, z, -y) with +y up: the quads' height becomes depth.
+    const Aabb b = s.bounds();
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(b.lo[k], Vec3(0, -2, -2)[k], 1e-6f) << k;
+        EXPECT_NEAR(b.hi[k], Vec3(5, 0, 0)[k], 1e-6f) << k;
+    }
+}
+
 TEST(AssimpLoader, FromMemoryMatchesTheFile) {
     const Scene file = loadSceneFile(dataDir() / "assimp/tetrahedron.stl");
     const Scene memory = loadAssimpFromMemory(readBytes(dataDir() / "assimp/tetrahedron.stl"), "t.stl", "stl");
