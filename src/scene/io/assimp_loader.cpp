@@ -96,6 +96,8 @@ std::string readError(const std::string& name, std::string what) {
     if (what.find("bad_alloc") != std::string::npos || what.find("bad_array_new_length") != std::string::npos)
         return name + ": cannot read the model: it needs more memory than is available (a count in the file is "
                       "probably corrupt)";
+    if (what.find("No meshes remaining") != std::string::npos)  // all dropped as points, lines, NaN or degenerate
+        return name + ": the file has no triangles to render (every face was a point, a line, degenerate or not finite)";
     return name + ": cannot read the model (" + oneLine(std::move(what)) + ")";
 }
 

@@ -177,6 +177,7 @@ TEST(AssimpLoader, MalformedFilesGiveOneLineErrors) {
         EXPECT_NE(error.find(file), std::string::npos) << error;
         EXPECT_EQ(error.find('\n'), std::string::npos) << error;
     }
+    EXPECT_NE(errorOf([&] { (void)loadSceneFile(dir / "nan.stl"); }).find("no triangles"), std::string::npos);
     std::filesystem::create_directories(dir / "folder.fbx");
     EXPECT_NE(errorOf([&] { (void)loadSceneFile(dir / "folder.fbx"); }).find("not a regular file"), std::string::npos);
     std::filesystem::remove_all(dir);
