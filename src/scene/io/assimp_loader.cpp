@@ -7,7 +7,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cinttypes>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -68,26 +68,51 @@ std::string oneLine(std::string text) {
 
 // Assimp believes the counts some formats declare up front and allocates for them before
 // reading on; a small OFF file claiming 10^8 vertices costs gigabytes and many seconds. An ASCII
-// OFF file spends at least two bytes a number ("0 "), so the counts are checked against the file
-// size first. (Other formats Assimp reads are bounded by the allocation failing, see readError.)
+// OFF file spends at least two bytes a number ("0 "), so the counts of a .off file are checked
+// against the file size first (Assimp reads a file with the importer its extension names).
+// Other formats are bounded only by the allocation failing (see readError).
 void checkOffCounts(std::string_view head, std::uintmax_t fileSize, const std::string& name) {
-    std::istringstream in{std::string(head)};
-    std::string magic;
-    if (!(in >> magic) || magic.size() < 3 || magic.compare(magic.size() - 3, 3, "OFF") != 0) return;
-    std::string word;
-    std::uintmax_t counts[3] = {0, 0, 0};
-    for (int k = 0; k < 3; ++k) {
-        while (in >> word && word[0] == '#') std::getline(in, word);  // comments
-        if (!in || word == "BINARY") return;                             // binary OFF: Assimp refuses it
-        char* end = nullptr;
-        counts[k] = std::strtoumax(word.c_str(), &end, 10);
-        if (*end != '\0') return;  // not a count: Assimp will say what is wrong
+    const std::size_t magic = head.find("OFF");
+    if (magic == std::string_view::npos || head.substr(magic, 10) == "OFF BINARY") return;
+    // The first two runs of digits after "OFF" (comment lines skipped) are the vertex and face
+    // counts, however they are separated: Assimp reads "OFF100 1(0" as 100 vertices, 1 face.
+    std::uintmax_t counts[2] = {0, 0};
+    int found = 0;
+    for (std::size_t i = magic + 3; i < head.size() && found < 2;) {
+        if (head[i] == '#' && (i == 0 || head[i - 1] == '\n')) {
+            i = head.find('\n', i);
+            if (i == std::string_view::npos) break;
+            continue;
+        }
+        if (!std::isdigit(static_cast<unsigned char>(head[i]))) {
+            ++i;
+            continue;
+        }
+        std::uintmax_t n = 0;
+        for (; i < head.size() && std::isdigit(static_cast<unsigned char>(head[i])); ++i)
+            n = std::min<std::uintmax_t>(n * 10 + std::uintmax_t(head[i] - '0'), std::uintmax_t(1) << 60);
+        counts[found++] = n;
     }
     const double minimum = double(counts[0]) * 6.0 + double(counts[1]) * 2.0;
     if (minimum > double(fileSize))
         throw Error(name + ": the OFF header declares " + std::to_string(counts[0]) + " vertices and " +
                     std::to_string(counts[1]) + " faces, more than the file's " + std::to_string(fileSize) +
                     " bytes can hold (truncated or corrupt)");
+}
+
+// Debian's Assimp 5.2 dereferences a null pointer on a Collada array (<float_array>, ...) with
+// no count attribute, which Collada requires; such files are refused before Assimp sees them.
+void checkColladaArrays(std::string_view text, const std::string& name) {
+    for (std::size_t at = text.find("_array"); at != std::string_view::npos; at = text.find("_array", at + 6)) {
+        const std::size_t open = text.rfind('<', at);
+        if (open == std::string_view::npos || at - open > 16 || text[open + 1] == '/') continue;
+        const std::string_view tag = text.substr(open + 1, at - open - 1);
+        if (tag.find_first_of(" \t\r\n>\"=") != std::string_view::npos) continue;  // not this element's name
+        const std::size_t close = text.find('>', at);
+        const std::string_view attributes = text.substr(at, close == std::string_view::npos ? close : close - at);
+        if (attributes.find("count") == std::string_view::npos)
+            throw Error(name + ": a Collada <" + std::string(tag) + "_array> has no count attribute (the file is damaged)");
+    }
 }
 
 // What Assimp said, as one line; an allocation failure (a count in the file Assimp believed)
@@ -228,7 +253,10 @@ Scene loadAssimp(const std::filesystem::path& path) {
         throw Error("'" + path.string() + "' is " + std::to_string(size) + " bytes, more than the " +
                     std::to_string(kMaxModelBytes) + " this importer reads");
     if (size == 0) throw Error("'" + path.string() + "' is empty");
-    checkOffCounts(readHead(path, 4096), size, path.string());
+    std::string ext = path.extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == ".off") checkOffCounts(readHead(path, 4096), size, path.string());
+    if (ext == ".dae") checkColladaArrays(readFileBytes(path, kMaxModelBytes), path.string());
     Assimp::Importer importer;
     configure(importer);
     const aiScene* ai = nullptr;
@@ -244,7 +272,8 @@ Scene loadAssimp(const std::filesystem::path& path) {
 Scene loadAssimpFromMemory(std::string_view bytes, const std::string& name, const std::string& extensionHint) {
     if (bytes.empty()) throw Error(name + ": the file is empty");
     if (bytes.size() > kMaxModelBytes) throw Error(name + ": the file is too large");
-    checkOffCounts(bytes.substr(0, 4096), bytes.size(), name);
+    if (extensionHint == "off") checkOffCounts(bytes.substr(0, 4096), bytes.size(), name);
+    if (extensionHint == "dae") checkColladaArrays(bytes, name);
     Assimp::Importer importer;
     configure(importer);
     const aiScene* ai = nullptr;

@@ -25,10 +25,10 @@ namespace {
 // claiming a huge image is refused before the decoder allocates for it. RGBE run-length coding
 // packs at most 127 pixels of one channel into 2 bytes (about 16 pixels a byte); EXR's zlib
 // tops out near 1032:1 on half floats (about 170 pixels a byte, ~8k with a constant image's
-// predictor), and PIZ and DWA code a constant block in a few bits, so its bound is far looser
-// (kMaxEnvironmentTexels bounds it absolutely).
+// predictor), so its bound is looser. (PIZ and DWA could pack a constant image tighter still;
+// such a map is refused rather than letting a few hundred bytes claim 2^25 texels.)
 constexpr double kMaxHdrPixelsPerByte = 32.0;
-constexpr double kMaxExrPixelsPerByte = 65536.0;
+constexpr double kMaxExrPixelsPerByte = 8192.0;
 // TIFF (deflate, LZW): 1-bit rows at deflate's 1032:1, like PNG.
 constexpr double kMaxTiffPixelsPerByte = 8.0 * 1032.0;
 constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(1) << 30;

@@ -78,9 +78,9 @@ Texture decodeExrTexture(std::string_view bytes, const std::string& name, bool s
         throw Error("image is " + std::to_string(info.width) + "x" + std::to_string(info.height) + "; sides must be 1.." +
                     std::to_string(kMaxTextureSide));
     // Decoded as float before it becomes bytes: bounded like an environment map, and by what the
-    // file's bytes can hold (PIZ and DWA code a constant block in a few bits).
+    // file's bytes can hold (as for the other formats).
     if (std::size_t(info.width) * std::size_t(info.height) > kMaxEnvironmentTexels ||
-        double(info.width) * double(info.height) > double(bytes.size()) * 65536.0)
+        double(info.width) * double(info.height) > double(bytes.size()) * kMaxPixelsPerByte)
         throw Error("OpenEXR image of " + std::to_string(info.width) + "x" + std::to_string(info.height) +
                     " texels is too large for a texture or for its file size");
     const auto rgb = beautyChannels(info.channels);

@@ -167,6 +167,9 @@ TEST(AssimpLoader, MalformedFilesGiveOneLineErrors) {
                     "endloop\nendfacet\nendsolid x\n"},
         {"count.off", "OFF\n100000000 1 0\n0 0 0\n"},
         {"binary.3ds", std::string("\x4d\x4d\xff\xff\xff\x7f\x3d\x3d", 8)},
+        {"no_count.dae", "<?xml version=\"1.0\"?><COLLADA version=\"1.4.1\"><library_geometries><geometry><mesh>"
+                         "<source id=\"p\"><float_array id=\"a\">0 0 0</float_array></source></mesh></geometry>"
+                         "</library_geometries></COLLADA>"},
         {"truncated.x", "xof 0303txt 0032\nFrame { Mesh { 3; 0;0;0;, 1;0;"},
     };
     for (const auto& [file, bytes] : cases) {
