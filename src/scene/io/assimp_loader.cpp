@@ -102,6 +102,7 @@ void checkOffCounts(std::string_view head, std::uintmax_t fileSize, const std::s
 
 // Debian's Assimp 5.2 dereferences a null pointer on a Collada array (<float_array>, ...) with
 // no count attribute, which Collada requires; such files are refused before Assimp sees them.
+// (Both found by fuzz_assimp; inputs in tests/fuzz/corpus/assimp.)
 void checkColladaArrays(std::string_view text, const std::string& name) {
     for (std::size_t at = text.find("_array"); at != std::string_view::npos; at = text.find("_array", at + 6)) {
         const std::size_t open = text.rfind('<', at);
@@ -112,6 +113,17 @@ void checkColladaArrays(std::string_view text, const std::string& name) {
         const std::string_view attributes = text.substr(at, close == std::string_view::npos ? close : close - at);
         if (attributes.find("count") == std::string_view::npos)
             throw Error(name + ": a Collada <" + std::string(tag) + "_array> has no count attribute (the file is damaged)");
+    }
+    // It also loops, allocating without end, on an index list (<p>, <v>, <vcount>) holding
+    // anything but unsigned integers, which is all Collada allows there.
+    for (const std::string_view open : {std::string_view("<p>"), std::string_view("<v>"), std::string_view("<vcount>")}) {
+        for (std::size_t at = text.find(open); at != std::string_view::npos; at = text.find(open, at + 1)) {
+            const std::size_t begin = at + open.size(), end = text.find('<', begin);
+            const std::string_view list = text.substr(begin, end == std::string_view::npos ? end : end - begin);
+            if (list.find_first_not_of("0123456789 \t\r\n") != std::string_view::npos)
+                throw Error(name + ": a Collada " + std::string(open) + " index list holds something other than "
+                                   "unsigned integers (the file is damaged)");
+        }
     }
 }
 
@@ -226,7 +238,8 @@ private:
 Scene fromImporter(Assimp::Importer& importer, const aiScene* ai, const std::string& name,
                    std::optional<std::filesystem::path> baseDir) {
     if (!ai) throw Error(readError(name, importer.GetErrorString()));
-    if (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) throw Error(name + ": the model is incomplete (the file is damaged)");
+    if (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE)
+        throw Error(name + ": the file holds no complete model (no meshes, or damaged)");
     return SceneBuilder(*ai, name, std::move(baseDir)).build();
 }
 
