@@ -9,8 +9,10 @@ packages=(
   mesa-vulkan-drivers vulkan-validationlayers   # lavapipe (CPU Vulkan) + validation for tests
   vulkan-validationlayers-dev                   # vk_enum_string_helper.h (string_VkResult)
   libstb-dev libtinyexr-dev libcli11-dev
-  libopenexr-dev libxxhash-dev                  # render --aov (multi-layer EXR), checkpoint keys
+  libopenexr-dev libxxhash-dev                  # EXR (any compression: --aov, env maps, textures), checkpoint keys
+  libtiff-dev                                   # TIFF textures and environment maps
   libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev zlib1g-dev   # zlib: .ply.gz
+  libassimp-dev                                 # FBX, Collada, 3DS, STL, ... (src/scene/io/assimp_loader.cpp)
   libgtest-dev libbenchmark-dev
   libglfw3-dev libimgui-dev xvfb xauth         # the viewer (penumbra view) and its test under Xvfb
   libopenmpi-dev openmpi-bin                    # render across ranks under mpirun (docs/DISTRIBUTED.md)

@@ -14,6 +14,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "image/exr_layers.h"
 
 namespace penumbra {
 namespace {
@@ -155,20 +156,16 @@ void writeImage(const fs::path& path, const ImageRgb& image, const ToneMapSettin
 }
 
 ImageRgb readExr(const fs::path& path) {
-    float* rgba = nullptr;
-    int width = 0, height = 0;
-    const char* err = nullptr;
-    int rc = LoadEXR(&rgba, &width, &height, path.c_str(), &err);
-    std::unique_ptr<float, MallocFree> owned(rgba);
-    if (rc != TINYEXR_SUCCESS) {
-        std::string reason = err ? err : "tinyexr error " + std::to_string(rc);
-        if (err) FreeEXRErrorMessage(err);
-        throw Error("cannot read EXR '" + path.string() + "': " + reason);
-    }
-    ImageRgb image(width, height);
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-        image.pixels[i] = {rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]};
-    }
+    // Through OpenEXR (not tinyexr): it reads the multi-layer files `render --aov` writes and
+    // every compression, DWA included.
+    ExrChannels exr = readExrChannels(path);
+    std::vector<std::string> names;
+    for (const auto& [name, values] : exr.channels) names.push_back(name);
+    const auto rgb = beautyChannels(names);
+    if (!rgb) throw Error("cannot read EXR '" + path.string() + "': it has no R, G, B or Y channels");
+    ImageRgb image(exr.width, exr.height);
+    const std::vector<float>&r = exr.channels.at((*rgb)[0]), &g = exr.channels.at((*rgb)[1]), &b = exr.channels.at((*rgb)[2]);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = {r[i], g[i], b[i]};
     return image;
 }
 

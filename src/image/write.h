@@ -30,7 +30,9 @@ void writeImage(const std::filesystem::path& path, const ImageRgb& image,
 // the viewer's screenshots, which must hold exactly what the window showed.
 void writePngRgb8(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& rgb);
 
-// Reads the RGB channels of a single-part EXR (alpha dropped; a one-channel file becomes grey).
+// Reads the beauty of an EXR (beautyChannels in exr_layers.h: R, G, B; a Y-only file becomes
+// grey; the multi-layer files `render --aov` writes give their unprefixed beauty), any
+// compression, DWA included. Alpha and other layers are dropped.
 ImageRgb readExr(const std::filesystem::path& path);
 
 }  // namespace penumbra

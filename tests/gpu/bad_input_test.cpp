@@ -1,6 +1,6 @@
 // The bad-input corpus: malformed files of every format the command line reads (OBJ, MTL,
-// glTF, GLB, PLY, WAD, scene JSON, .hdr and .exr environment maps, viewer input scripts), made
-// here rather than committed: truncated, wrong magic, absurd counts and sizes, NaN and infinite
+// glTF, GLB, PLY, FBX/Collada/3DS/OFF/STL/X through Assimp, WAD, scene JSON, .hdr and .exr
+// environment maps, viewer input scripts), made here rather than committed: truncated, wrong magic, absurd counts and sizes, NaN and infinite
 // numbers, cyclic includes, huge images, empty files and directories. Each must end the run
 // with one error line, exit code 1 and no output file, inside a memory limit: a loader that
 // believes a count before checking it against the file runs out of address space and fails.
@@ -154,6 +154,18 @@ std::vector<Case> corpus() {
         {"list.ply", plyBinary + std::string(36, '\0') + "\xff" + le32(0) + le32(1), kRender},
         {"no_end.ply", "ply\nformat ascii 1.0\nelement vertex 3\n", kRender},
         {"garbage.ply.gz", std::string("\x1f\x8b\x08\x00", 4) + junk, kRender},
+        // formats read through Assimp
+        {"empty.fbx", "", kRender},
+        {"junk.fbx", "Kaydara FBX Binary  " + std::string("\0\x1a\0", 3) + le32(7400) + junk, kRender},
+        {"junk.dae", junk, kRender},
+        {"truncated.dae", "<?xml version=\"1.0\"?><COLLADA version=\"1.4.1\"><library_geometries><geometry>", kRender},
+        {"junk.3ds", "MM" + le32(4102) + junk, kRender},
+        {"count.off", "OFF\n100000000 1 0\n0 0 0\n", kRender},
+        {"nan.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex nan 0 0\nvertex 0 1 0\n"
+                    "endloop\nendfacet\nendsolid x\n", kRender},
+        {"count.stl", std::string(80, ' ') + le32(0x0fffffff) + std::string(50, '\0'), kRender},
+        {"junk.x", "xof 0303txt 0032\n" + junk, kRender},
+        {"dir.fbx", kDirectory, kRender},
         // WAD
         {"empty.wad", "", kRender},
         {"magic.wad", "XWAD" + le32(0) + le32(12), kRender},

@@ -109,7 +109,8 @@ void expectRefused(const std::string& bytes, const std::string& needle) {
 
 TEST(EnvLoad, BadFilesAreRefusedWithAReason) {
     expectRefused("", "not an environment map");
-    expectRefused("\x89PNG\r\n\x1a\n", "not an environment map");
+    expectRefused("GIF89a", "not an environment map");
+    expectRefused("\x89PNG\r\n\x1a\n", "not a readable image");  // PNG panoramas are read; this one is cut short
     // Sizes checked before anything is allocated: absurd, and more than the bytes can hold.
     expectRefused(rgbeHeader(100000, 100000) + pixel(1, 1, 1, 128), "sides must be");
     expectRefused(rgbeHeader(4000, 2000) + pixel(1, 1, 1, 128), "more than the file");

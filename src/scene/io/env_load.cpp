@@ -1,7 +1,6 @@
 #include "scene/io/env_load.h"
 
 #include <stb_image.h>
-#include <tinyexr.h>
 
 #include <climits>
 #include <cstdint>
@@ -12,8 +11,12 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "image/exr_layers.h"
 #include "scene/environment.h"
 #include "scene/io/load.h"
+#include "scene/io/texture_io.h"
+#include "scene/io/tiff_io.h"
+#include "shared/color.h"
 
 namespace penumbra {
 namespace {
@@ -22,9 +25,12 @@ namespace {
 // claiming a huge image is refused before the decoder allocates for it. RGBE run-length coding
 // packs at most 127 pixels of one channel into 2 bytes (about 16 pixels a byte); EXR's zlib
 // tops out near 1032:1 on half floats (about 170 pixels a byte, ~8k with a constant image's
-// predictor), so its bound is looser.
+// predictor), so its bound is looser. (PIZ and DWA could pack a constant image tighter still;
+// such a map is refused rather than letting a few hundred bytes claim 2^25 texels.)
 constexpr double kMaxHdrPixelsPerByte = 32.0;
 constexpr double kMaxExrPixelsPerByte = 8192.0;
+// TIFF (deflate, LZW): 1-bit rows at deflate's 1032:1, like PNG.
+constexpr double kMaxTiffPixelsPerByte = 8.0 * 1032.0;
 constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(1) << 30;
 
 bool startsWith(std::string_view bytes, std::string_view magic) {
@@ -133,73 +139,52 @@ EnvironmentMap decodeHdr(std::string_view bytes, const std::string& name) {
     return toMap(name, pixels.get(), w, h, 3);
 }
 
-// Debian's tinyexr asserts (aborting the process) when a header's "type" attribute disagrees with
-// the version field's tiled flag or names an unknown type, so the header's attribute list is
-// walked here first: every attribute must fit in the file, and "type" must be a scanline image
-// with the flag clear or a tiled image with it set.
-void checkExrHeaderBeforeTinyexr(std::string_view bytes, bool tiled, const std::string& name) {
-    std::size_t at = 8;  // after the magic number and the version field
-    auto readString = [&](const char* what) {
-        const std::size_t end = bytes.find('\0', at);
-        if (end == std::string_view::npos || end - at > 255)
-            throw Error(name + ": corrupt OpenEXR header (" + what + " runs past the end)");
-        std::string_view text = bytes.substr(at, end - at);
-        at = end + 1;
-        return text;
-    };
-    while (true) {
-        const std::string_view attribute = readString("an attribute name");
-        if (attribute.empty()) return;  // the header's terminating empty name
-        const std::string_view type = readString("an attribute type");
-        if (bytes.size() - at < 4) throw Error(name + ": corrupt OpenEXR header (attribute size missing)");
-        std::uint32_t size = 0;
-        for (int k = 3; k >= 0; --k) size = (size << 8) | static_cast<unsigned char>(bytes[at + std::size_t(k)]);
-        at += 4;
-        if (size > bytes.size() - at) throw Error(name + ": corrupt OpenEXR header (attribute runs past the end)");
-        (void)type;  // tinyexr reads "type" whatever type name it carries, so this does too
-        if (attribute == "type") {
-            // Like tinyexr: the text up to its first NUL; an empty one means no type.
-            std::string_view value = bytes.substr(at, size);
-            value = value.substr(0, value.find('\0'));
-            const bool ok = value.empty() || (value == "scanlineimage" && !tiled) || (value == "tiledimage" && tiled);
-            if (!ok)
-                throw Error(name + ": OpenEXR image type '" + std::string(value.substr(0, 32)) +
-                            "' is not supported or disagrees with the file's tiled flag");
-        }
-        at += size;
+// Through the OpenEXR library: scanline and tiled files, the first part of multi-part files,
+// every compression (DWAA/DWAB included, which tinyexr cannot read). The header's size is
+// checked before anything is allocated for the pixels.
+EnvironmentMap decodeExr(std::string_view bytes, const std::string& name) {
+    const ExrHeaderInfo info = readExrHeader(bytes, name);
+    checkSize(name, info.width, info.height, bytes.size(), kMaxExrPixelsPerByte);
+    const auto rgb = beautyChannels(info.channels);
+    if (!rgb) throw Error(name + ": the OpenEXR file has no R, G, B or Y channels");
+    const ExrChannels exr = decodeExrChannels(bytes, name, {(*rgb)[0], (*rgb)[1], (*rgb)[2]});
+    const std::vector<float>&r = exr.channels.at((*rgb)[0]), &g = exr.channels.at((*rgb)[1]), &b = exr.channels.at((*rgb)[2]);
+    std::vector<float> pixels(r.size() * 3);
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        pixels[3 * i] = r[i];
+        pixels[3 * i + 1] = g[i];
+        pixels[3 * i + 2] = b[i];
     }
+    return toMap(name, pixels.data(), exr.width, exr.height, 3);
 }
 
-EnvironmentMap decodeExr(std::string_view bytes, const std::string& name) {
-    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    const char* err = nullptr;
-    auto fail = [&](const std::string& what) -> Error {
-        std::string message = name + ": " + what + (err ? std::string(" (") + err + ")" : std::string());
-        if (err) FreeEXRErrorMessage(err);
-        return Error(message);
-    };
-    EXRVersion version;
-    if (ParseEXRVersionFromMemory(&version, data, bytes.size()) != TINYEXR_SUCCESS) throw fail("not a readable OpenEXR file");
-    if (version.multipart || version.non_image) throw fail("multi-part and deep OpenEXR files are not supported");
-    checkExrHeaderBeforeTinyexr(bytes, version.tiled != 0, name);
-    EXRHeader header;
-    InitEXRHeader(&header);
-    if (ParseEXRHeaderFromMemory(&header, &version, data, bytes.size(), &err) != TINYEXR_SUCCESS) {
-        // A header that fails part-way holds what was parsed so far (channel names and the like).
-        FreeEXRHeader(&header);
-        throw fail("corrupt OpenEXR header");
-    }
-    const long long w = (long long)header.data_window.max_x - header.data_window.min_x + 1;
-    const long long h = (long long)header.data_window.max_y - header.data_window.min_y + 1;
-    FreeEXRHeader(&header);
-    checkSize(name, w, h, bytes.size(), kMaxExrPixelsPerByte);
-    float* rgba = nullptr;
-    int width = 0, height = 0;
-    if (LoadEXRFromMemory(&rgba, &width, &height, data, bytes.size(), &err) != TINYEXR_SUCCESS)
-        throw fail("corrupt OpenEXR data");
-    std::unique_ptr<float, FreeDeleter> pixels(rgba);
-    if (width != w || height != h) throw fail("OpenEXR image size differs from its header");
-    return toMap(name, pixels.get(), width, height, 4);
+// TIFF: 32-bit float panoramas as they are; integer ones are sRGB-encoded colours.
+EnvironmentMap decodeTiffMap(std::string_view bytes, const std::string& name) {
+    const TiffPixels tiff = decodeTiff(bytes, name, kMaxEnvironmentSide, kMaxTiffPixelsPerByte);
+    checkSize(name, tiff.width, tiff.height, bytes.size(), kMaxTiffPixelsPerByte);
+    const std::size_t n = std::size_t(tiff.width) * std::size_t(tiff.height);
+    std::vector<float> rgb(n * 3);
+    for (std::size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c)
+            rgb[3 * i + std::size_t(c)] = tiff.isFloat ? tiff.rgbaFloat[4 * i + std::size_t(c)]
+                                                       : shader::srgbToLinear(tiff.rgba8[4 * i + std::size_t(c)] / 255.0f);
+    return toMap(name, rgb.data(), tiff.width, tiff.height, 3);
+}
+
+bool isLdrImage(std::string_view bytes) {
+    return startsWith(bytes, "\x89PNG") || startsWith(bytes, "\xff\xd8\xff") || startsWith(bytes, "BM");
+}
+
+// PNG, JPEG, BMP panoramas (low dynamic range): sRGB-encoded, decoded to linear light.
+EnvironmentMap decodeLdrMap(std::string_view bytes, const std::string& name) {
+    std::string why;
+    const std::optional<Texture> tex = decodeTexture(bytes, name, true, &why);
+    if (!tex) throw Error(name + ": " + why);
+    checkSize(name, tex->width, tex->height, bytes.size(), kMaxExrPixelsPerByte);
+    std::vector<float> rgb(std::size_t(tex->width) * std::size_t(tex->height) * 3);
+    for (std::size_t i = 0; i < rgb.size() / 3; ++i)
+        for (int c = 0; c < 3; ++c) rgb[3 * i + std::size_t(c)] = shader::srgbToLinear(tex->rgba[4 * i + std::size_t(c)] / 255.0f);
+    return toMap(name, rgb.data(), tex->width, tex->height, 3);
 }
 
 }  // namespace
@@ -207,7 +192,9 @@ EnvironmentMap decodeExr(std::string_view bytes, const std::string& name) {
 EnvironmentMap decodeEnvironmentMap(std::string_view bytes, const std::string& name) {
     if (startsWith(bytes, "#?")) return decodeHdr(bytes, name);
     if (startsWith(bytes, "\x76\x2f\x31\x01")) return decodeExr(bytes, name);
-    throw Error(name + ": not an environment map (Radiance .hdr and OpenEXR .exr files are read)");
+    if (isTiff(bytes)) return decodeTiffMap(bytes, name);
+    if (isLdrImage(bytes)) return decodeLdrMap(bytes, name);
+    throw Error(name + ": not an environment map (Radiance .hdr, OpenEXR .exr, TIFF, PNG and JPEG files are read)");
 }
 
 EnvironmentMap loadEnvironmentMap(const std::filesystem::path& path) {

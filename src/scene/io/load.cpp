@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "scene/io/assimp_loader.h"
 #include "scene/io/gltf.h"
 #include "scene/io/obj.h"
 #include "scene/io/ply.h"
@@ -34,7 +35,9 @@ std::string head(const std::filesystem::path& path, std::size_t n) {
 
 }  // namespace
 
-std::string sceneFileExtensions() { return ".obj, .ply, .ply.gz, .gltf, .glb, .wad or .json"; }
+std::string sceneFileExtensions() {
+    return ".obj, .ply, .ply.gz, .gltf, .glb, .wad, .json or (through Assimp) " + assimpExtensions();
+}
 
 std::string readFileBytes(const std::filesystem::path& path, std::size_t maxBytes) {
     std::error_code ec;
@@ -78,6 +81,7 @@ Scene loadSceneFile(const std::filesystem::path& path, const LoadOptions& option
         return loadPly(path);
     }
     if (ext == ".json") return loadSceneJson(path);
+    if (isAssimpExtension(ext)) return loadAssimp(path);
     throw UsageError("cannot tell the format of '" + path.string() + "': use a built-in scene name or a " +
                      sceneFileExtensions() + " file");
 }

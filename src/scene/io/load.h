@@ -17,7 +17,8 @@ struct LoadOptions {
 // The scene file formats loadSceneFile reads, for messages and help: ".obj, .ply, ..., or .json".
 std::string sceneFileExtensions();
 
-// Loads .obj, .ply (.ply.gz), .gltf, .glb, .wad or .json. Throws Error naming the file and the problem.
+// Loads .obj, .ply (.ply.gz), .gltf, .glb, .wad, .json, or a format Assimp reads (FBX, Collada,
+// 3DS, STL, ...: assimpExtensions()). Throws Error naming the file and the problem.
 Scene loadSceneFile(const std::filesystem::path& path, const LoadOptions& options = {});
 
 // A built-in preset name, or a path to a file.

@@ -22,6 +22,7 @@
 #include "scene/face_check.h"
 #include "scene/io/normals.h"
 #include "scene/io/obj_parse.h"
+#include "scene/io/phong.h"
 #include "scene/io/texture_io.h"
 
 namespace penumbra {
@@ -258,7 +259,7 @@ private:
             const float ns = std::isfinite(t.shininess) ? std::max(0.0f, float(t.shininess)) : 0.0f;
             // Blinn-Phong exponent to perceptual roughness (alpha = sqrt(2 / (Ns + 2))); no
             // specular colour means a purely diffuse surface.
-            m.roughness = maxComponent(ks) > 0 ? std::clamp(std::sqrt(2.0f / (ns + 2.0f)), 0.0f, 1.0f) : 1.0f;
+            m.roughness = maxComponent(ks) > 0 ? roughnessFromPhongExponent(ns) : 1.0f;
             m.metallic = 0.0f;
             m.specular = maxComponent(ks) > 0 ? 1.0f : 0.0f;  // a clear coat over Kd
             const float ni = float(t.ior);

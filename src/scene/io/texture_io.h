@@ -1,4 +1,6 @@
-// Decoding image files into scene textures (through stb_image), with a visible fallback.
+// Decoding image files into scene textures, with a visible fallback: PNG, JPEG, TGA, BMP and GIF
+// through stb_image, TIFF through libtiff, OpenEXR through OpenEXR (any compression) and Radiance
+// HDR (linear formats are sRGB-encoded for colour textures, clipped at 1).
 #pragma once
 
 #include <filesystem>
@@ -13,7 +15,8 @@ namespace penumbra {
 // Largest texture side accepted; larger images are refused rather than allocated.
 constexpr int kMaxTextureSide = 16384;
 
-// Decodes PNG/JPEG/TGA/BMP bytes to RGBA8; nullopt (with *why set) when they are not an image.
+// Decodes image bytes (told apart by content) to RGBA8; nullopt (with *why set) when they are not
+// a readable image.
 std::optional<Texture> decodeTexture(std::string_view bytes, const std::string& name, bool srgb,
                                      std::string* why = nullptr);
 std::optional<Texture> loadTextureFile(const std::filesystem::path& path, bool srgb, std::string* why = nullptr);
