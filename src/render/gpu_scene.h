@@ -30,6 +30,13 @@ struct SceneArrays {
     std::vector<shader::PunctualLight> punctual;
     std::vector<shader::SphereLight> sphereLights;
     std::uint32_t sphereCount = 0;  // sphere slots among triVerts
+    // Two levels (render/instance_arrays.h), only when the scene has instances: nodes holds the
+    // world's flat BVH, then one bottom level per prototype, then (from topRoot) the top level.
+    std::vector<shader::Instance> instances;
+    std::vector<Aabb> instanceBounds;  // host only: each instance's bottom-level bounds, object space
+    std::uint32_t bottomNodeCount = 0;  // nodes before the top level
+    std::uint32_t topRoot = 0;
+    std::uint32_t uniqueMeshes = 0;     // bottom levels built for prototypes
     // Host only (never uploaded, so traversal stays lean): for each primitive in leaf order, the
     // scene object it came from, numbered as sceneObjectOf/objectPrimitive in scene_objects.h.
     std::vector<std::uint32_t> primitiveObject;
@@ -56,7 +63,8 @@ public:
     GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& arrays);
 
     gpu::Buffer nodes, triVerts, triAttribs, materials, lightRefs, lightNodes, textures, texels, punctual, sphereLights,
-        envTable, envTexels;
+        envTable, envTexels, instances;
+    std::uint32_t instanceCount = 0, topRoot = 0;  // 0 instances: one flat BVH (FrameUniforms.instanceCount)
     std::uint32_t nodeCount = 0, triCount = 0, lightNodeCount = 0, topLightCount = 0, lightRefCount = 0, punctualCount = 0,
                   sphereCount = 0, sphereLightCount = 0, envWidth = 0, envHeight = 0;
     float envLuminance = 0;

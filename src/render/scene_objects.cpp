@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "bvh/traverse_cpu.h"
+#include "bvh/two_level.h"
 #include "core/error.h"
 #include "render/frame_uniforms.h"
 
@@ -53,7 +54,11 @@ Pick pickPixel(const SceneArrays& arrays, const Camera& camera, std::uint32_t wi
     const Vec3 direction = normalize(f.cameraForward + f.cameraRight * (ndcX * f.aspect * f.tanHalfFovY) +
                                      f.cameraUp * (ndcY * f.tanHalfFovY));
     Ray ray{f.cameraPosition, direction};
-    const bvh::Hit hit = bvh::closestHit(arrays.nodes, arrays.triVerts, ray);
+    const bvh::Hit hit = arrays.instances.empty()
+                             ? bvh::closestHit(arrays.nodes, arrays.triVerts, ray)
+                             : bvh::closestHit(bvh::TwoLevelView{arrays.nodes, arrays.triVerts, arrays.instances,
+                                                                 arrays.topRoot},
+                                               ray);
     Pick pick;
     if (hit.triangle == PN_NO_HIT) return pick;
     pick.primitive = hit.triangle;

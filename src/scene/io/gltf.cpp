@@ -287,9 +287,10 @@ public:
         scene_.name = name_;
         for (std::size_t i = 0; i < model_.materials.size(); ++i) scene_.materials.push_back(material(int(i)));
         traverse();
-        if (scene_.meshes.empty() && skipped_.total() > 0)
+        placeMeshes();
+        if (scene_.meshes.empty() && scene_.instances.empty() && skipped_.total() > 0)
             throw Error(name_ + ": no face can be rendered: the file has " + skipped_.describe());
-        if (scene_.meshes.empty())
+        if (scene_.meshes.empty() && scene_.instances.empty())
             throw Error(name_ + ": the glTF scene has no triangles (no mesh with TRIANGLES primitives is reachable)");
         skipped_.warn(name_);
         if (scene_.materials.empty()) defaultMaterial();
@@ -602,11 +603,7 @@ private:
         if (n.mesh >= 0) {
             if (std::size_t(n.mesh) >= model_.meshes.size())
                 throw Error(where + ": mesh " + std::to_string(n.mesh) + " does not exist");
-            const tinygltf::Mesh& mesh = model_.meshes[std::size_t(n.mesh)];
-            for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
-                addPrimitive(index, n.mesh, int(p), world,
-                             where + ", mesh " + std::to_string(n.mesh) + " ('" + clampName(mesh.name) +
-                                 "') primitive " + std::to_string(p));
+            pending_.push_back({index, n.mesh, world, where});
         } else if (n.mesh < -1) {
             throw Error(where + ": mesh " + std::to_string(n.mesh) + " does not exist");
         }
@@ -752,7 +749,51 @@ private:
         return primCache_.emplace(key, std::move(out)).first->second.get();
     }
 
-    void addPrimitive(int, int meshIndex, int primIndex, const Mat4& world, const std::string& where) {
+    // A mesh that one node uses is baked into world space; one that several nodes use becomes a
+    // prototype (stored once, in the mesh's own space) and an instance per node (Scene::instances).
+    void placeMeshes() {
+        std::map<int, int> uses;
+        for (const PendingMesh& p : pending_) ++uses[p.mesh];
+        std::map<int, std::uint32_t> prototypeOf;
+        for (const PendingMesh& p : pending_) {
+            const Affine placement = toAffine(p.world);
+            const float det = placement.determinant();
+            const bool invertible = std::abs(det) > 1e-12f && std::isfinite(1.0f / det);
+            if (uses[p.mesh] < 2 || !invertible) {
+                addMesh(p.node, p.mesh, p.world, p.where, scene_.meshes);
+                continue;
+            }
+            auto it = prototypeOf.find(p.mesh);
+            if (it == prototypeOf.end()) {
+                Prototype proto;
+                proto.name = model_.meshes[std::size_t(p.mesh)].name;
+                addMesh(p.node, p.mesh, Mat4{}, p.where, proto.meshes);
+                const auto index = proto.meshes.empty() ? kNoPrototype : std::uint32_t(scene_.prototypes.size());
+                if (!proto.meshes.empty()) scene_.prototypes.push_back(std::move(proto));
+                it = prototypeOf.emplace(p.mesh, index).first;
+            }
+            if (it->second != kNoPrototype) scene_.instances.push_back({it->second, placement});
+        }
+    }
+
+    static Affine toAffine(const Mat4& m) {
+        Affine a;
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 4; ++c) a.m[r][c] = float(m.at(r, c));
+        return a;
+    }
+
+    void addMesh(int node, int meshIndex, const Mat4& world, const std::string& where, std::vector<Mesh>& into) {
+        const tinygltf::Mesh& mesh = model_.meshes[std::size_t(meshIndex)];
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+            addPrimitive(node, meshIndex, int(p), world,
+                         where + ", mesh " + std::to_string(meshIndex) + " ('" + clampName(mesh.name) + "') primitive " +
+                             std::to_string(p),
+                         into);
+    }
+
+    void addPrimitive(int, int meshIndex, int primIndex, const Mat4& world, const std::string& where,
+                      std::vector<Mesh>& into) {
         const tinygltf::Primitive& p = model_.meshes[std::size_t(meshIndex)].primitives[std::size_t(primIndex)];
         if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
             warnOnce("primitives with mode " + std::to_string(p.mode) + " (not TRIANGLES) are skipped");
@@ -801,8 +842,17 @@ private:
         if (det < 0)  // mirrored: keep counter-clockwise front faces
             for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) std::swap(m.indices[t + 1], m.indices[t + 2]);
         dropBadTriangles(m, skipped_);
-        if (!m.indices.empty()) scene_.meshes.push_back(std::move(m));
+        if (!m.indices.empty()) into.push_back(std::move(m));
     }
+
+    static constexpr std::uint32_t kNoPrototype = 0xffffffffu;
+    struct PendingMesh {
+        int node;
+        int mesh;
+        Mat4 world;
+        std::string where;
+    };
+    std::vector<PendingMesh> pending_;  // mesh uses in traversal order, placed by placeMeshes
 
     const Model& model_;
     std::string name_;
