@@ -7,8 +7,12 @@ namespace {
 
 Affine fromRows(const Vec4 rows[3]) {
     Affine a;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 4; ++j) a.m[i][j] = rows[i][j];
+    for (int i = 0; i < 3; ++i) {
+        a.m[i][0] = rows[i].x;
+        a.m[i][1] = rows[i].y;
+        a.m[i][2] = rows[i].z;
+        a.m[i][3] = rows[i].w;
+    }
     return a;
 }
 

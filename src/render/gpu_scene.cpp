@@ -15,9 +15,9 @@
 #include "render/env_table.h"
 #include "render/instance_arrays.h"
 #include "render/light_list.h"
-#include "render/scene_objects.h"
 #include "render/sphere_lights.h"
 #include "scene/environment.h"
+#include "scene/objects.h"
 #include "scene/instances.h"
 
 namespace penumbra {

@@ -1,11 +1,12 @@
 #include "render/instance_arrays.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "bvh/triangle.h"
 #include "bvh/two_level.h"
 #include "core/error.h"
-#include "render/scene_objects.h"
+#include "scene/objects.h"
 
 namespace penumbra {
 namespace {

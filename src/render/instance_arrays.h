@@ -7,7 +7,7 @@
 
 #include "bvh/builder.h"
 #include "core/transform.h"
-#include "render/gpu_scene.h"
+#include "render/scene_arrays.h"
 #include "scene/scene.h"
 
 namespace penumbra {

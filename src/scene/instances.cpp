@@ -41,21 +41,31 @@ void bakeAllInstances(Scene& scene) {
     for (std::size_t i = 0; i < scene.instances.size(); ++i) appendBakedInstance(scene, i);
     scene.instances.clear();
     scene.prototypes.clear();
+    scene.instanceAnimations.clear();  // baked where they stand now
 }
 
 std::size_t bakeEmissiveInstances(Scene& scene) {
     std::vector<Instance> kept;
+    std::vector<std::uint32_t> newIndex(scene.instances.size(), UINT32_MAX);
     std::size_t baked = 0;
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& inst = scene.instances[i];
         if (inst.prototype < scene.prototypes.size() && prototypeIsEmissive(scene, scene.prototypes[inst.prototype])) {
-            appendBakedInstance(scene, i);
+            appendBakedInstance(scene, i);  // an animated emitter stays where it is now
             ++baked;
         } else {
+            newIndex[i] = static_cast<std::uint32_t>(kept.size());
             kept.push_back(inst);
         }
     }
     scene.instances = std::move(kept);
+    std::vector<InstanceAnimation> animations;
+    for (InstanceAnimation& a : scene.instanceAnimations)
+        if (a.instance < newIndex.size() && newIndex[a.instance] != UINT32_MAX) {
+            a.instance = newIndex[a.instance];
+            animations.push_back(std::move(a));
+        }
+    scene.instanceAnimations = std::move(animations);
     return baked;
 }
 

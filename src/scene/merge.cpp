@@ -38,7 +38,16 @@ void appendScene(Scene& into, Scene part, const Affine& transform) {
         for (Mesh& mesh : p.meshes) mesh.material += materialBase;
         into.prototypes.push_back(std::move(p));
     }
+    const auto instanceBase = static_cast<std::uint32_t>(into.instances.size());
     for (const Instance& i : part.instances) into.instances.push_back({prototypeBase + i.prototype, transform * i.transform});
+    // Animated instances keep moving, placed by the part's transform (a fixed node above their chain).
+    for (InstanceAnimation& a : part.instanceAnimations) {
+        a.instance += instanceBase;
+        NodeMotion placement;
+        placement.fixed = transform;
+        a.chain.insert(a.chain.begin(), placement);
+        into.instanceAnimations.push_back(std::move(a));
+    }
     // A sphere stays a sphere: its radius scales by the transform's mean scale factor (exact for
     // uniform scaling; non-uniform scaling of a sphere would make an ellipsoid).
     const float radiusScale = meanScale(transform);

@@ -104,6 +104,13 @@ void Scene::validate() const {
         if (!(std::abs(det) > 1e-12f) || !std::isfinite(1.0f / det))
             throw Error(where + ": its transform flattens it (determinant 0); give it a nonzero scale");
     }
+    for (std::size_t i = 0; i < instanceAnimations.size(); ++i) {
+        const InstanceAnimation& a = instanceAnimations[i];
+        const std::string where = "animation " + std::to_string(i) + " in scene '" + name + "'";
+        if (a.instance >= instances.size()) throw Error(where + ": it moves an instance that does not exist");
+        for (const NodeMotion& m : a.chain)
+            for (const Track* t : {&m.translationTrack, &m.rotationTrack, &m.scaleTrack}) validateTrack(*t, where);
+    }
     for (std::size_t i = 0; i < spheres.size(); ++i) {
         const Sphere& s = spheres[i];
         const std::string where = "sphere " + std::to_string(i) + " in scene '" + name + "'";

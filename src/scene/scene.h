@@ -12,6 +12,7 @@
 #include "core/aabb.h"
 #include "core/transform.h"
 #include "core/vec.h"
+#include "scene/node_animation.h"
 #include "scene/walk/walk_map.h"
 
 namespace penumbra {
@@ -219,6 +220,8 @@ struct Scene {
     std::vector<Mesh> meshes;  // world space, each drawn once
     std::vector<Prototype> prototypes;
     std::vector<Instance> instances;  // none: every mesh is in `meshes`
+    // Instances whose transform follows animated nodes (glTF animations; scene/animation.h).
+    std::vector<InstanceAnimation> instanceAnimations;
     std::vector<Sphere> spheres;
     std::vector<Sprite> sprites;
     std::vector<Texture> textures;

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "bvh/two_level.h"
+#include "core/error.h"
 #include "instanced_world.h"
 #include "render/gpu_scene.h"
 #include "render/instance_arrays.h"

@@ -211,6 +211,8 @@ void placeInstances(const Reader& r, const Json& a, const std::string& where, Sc
     const auto prototypeBase = static_cast<std::uint32_t>(scene.prototypes.size());
     std::vector<Prototype> prototypes = std::move(part.prototypes);
     std::vector<Instance> inner = std::move(part.instances);
+    std::vector<InstanceAnimation> innerAnimations = std::move(part.instanceAnimations);
+    part.instanceAnimations.clear();
     const auto own = static_cast<std::uint32_t>(prototypes.size());
     if (!part.meshes.empty()) prototypes.push_back({r.string(a["file"], where + ".file"), std::move(part.meshes)});
     part.prototypes.clear();
@@ -226,7 +228,15 @@ void placeInstances(const Reader& r, const Json& a, const std::string& where, Sc
         if (!list[i].is_object()) r.fail(at, "expected an object");
         const Affine placed = readTransform(r, list[i], at) * transform;
         if (own < prototypes.size()) scene.instances.push_back({prototypeBase + own, placed});
+        const auto innerBase = static_cast<std::uint32_t>(scene.instances.size());
         for (const Instance& k : inner) scene.instances.push_back({prototypeBase + k.prototype, placed * k.transform});
+        for (InstanceAnimation a : innerAnimations) {  // each copy keeps moving, under its placement
+            a.instance += innerBase;
+            NodeMotion placement;
+            placement.fixed = placed;
+            a.chain.insert(a.chain.begin(), placement);
+            scene.instanceAnimations.push_back(std::move(a));
+        }
     }
 }
 
