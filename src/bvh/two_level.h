@@ -17,9 +17,6 @@
 
 namespace penumbra::bvh {
 
-// The box around `box` after `transform` (the eight corners, transformed).
-Aabb transformBounds(const Aabb& box, const Affine& transform);
-
 // objectToWorld must be invertible (Scene::validate checks instances).
 shader::Instance makeInstance(const Affine& objectToWorld, std::uint32_t rootNode, std::uint32_t firstPrimitive,
                               std::uint32_t primitiveCount, std::uint32_t id);

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <string_view>
 #include <numeric>
 #include <optional>
 
@@ -145,7 +147,11 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
     input.validate();
     // Emitters stay world-space triangles in the light BVH: instances of emissive meshes are baked.
     std::optional<Scene> baked;
-    if (std::any_of(input.instances.begin(), input.instances.end(), [&](const Instance& i) {
+    if (const char* force = std::getenv("PENUMBRA_FORCE_INSTANCES"); force && std::string_view(force) == "1") {
+        baked = input;  // measuring the two-level traversal on any scene: its meshes as one instance
+        instanceWorldMeshes(*baked);
+        bakeEmissiveInstances(*baked);
+    } else if (std::any_of(input.instances.begin(), input.instances.end(), [&](const Instance& i) {
             return prototypeIsEmissive(input, input.prototypes[i.prototype]);
         })) {
         baked = input;

@@ -69,4 +69,17 @@ std::size_t bakeEmissiveInstances(Scene& scene) {
     return baked;
 }
 
+void instanceWorldMeshes(Scene& scene) {
+    Prototype world{"world", {}};
+    std::vector<Mesh> kept;
+    for (Mesh& m : scene.meshes) {
+        const bool emissive = m.material < scene.materials.size() && scene.materials[m.material].isEmissive();
+        (emissive ? kept : world.meshes).push_back(std::move(m));
+    }
+    scene.meshes = std::move(kept);
+    if (world.meshes.empty()) return;
+    scene.instances.push_back({static_cast<std::uint32_t>(scene.prototypes.size()), Affine{}});
+    scene.prototypes.push_back(std::move(world));
+}
+
 }  // namespace penumbra

@@ -28,4 +28,8 @@ void bakeAllInstances(Scene& scene);
 // (world-space emitters in the light BVH) stays as for any mesh; returns how many were baked.
 std::size_t bakeEmissiveInstances(Scene& scene);
 
+// Moves every non-emissive world mesh into one prototype placed once by the identity (a
+// measurement aid: the same picture through the two-level traversal; PENUMBRA_FORCE_INSTANCES=1).
+void instanceWorldMeshes(Scene& scene);
+
 }  // namespace penumbra

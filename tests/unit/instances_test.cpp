@@ -107,6 +107,23 @@ TEST(Instances, ASceneWithoutInstancesKeepsItsFlatArrays) {
     EXPECT_EQ(a.bottomNodeCount, 0u);
 }
 
+// The measurement aid (PENUMBRA_FORCE_INSTANCES): the world's meshes as one identity instance give
+// exactly the flat BVH's hits (an identity transform rounds nothing).
+TEST(Instances, TheWorldAsOneIdentityInstanceChangesNoHit) {
+    const Scene flatScene = test::baked(test::instancedRoom());
+    Scene instanced = flatScene;
+    instanceWorldMeshes(instanced);
+    ASSERT_EQ(instanced.instances.size(), 1u);
+    EXPECT_EQ(instanced.meshes.size(), 1u) << "the emissive panel stays a world mesh";
+    const SceneArrays flat = buildSceneArrays(flatScene), two = buildSceneArrays(instanced);
+    ASSERT_EQ(two.instances.size(), 2u);
+    for (const Ray& ray : roomRays(2000, 4)) {
+        const bvh::Hit a = bvh::closestHit(flat.nodes, flat.triVerts, ray), b = bvh::closestHit(view(two), ray);
+        ASSERT_EQ(a.triangle == PN_NO_HIT, b.triangle == PN_NO_HIT);
+        if (a.triangle != PN_NO_HIT) EXPECT_EQ(a.t, b.t);
+    }
+}
+
 TEST(Instances, InvalidTransformsAreRejected) {
     Scene scene = test::instancedRoom(1);
     scene.instances[0].transform = Affine::scaling({1, 0, 1});

@@ -173,10 +173,12 @@ Vec3 animatedPosition(const std::string& interpolation, const std::vector<float>
     doc["accessors"].push_back({{"bufferView", view}, {"componentType", 5126}, {"count", times.size()}, {"type", "SCALAR"},
                                 {"min", {0.0}}, {"max", {2.0}}});
     doc["accessors"].push_back({{"bufferView", view + 1}, {"componentType", 5126}, {"count", values.size() / 3}, {"type", "VEC3"}});
-    doc["nodes"].push_back({{"children", {0}}, {"translation", {0, 0, 5}}});
-    doc["scenes"][0]["nodes"] = {1};
-    doc["animations"] = {{{"samplers", {{{"input", acc}, {"output", acc + 1}, {"interpolation", interpolation}}}},
-                          {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}}}}};
+    using Json = nlohmann::json;
+    doc["nodes"].push_back({{"children", Json::array({0})}, {"translation", {0, 0, 5}}});
+    doc["scenes"][0]["nodes"] = Json::array({1});
+    const Json sampler = {{"input", acc}, {"output", acc + 1}, {"interpolation", interpolation}};
+    const Json channel = {{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}};
+    doc["animations"] = Json::array({Json{{"samplers", Json::array({sampler})}, {"channels", Json::array({channel})}}});
     std::ofstream(dir / "animated.gltf") << doc.dump();
     Scene s = loadGltf(dir / "animated.gltf");
     EXPECT_TRUE(s.meshes.empty());
