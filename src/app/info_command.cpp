@@ -48,10 +48,13 @@ void printScene(const std::string& name, const std::string& map, const Environme
     if (!scene.instances.empty()) {
         const auto placed = std::count_if(arrays.instances.begin(), arrays.instances.end(),
                                           [](const shader::Instance& i) { return i.id != PN_NO_HIT; });
-        std::printf("  instances: %zu placing %zu triangles, %zu of them two-level (%u unique meshes, one bottom-level "
-                    "BVH each; top level of %zu nodes), the rest emissive or empty and baked into world meshes\n",
+        std::printf("  instances: %zu placing %zu triangles; %zu two-level over %u unique meshes (one bottom-level BVH "
+                    "each; the bvh line above is the world's own level), top level of %zu nodes\n",
                     scene.instances.size(), instancedTriangleCount(scene), std::size_t(placed), arrays.uniqueMeshes,
                     arrays.nodes.size() - arrays.bottomNodeCount);
+        if (std::size_t(placed) < scene.instances.size())
+            std::printf("  %zu instances of emissive or empty meshes are baked into world meshes\n",
+                        scene.instances.size() - std::size_t(placed));
     }
     std::printf("  cpu memory (scene model): %zu bytes (%.1f per triangle)\n", cpuBytes,
                 tris ? double(cpuBytes) / double(tris) : 0.0);
