@@ -34,66 +34,112 @@ bool hitPrimitive(uint i, vec3 o, vec3 d, float tMax, out float t, out float u, 
 }
 
 struct Hit {
-    float t;
+    float t;        // along the world ray (instance rays keep its parameter: directions are not normalised)
     uint triangle;  // primitive slot (triangle or sphere); PN_NO_HIT on a miss
     float u;
     float v;
+    uint instance;  // two-level scenes: the instance hit (index into instances[]); PN_NO_HIT otherwise
 };
 
+// A world point or direction in an instance's object space.
+vec3 toInstancePoint(uint instance, vec3 p) {
+    vec4 h = vec4(p, 1.0);
+    return vec3(dot(instances[instance].worldToObject[0], h), dot(instances[instance].worldToObject[1], h),
+                dot(instances[instance].worldToObject[2], h));
+}
+vec3 toInstanceVector(uint instance, vec3 v) {
+    return vec3(dot(instances[instance].worldToObject[0].xyz, v), dot(instances[instance].worldToObject[1].xyz, v),
+                dot(instances[instance].worldToObject[2].xyz, v));
+}
+
 // anyHit: stop at the first hit below tMax (shadow rays) instead of finding the closest.
-Hit traverseBvh(vec3 o, vec3 d, float tMax, bool anyHit) {
-    Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0);
+// With instances (frame.instanceCount > 0) the walk starts in the top level; a top-level leaf is
+// one instance, entered by moving the ray into its space and continuing at its bottom level's
+// root on the same stack. When the stack falls back to the depth it had on entry, the bottom
+// level is done and the ray returns to world space. Without instances, the flat BVH at node 0.
+Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
+    Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0, PN_NO_HIT);
     if (frame.nodeCount == 0u) return hit;
+    bool twoLevel = frame.instanceCount != 0u;
+    uint current = twoLevel ? frame.topRoot : 0u;
+    vec3 o = worldO, d = worldD;
     vec3 invD = safeInverse(d);
-    if (slabEntry(nodes[0].boundsMin, nodes[0].boundsMax, o, invD, tMax) == PN_INFINITY) return hit;
+    if (slabEntry(nodes[current].boundsMin, nodes[current].boundsMax, o, invD, tMax) == PN_INFINITY) return hit;
 
     uint stack[PN_BVH_STACK_SIZE];
     uint depth = 0u;
-    uint current = 0u;
+    uint instance = PN_NO_HIT;  // the instance whose bottom level is being walked
+    uint instanceDepth = 0u;    // the stack depth when it was entered
     while (true) {
         BvhNode node = nodes[current];
         PN_COUNT_NODE();
         if (node.triCount > 0u) {
+            if (twoLevel && instance == PN_NO_HIT) {
+                instance = node.firstOrRight;
+                o = toInstancePoint(instance, worldO);
+                d = toInstanceVector(instance, worldD);
+                invD = safeInverse(d);
+                instanceDepth = depth;
+                current = instances[instance].rootNode;
+                continue;
+            }
             for (uint i = node.firstOrRight; i < node.firstOrRight + node.triCount; ++i) {
                 PN_COUNT_TRIANGLE();
                 float t, u, v;
                 if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
-                    hit = Hit(t, i, u, v);
+                    hit = Hit(t, i, u, v, instance);
                     PN_NOTE_LEAF_HIT(current, node.triCount);
                     if (anyHit) return hit;
                 }
             }
-            if (depth == 0u) break;
-            current = stack[--depth];
-            continue;
-        }
-        uint near = current + 1u;
-        uint far = node.firstOrRight;
-        float dNear = slabEntry(nodes[near].boundsMin, nodes[near].boundsMax, o, invD, hit.t);
-        float dFar = slabEntry(nodes[far].boundsMin, nodes[far].boundsMax, o, invD, hit.t);
-        if (dFar < dNear) {
-            uint swapNode = near; near = far; far = swapNode;
-            float swapDist = dNear; dNear = dFar; dFar = swapDist;
-        }
-        if (dNear == PN_INFINITY) {
-            if (depth == 0u) break;
-            current = stack[--depth];
         } else {
-            current = near;
-            if (dFar != PN_INFINITY) stack[depth++] = far;
+            uint near = current + 1u;
+            uint far = node.firstOrRight;
+            float dNear = slabEntry(nodes[near].boundsMin, nodes[near].boundsMax, o, invD, hit.t);
+            float dFar = slabEntry(nodes[far].boundsMin, nodes[far].boundsMax, o, invD, hit.t);
+            if (dFar < dNear) {
+                uint swapNode = near; near = far; far = swapNode;
+                float swapDist = dNear; dNear = dFar; dFar = swapDist;
+            }
+            if (dNear != PN_INFINITY) {
+                current = near;
+                if (dFar != PN_INFINITY) stack[depth++] = far;
+                continue;
+            }
         }
+        if (instance != PN_NO_HIT && depth == instanceDepth) {
+            instance = PN_NO_HIT;
+            o = worldO;
+            d = worldD;
+            invD = safeInverse(d);
+        }
+        if (depth == 0u) break;
+        current = stack[--depth];
     }
     return hit;
 }
 
-Hit traverseBrute(vec3 o, vec3 d, float tMax, bool anyHit) {
-    Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0);
-    for (uint i = 0u; i < frame.triCount; ++i) {
+// Primitives [first, end) for the brute-force oracle, in the space the ray is given in.
+void bruteRange(uint first, uint end, vec3 o, vec3 d, uint instance, bool anyHit, inout Hit hit) {
+    for (uint i = first; i < end; ++i) {
         float t, u, v;
         if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
-            hit = Hit(t, i, u, v);
-            if (anyHit) return hit;
+            hit = Hit(t, i, u, v, instance);
+            if (anyHit) return;
         }
+    }
+}
+
+Hit traverseBrute(vec3 o, vec3 d, float tMax, bool anyHit) {
+    Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0, PN_NO_HIT);
+    if (frame.instanceCount == 0u) {
+        bruteRange(0u, frame.triCount, o, d, PN_NO_HIT, anyHit, hit);
+        return hit;
+    }
+    for (uint k = 0u; k < frame.instanceCount; ++k) {
+        uint first = instances[k].firstPrimitive;
+        bruteRange(first, first + instances[k].primitiveCount, toInstancePoint(k, o), toInstanceVector(k, d), k, anyHit, hit);
+        if (anyHit && hit.triangle != PN_NO_HIT) break;
     }
     return hit;
 }

@@ -13,6 +13,7 @@ layout(std430, set = 0, binding = PN_BINDING_TEXTURES) readonly buffer TextureBu
 layout(std430, set = 0, binding = PN_BINDING_TEXELS) readonly buffer TexelBuffer { uint texels[]; };
 layout(std430, set = 0, binding = PN_BINDING_PUNCTUAL) readonly buffer PunctualBuffer { PunctualLight punctualLights[]; };
 layout(std430, set = 0, binding = PN_BINDING_SPHERE_LIGHTS) readonly buffer SphereLightBuffer { SphereLight sphereLights[]; };
+layout(std430, set = 0, binding = PN_BINDING_INSTANCES) readonly buffer InstanceBuffer { Instance instances[]; };
 layout(push_constant) uniform PushBlock { PassPush push; };
 
 // What this pipeline was specialised for (PN_FEATURE_*); branches on it vanish at pipeline

@@ -25,7 +25,8 @@ ShadingFrame frameAround(vec3 n) {
 // unchanged when there is no map or no usable UV parameterisation. The tangent frame comes from
 // the triangle's UV derivatives (no per-vertex tangents); the map's +y is up in the image, which
 // is -v in our top-row-first UVs (glTF's convention).
-vec3 normalMapped(Material m, uint triangle, vec2 uv, vec3 front) {
+// instance: Surface.instance (the triangle's edges are then in that instance's object space).
+vec3 normalMapped(Material m, uint triangle, uint instance, vec2 uv, vec3 front) {
     if (!PN_HAS(PN_FEATURE_NORMAL_MAPS) || m.normalTexture == PN_NO_TEXTURE || triangle >= frame.triCount) return front;
     TriVerts tv = triVerts[triangle];
     if ((tv.flags & PN_TRI_SPHERE) != 0u) return front;  // spheres have no triangle UV frame
@@ -35,6 +36,10 @@ vec3 normalMapped(Material m, uint triangle, vec2 uv, vec3 front) {
     if (abs(det) < 1e-12) return front;
     vec3 dpdu = (tv.e1 * duv2.y - tv.e2 * duv1.y) / det;
     vec3 dpdv = (tv.e2 * duv1.x - tv.e1 * duv2.x) / det;
+    if (instance != PN_NO_HIT) {
+        dpdu = instanceVectorToWorld(instance, dpdu);
+        dpdv = instanceVectorToWorld(instance, dpdv);
+    }
     vec3 t = dpdu - front * dot(front, dpdu);
     if (dot(t, t) < 1e-20) return front;
     t = normalize(t);
@@ -50,7 +55,7 @@ vec3 normalMapped(Material m, uint triangle, vec2 uv, vec3 front) {
 ShadingFrame shadingFrameAt(Surface s, Material m, uint triangle, vec3 wo) {
     // Normal maps are authored for the front face; mirror them for back-face hits.
     vec3 front = s.frontFace ? s.shadingNormal : -s.shadingNormal;
-    vec3 n = normalMapped(m, triangle, s.uv, front);
+    vec3 n = normalMapped(m, triangle, s.instance, s.uv, front);
     if (!s.frontFace) n = -n;
     if (dot(n, s.geometricNormal) < 0.0) n = reflect(n, s.geometricNormal);
     // A viewer below the shading normal (grazing views of bent normals) would see a black

@@ -52,6 +52,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_LIGHT_NODES 26    // LightNode per node of the light BVH (depth-first, root first)
 #define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
 #define PN_BINDING_ACTIVE_MASK 29    // uint per pixel: 0 skips the pixel in trace.comp when PN_TRACE_MASKED is set
+#define PN_BINDING_INSTANCES 30      // Instance per placed bottom level (two-level scenes; see FrameUniforms.instanceCount)
 
 // ---- kernel features: specialization constant 0 of the tracing kernels, a bit set. A pipeline
 // made for a scene leaves out what the scene does not use (render/kernel_features.h); the
@@ -144,6 +145,21 @@ PN_STRUCT(BvhNode) {
     uint firstOrRight;  //  4
     vec3 boundsMax;     // 12
     uint triCount;      //  4
+};
+
+// One placement of a bottom-level BVH in a two-level scene, 112 bytes. Bottom levels live in the
+// node and triangle arrays like the single-level BVH, with absolute indices (interior nodes name
+// their right child in the node array, leaves their first slot in TriVerts), so a bottom level is
+// walked exactly as the flat BVH is, only in the instance's space. The top level's nodes follow
+// every bottom level's (root at FrameUniforms.topRoot); its leaves hold one instance each
+// (firstOrRight = instance index, triCount = 1).
+PN_STRUCT(Instance) {
+    vec4 objectToWorld[3];  // 48: rows of the 3x4 affine transform (row i: xyz = linear part, w = translation)
+    vec4 worldToObject[3];  // 48: its inverse; normals go to world space by its transpose
+    uint rootNode;          //  4: root of the bottom level in the node array
+    uint firstPrimitive;    //  4: the bottom level's slots are [firstPrimitive, firstPrimitive + primitiveCount)
+    uint primitiveCount;    //  4: (what --accel brute loops over)
+    uint id;                //  4: the scene's instance number (stable across top-level rebuilds)
 };
 
 // Hot triangle data, read on every traversal step: 48 bytes. Edges are precomputed for
@@ -280,7 +296,7 @@ PN_STRUCT(SphereLight) {
     uint pad0;
 };
 
-// Per-frame constants (uniform buffer), 176 bytes.
+// Per-frame constants (uniform buffer), 192 bytes.
 PN_STRUCT(FrameUniforms) {
     vec3 cameraPosition;
     float tanHalfFovY;
@@ -313,13 +329,17 @@ PN_STRUCT(FrameUniforms) {
     uint envHeight;
     uint misMode;          // PN_MIS_*: which estimators the integrator combines (tests compare them)
     uint debugMode;        // viewer debug views; 0: the image
-    uint pad0;
+    uint instanceCount;    // 0: one flat BVH rooted at node 0 (no instancing); else the Instance entries
     float time;            // seconds: the moment animated textures show
     // The unified light sampler.
     uint topLightCount;    // LightRef entries picked directly at every shading point
     float envLuminance;    // mean luminance of the environment over directions (intensity 1)
     uint lightRefCount;    // LightRef entries in all
     uint lightPickUniform; // nonzero: pick every light with the same probability (a test oracle)
+    uint topRoot;          // with instanceCount > 0: the top-level BVH's root node
+    uint pad1;
+    uint pad2;
+    uint pad3;
 };
 
 // ---- viewer passes (temporal.comp, atrous.comp, tonemap.comp, gbuffer.comp, heatmap.comp) ----
@@ -500,7 +520,11 @@ static_assert(sizeof(LightNode) == 64 && offsetof(LightNode, phi) == 12 && offse
               offsetof(LightNode, twoSided) == 52 && offsetof(LightNode, sinThetaO) == 56 &&
               offsetof(LightNode, minDistance2) == 60);
 static_assert(sizeof(EnvAlias) == 16 && offsetof(EnvAlias, alias) == 4 && offsetof(EnvAlias, pdf) == 8);
-static_assert(sizeof(FrameUniforms) == 176 && offsetof(FrameUniforms, topLightCount) == 160 &&
+static_assert(sizeof(Instance) == 112 && offsetof(Instance, worldToObject) == 48 && offsetof(Instance, rootNode) == 96 &&
+              offsetof(Instance, firstPrimitive) == 100 && offsetof(Instance, primitiveCount) == 104 &&
+              offsetof(Instance, id) == 108);
+static_assert(sizeof(FrameUniforms) == 192 && offsetof(FrameUniforms, topLightCount) == 160 &&
+              offsetof(FrameUniforms, instanceCount) == 152 && offsetof(FrameUniforms, topRoot) == 176 &&
               offsetof(FrameUniforms, envLuminance) == 164 && offsetof(FrameUniforms, lightPickUniform) == 172 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
               offsetof(FrameUniforms, cameraRight) == 16 && offsetof(FrameUniforms, aspect) == 28 &&
               offsetof(FrameUniforms, cameraUp) == 32 && offsetof(FrameUniforms, width) == 44 &&

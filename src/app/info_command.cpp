@@ -1,5 +1,6 @@
 // penumbra info [SCENE]: Vulkan devices, which one would be chosen, limits; with a scene, its
 // size and BVH statistics.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -9,6 +10,7 @@
 #include "app/info_ranks.h"
 #include "app/render_ranks.h"
 #include "render/gpu_scene.h"
+#include "scene/instances.h"
 
 namespace penumbra::app {
 namespace {
@@ -46,6 +48,17 @@ void printScene(const std::string& name, const std::string& map, const Environme
                     scene.environment.map->name.c_str(), scene.environment.map->width, scene.environment.map->height,
                     double(scene.environment.intensity), double(scene.environment.rotationDegrees),
                     arrays.envBuildMilliseconds, scene.environment.sun ? ", plus a sun disk" : "");
+    if (!scene.instances.empty()) {
+        const auto placed = std::count_if(arrays.instances.begin(), arrays.instances.end(),
+                                          [](const shader::Instance& i) { return i.id != PN_NO_HIT; });
+        std::printf("  instances: %zu placing %zu triangles; %zu two-level over %u unique meshes (one bottom-level BVH "
+                    "each; the bvh line above is the world's own level), top level of %zu nodes\n",
+                    scene.instances.size(), instancedTriangleCount(scene), std::size_t(placed), arrays.uniqueMeshes,
+                    arrays.nodes.size() - arrays.bottomNodeCount);
+        if (std::size_t(placed) < scene.instances.size())
+            std::printf("  %zu instances of emissive or empty meshes are baked into world meshes\n",
+                        scene.instances.size() - std::size_t(placed));
+    }
     std::printf("  cpu memory (scene model): %zu bytes (%.1f per triangle)\n", cpuBytes,
                 tris ? double(cpuBytes) / double(tris) : 0.0);
     std::printf("  gpu memory: %zu bytes (%.1f per triangle)\n", gpuBytes, tris ? double(gpuBytes) / double(tris) : 0.0);

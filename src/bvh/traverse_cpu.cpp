@@ -48,11 +48,12 @@ struct RaySetup {
 // closest t. onLeaf returns true to stop the whole traversal.
 template <typename OnLeaf>
 void traverse(std::span<const shader::BvhNode> nodes, const Ray& ray, const float& tMax,
-              TraversalCounts* counts, OnLeaf&& onLeaf) {
+              TraversalCounts* counts, OnLeaf&& onLeaf, std::uint32_t root = 0) {
     if (nodes.empty()) return;
     const auto nodeCount = std::uint32_t(nodes.size());
+    PN_CHECK(root < nodeCount);
     RaySetup setup(ray);
-    if (setup.enter(nodes[0], tMax) == kInf) {
+    if (setup.enter(nodes[root], tMax) == kInf) {
         if (counts) ++counts->nodesVisited;
         return;
     }
@@ -61,7 +62,7 @@ void traverse(std::span<const shader::BvhNode> nodes, const Ray& ray, const floa
     std::uint32_t stack[PN_BVH_STACK_SIZE];
     float stackEntry[PN_BVH_STACK_SIZE];
     int sp = 0;
-    std::uint32_t current = 0;
+    std::uint32_t current = root;
     for (;;) {
         if (counts) ++counts->nodesVisited;
         const shader::BvhNode& node = nodes[current];
@@ -137,8 +138,10 @@ bool intersectPrimitive(const shader::TriVerts& prim, const Ray& ray, float tMax
     return intersectTriangle(prim, ray, tMax, t, u, v);
 }
 
-Hit closestHit(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris,
-               const Ray& ray, TraversalCounts* counts) {
+namespace {
+
+Hit closestHitFrom(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris, std::uint32_t root,
+                   const Ray& ray, TraversalCounts* counts) {
     Hit hit;
     hit.t = ray.tMax;
     traverse(nodes, ray, hit.t, counts, [&](std::uint32_t first, std::uint32_t count) {
@@ -149,12 +152,12 @@ Hit closestHit(std::span<const shader::BvhNode> nodes, std::span<const shader::T
             if (intersectPrimitive(tris[i], ray, hit.t, t, u, v)) hit = {t, i, u, v};
         }
         return false;
-    });
+    }, root);
     return hit;
 }
 
-bool anyHit(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris,
-            const Ray& ray, TraversalCounts* counts) {
+bool anyHitFrom(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris, std::uint32_t root,
+                const Ray& ray, TraversalCounts* counts) {
     bool found = false;
     const float tMax = ray.tMax;
     traverse(nodes, ray, tMax, counts, [&](std::uint32_t first, std::uint32_t count) {
@@ -165,8 +168,35 @@ bool anyHit(std::span<const shader::BvhNode> nodes, std::span<const shader::TriV
             if (intersectPrimitive(tris[i], ray, tMax, t, u, v)) return found = true;
         }
         return false;
-    });
+    }, root);
     return found;
+}
+
+}  // namespace
+
+Hit closestHit(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris,
+               const Ray& ray, TraversalCounts* counts) {
+    return closestHitFrom(nodes, tris, 0, ray, counts);
+}
+
+Hit closestHitBelow(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris, std::uint32_t root,
+                    const Ray& ray) {
+    return closestHitFrom(nodes, tris, root, ray, nullptr);
+}
+
+bool anyHitBelow(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris, std::uint32_t root,
+                 const Ray& ray) {
+    return anyHitFrom(nodes, tris, root, ray, nullptr);
+}
+
+void forEachLeaf(std::span<const shader::BvhNode> nodes, std::uint32_t root, const Ray& ray, const float& tMax,
+                 const LeafVisitor& onLeaf) {
+    traverse(nodes, ray, tMax, nullptr, onLeaf, root);
+}
+
+bool anyHit(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris,
+            const Ray& ray, TraversalCounts* counts) {
+    return anyHitFrom(nodes, tris, 0, ray, counts);
 }
 
 Hit closestHitBrute(std::span<const shader::TriVerts> tris, const Ray& ray) {

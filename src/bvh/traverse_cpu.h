@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 
 #include "core/aabb.h"
@@ -14,6 +15,7 @@ struct Hit {
     float t = 0;
     std::uint32_t triangle = PN_NO_HIT;  // primitive (triangle or sphere) index in leaf order
     float u = 0, v = 0;                  // barycentrics of v1 and v2
+    std::uint32_t instance = PN_NO_HIT;  // two-level scenes (bvh/two_level.h): the instance hit
 };
 
 struct TraversalCounts {
@@ -44,6 +46,20 @@ Hit closestHit(std::span<const shader::BvhNode> nodes, std::span<const shader::T
 // True at the first hit with t in (0, ray.tMax); for shadow rays.
 bool anyHit(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris,
             const Ray& ray, TraversalCounts* counts = nullptr);
+// The same two, in the subtree rooted at node `root` of `nodes` (a bottom level of a two-level
+// scene, whose indices are absolute).
+Hit closestHitBelow(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris, std::uint32_t root,
+                    const Ray& ray);
+bool anyHitBelow(std::span<const shader::BvhNode> nodes, std::span<const shader::TriVerts> tris, std::uint32_t root,
+                 const Ray& ray);
+
+// The traversal itself: calls onLeaf(first, count) for each leaf of the subtree at `root` whose
+// box the ray enters before tMax, near first; tMax is read again after every leaf (a closer hit
+// prunes), and onLeaf returning true stops the walk.
+using LeafVisitor = std::function<bool(std::uint32_t first, std::uint32_t count)>;
+void forEachLeaf(std::span<const shader::BvhNode> nodes, std::uint32_t root, const Ray& ray, const float& tMax,
+                 const LeafVisitor& onLeaf);
+
 // Every triangle, in order; the oracle for the two above.
 Hit closestHitBrute(std::span<const shader::TriVerts> tris, const Ray& ray);
 

@@ -21,6 +21,26 @@ Vec3 Affine::normal(Vec3 n) const {
     return normalize(determinant() < 0 ? -out : out);
 }
 
+Affine Affine::inverse() const {
+    // The inverse of the linear part is the transposed cofactor matrix over the determinant; the
+    // translation is then undone by -inverse * t.
+    Vec3 r0{m[0][0], m[0][1], m[0][2]}, r1{m[1][0], m[1][1], m[1][2]}, r2{m[2][0], m[2][1], m[2][2]};
+    Vec3 c0 = cross(r1, r2), c1 = cross(r2, r0), c2 = cross(r0, r1);
+    const float invDet = 1.0f / determinant();
+    Affine inv;
+    for (int i = 0; i < 3; ++i) {
+        inv.m[i][0] = c0[i] * invDet;
+        inv.m[i][1] = c1[i] * invDet;
+        inv.m[i][2] = c2[i] * invDet;
+    }
+    const Vec3 t{m[0][3], m[1][3], m[2][3]};
+    const Vec3 back = inv.vector(t);
+    inv.m[0][3] = -back.x;
+    inv.m[1][3] = -back.y;
+    inv.m[2][3] = -back.z;
+    return inv;
+}
+
 Affine Affine::translation(Vec3 t) {
     Affine a;
     a.m[0][3] = t.x;
@@ -50,6 +70,17 @@ Affine Affine::eulerDegrees(Vec3 d) {
         return a;
     };
     return rot(2, d.z * k) * rot(1, d.y * k) * rot(0, d.x * k);
+}
+
+Aabb transformBounds(const Aabb& box, const Affine& transform) {
+    Aabb out;
+    if (box.empty()) return out;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 p{(corner & 1) ? box.hi.x : box.lo.x, (corner & 2) ? box.hi.y : box.lo.y,
+                     (corner & 4) ? box.hi.z : box.lo.z};
+        out.grow(transform.point(p));
+    }
+    return out;
 }
 
 Affine operator*(const Affine& a, const Affine& b) {

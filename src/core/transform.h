@@ -1,6 +1,7 @@
 // Affine transforms (3x4, row-major): enough for placing assets; no projective part needed.
 #pragma once
 
+#include "core/aabb.h"
 #include "core/vec.h"
 
 namespace penumbra {
@@ -20,12 +21,17 @@ struct Affine {
     float determinant() const;
     // Normals transform by the inverse transpose of the linear part (then renormalise).
     Vec3 normal(Vec3 n) const;
+    // The inverse transform (the linear part must be invertible: determinant() != 0).
+    Affine inverse() const;
 
     static Affine translation(Vec3 t);
     static Affine scaling(Vec3 s);
     // Rotations about x, then y, then z (degrees), as in the JSON scene format.
     static Affine eulerDegrees(Vec3 degrees);
 };
+
+// The box around `box` after `transform` (its eight corners transformed); empty stays empty.
+Aabb transformBounds(const Aabb& box, const Affine& transform);
 
 // a * b: apply b first, then a.
 Affine operator*(const Affine& a, const Affine& b);

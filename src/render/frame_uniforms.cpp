@@ -55,6 +55,8 @@ shader::FrameUniforms makeSceneFrameUniforms(const Camera& camera, Vec3 backgrou
     f.punctualCount = scene.punctualCount;
     f.sphereCount = scene.sphereCount;
     f.sphereLightCount = scene.sphereLightCount;
+    f.instanceCount = scene.instanceCount;
+    f.topRoot = scene.topRoot;
     setEnvironmentUniforms(f, env, scene.envWidth, scene.envHeight);
     return f;
 }

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <string_view>
 #include <numeric>
+#include <optional>
 
 #include "bvh/cache.h"
 #include "bvh/sphere.h"
@@ -12,10 +15,12 @@
 #include "bvh/triangle.h"
 #include "core/error.h"
 #include "render/env_table.h"
+#include "render/instance_arrays.h"
 #include "render/light_list.h"
-#include "render/scene_objects.h"
 #include "render/sphere_lights.h"
 #include "scene/environment.h"
+#include "scene/objects.h"
+#include "scene/instances.h"
 
 namespace penumbra {
 
@@ -138,8 +143,21 @@ void addLightList(const Scene& scene, std::span<const EmissiveTriangle> emissive
 
 }  // namespace
 
-SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options) {
-    scene.validate();
+SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& options) {
+    input.validate();
+    // Emitters stay world-space triangles in the light BVH: instances of emissive meshes are baked.
+    std::optional<Scene> baked;
+    if (const char* force = std::getenv("PENUMBRA_FORCE_INSTANCES"); force && std::string_view(force) == "1") {
+        baked = input;  // measuring the two-level traversal on any scene: its meshes as one instance
+        instanceWorldMeshes(*baked);
+        bakeEmissiveInstances(*baked);
+    } else if (std::any_of(input.instances.begin(), input.instances.end(), [&](const Instance& i) {
+            return prototypeIsEmissive(input, input.prototypes[i.prototype]);
+        })) {
+        baked = input;
+        bakeEmissiveInstances(*baked);
+    }
+    const Scene& scene = baked ? *baked : input;
     std::vector<SceneTriangle> tris = flattenTriangles(scene);
     const RenderSpheres spheres = renderSpheres(scene);
     std::vector<Material> materials = scene.materials;
@@ -255,6 +273,7 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
     for (const Material& m : materials) out.materials.push_back(toGpuMaterial(m));
+    appendInstanceLevels(scene, out, options);
     // Traversal checks alpha only where the flag says so, keeping the common path cheap.
     for (std::size_t i = 0; i < out.triVerts.size(); ++i)
         if (!bvh::isSphere(out.triVerts[i]) && !bvh::isSprite(out.triVerts[i]) &&
@@ -267,7 +286,7 @@ std::size_t deviceBytes(const SceneArrays& a) {
     auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
     return bytes(a.nodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.materials) + bytes(a.lightRefs) +
            bytes(a.lightNodes) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
-           bytes(a.env.alias) + bytes(a.env.radiance);
+           bytes(a.env.alias) + bytes(a.env.radiance) + bytes(a.instances);
 }
 
 GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& a)
@@ -283,6 +302,9 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       sphereLights(gpu::uploadStorageBuffer<shader::SphereLight>(ctx, commands, a.sphereLights)),
       envTable(gpu::uploadStorageBuffer<shader::EnvAlias>(ctx, commands, a.env.alias)),
       envTexels(gpu::uploadStorageBuffer<Vec4>(ctx, commands, a.env.radiance)),
+      instances(gpu::uploadStorageBuffer<shader::Instance>(ctx, commands, a.instances)),
+      instanceCount(static_cast<std::uint32_t>(a.instances.size())),
+      topRoot(a.topRoot),
       nodeCount(static_cast<std::uint32_t>(a.nodes.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
       lightNodeCount(static_cast<std::uint32_t>(a.lightNodes.size())),
@@ -297,7 +319,8 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
 
 std::size_t GpuScene::deviceBytes() const {
     return nodes.size() + triVerts.size() + triAttribs.size() + materials.size() + lightRefs.size() + lightNodes.size() +
-           textures.size() + texels.size() + punctual.size() + sphereLights.size() + envTable.size() + envTexels.size();
+           textures.size() + texels.size() + punctual.size() + sphereLights.size() + envTable.size() + envTexels.size() +
+           instances.size();
 }
 
 }  // namespace penumbra

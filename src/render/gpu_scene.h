@@ -9,36 +9,11 @@
 #include "gpu/buffer.h"
 #include "gpu/commands.h"
 #include "render/env_table.h"
+#include "render/scene_arrays.h"
 #include "scene/scene.h"
 #include "shared/types.h"
 
 namespace penumbra {
-
-// The host-side arrays, kept separate from the upload so tests and tools can use them on the CPU.
-struct SceneArrays {
-    std::vector<shader::BvhNode> nodes;
-    std::vector<shader::TriVerts> triVerts;      // leaf order; triangles and spheres (PN_TRI_SPHERE)
-    std::vector<shader::TriAttribs> triAttribs;  // leaf order
-    std::vector<shader::Material> materials;
-    // The unified light sampler's lights and light BVH (render/light_list.h).
-    std::vector<shader::LightRef> lightRefs;
-    std::vector<shader::LightNode> lightNodes;
-    std::uint32_t topLightCount = 0;
-    float envLuminance = 0;  // mean luminance of the environment over directions (intensity 1)
-    std::vector<shader::TextureInfo> textures;
-    std::vector<std::uint32_t> texels;  // RGBA8, one texel per word
-    std::vector<shader::PunctualLight> punctual;
-    std::vector<shader::SphereLight> sphereLights;
-    std::uint32_t sphereCount = 0;  // sphere slots among triVerts
-    // Host only (never uploaded, so traversal stays lean): for each primitive in leaf order, the
-    // scene object it came from, numbered as sceneObjectOf/objectPrimitive in scene_objects.h.
-    std::vector<std::uint32_t> primitiveObject;
-    EnvTable env;  // empty without an environment map
-    bvh::BvhStats stats{};
-    double buildMilliseconds = 0;
-    bool bvhFromCache = false;  // read from the BVH cache (buildMilliseconds then times the read)
-    double envBuildMilliseconds = 0;
-};
 
 // The GPU form of one material (what buildSceneArrays stores in SceneArrays::materials).
 shader::Material toGpuMaterial(const Material& m);
@@ -56,7 +31,8 @@ public:
     GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& arrays);
 
     gpu::Buffer nodes, triVerts, triAttribs, materials, lightRefs, lightNodes, textures, texels, punctual, sphereLights,
-        envTable, envTexels;
+        envTable, envTexels, instances;
+    std::uint32_t instanceCount = 0, topRoot = 0;  // 0 instances: one flat BVH (FrameUniforms.instanceCount)
     std::uint32_t nodeCount = 0, triCount = 0, lightNodeCount = 0, topLightCount = 0, lightRefCount = 0, punctualCount = 0,
                   sphereCount = 0, sphereLightCount = 0, envWidth = 0, envHeight = 0;
     float envLuminance = 0;

@@ -1,24 +1,15 @@
-// The objects a viewer user can pick and edit: each mesh, then each of the scene's own spheres
-// (the spheres made for sphere lights are lights, not objects). Picking traces the pixel-centre
-// ray on the CPU over the host arrays, so it needs no read-back from the GPU.
+// Picking the objects a viewer user can edit (scene/objects.h) in an image: the pixel-centre ray
+// traced on the CPU over the host arrays, so it needs no read-back from the GPU.
 #pragma once
 
 #include <cstdint>
 #include <string>
 
-#include "render/gpu_scene.h"
+#include "render/scene_arrays.h"
+#include "scene/objects.h"
 #include "scene/scene.h"
 
 namespace penumbra {
-
-inline constexpr std::uint32_t kNoObject = 0xffffffffu;
-
-std::uint32_t sphereObject(const Scene& scene, std::size_t sphere);
-bool isObject(const Scene& scene, std::uint32_t object);
-std::string objectName(const Scene& scene, std::uint32_t object);  // "mesh 'floor'", "sphere 2"
-std::uint32_t objectMaterial(const Scene& scene, std::uint32_t object);
-// Moves a mesh's vertices or a sphere's centre by offset (the caller rebuilds the GPU scene).
-void translateObject(Scene& scene, std::uint32_t object, Vec3 offset);
 
 // What the pixel-centre primary ray of pixel (x, y) hits: the same ray gbuffer.comp traces.
 struct Pick {

@@ -83,11 +83,14 @@ void validateCameraPath(const CameraPath& path) {
     }
 }
 
-bool isAnimated(const Scene& scene) { return !scene.cameraPath.keys.empty(); }
+bool isAnimated(const Scene& scene) { return !scene.cameraPath.keys.empty() || animatesGeometry(scene); }
 
-bool animatesGeometry(const Scene&) { return false; }
+bool animatesGeometry(const Scene& scene) { return !scene.instanceAnimations.empty(); }
 
 void applySceneTime(Scene& scene, double seconds) {
+    // Animated nodes (glTF animations) move their instances.
+    for (const InstanceAnimation& a : scene.instanceAnimations)
+        if (a.instance < scene.instances.size()) scene.instances[a.instance].transform = chainTransform(a.chain, seconds);
     if (scene.cameraPath.keys.empty()) return;
     const Camera before = scene.camera;
     scene.camera = cameraOnPath(scene.cameraPath, scene.camera, seconds);

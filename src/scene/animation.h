@@ -8,8 +8,9 @@
 
 namespace penumbra {
 
-// Moves `scene` to `seconds` in place: the camera onto its path (position, look-at and field of
-// view; up, lens and focus stay), and a torch attached to the camera along with it.
+// Moves `scene` to `seconds` in place: animated nodes' instances (Scene::instanceAnimations) to
+// their transforms then, the camera onto its path (position, look-at and field of view; up, lens
+// and focus stay), and a torch attached to the camera along with it.
 void applySceneTime(Scene& scene, double seconds);
 
 // A copy of `scene` at `seconds` (applySceneTime on a copy).
@@ -18,7 +19,7 @@ Scene sceneAtTime(const Scene& scene, double seconds);
 // Whether anything in the scene changes over time.
 bool isAnimated(const Scene& scene);
 // Whether moving to another moment changes more than the camera and the lights carried with it
-// (the BVH and materials would have to be rebuilt). False today: only cameras move.
+// (the top-level BVH would have to be rebuilt): true when nodes are animated.
 bool animatesGeometry(const Scene& scene);
 
 // The camera of `path` at `seconds`, keeping base's up, lens and focus. Before the first key it

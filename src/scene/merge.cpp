@@ -3,6 +3,8 @@
 #include <cmath>
 #include <utility>
 
+#include "scene/instances.h"
+
 namespace penumbra {
 
 float meanScale(const Affine& transform) { return std::cbrt(std::abs(transform.determinant())); }
@@ -26,14 +28,25 @@ void appendScene(Scene& into, Scene part, const Affine& transform) {
             if (ref->present()) ref->texture += textureBase;
         into.materials.push_back(std::move(m));
     }
-    const bool mirrored = transform.determinant() < 0;
     for (Mesh& mesh : part.meshes) {
-        for (Vec3& p : mesh.positions) p = transform.point(p);
-        for (Vec3& n : mesh.normals) n = transform.normal(n);
-        if (mirrored)
-            for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
         mesh.material += materialBase;
-        into.meshes.push_back(std::move(mesh));
+        into.meshes.push_back(transformedMesh(std::move(mesh), transform));
+    }
+    // Instances stay instances: the part's transform goes in front of theirs.
+    const auto prototypeBase = static_cast<std::uint32_t>(into.prototypes.size());
+    for (Prototype& p : part.prototypes) {
+        for (Mesh& mesh : p.meshes) mesh.material += materialBase;
+        into.prototypes.push_back(std::move(p));
+    }
+    const auto instanceBase = static_cast<std::uint32_t>(into.instances.size());
+    for (const Instance& i : part.instances) into.instances.push_back({prototypeBase + i.prototype, transform * i.transform});
+    // Animated instances keep moving, placed by the part's transform (a fixed node above their chain).
+    for (InstanceAnimation& a : part.instanceAnimations) {
+        a.instance += instanceBase;
+        NodeMotion placement;
+        placement.fixed = transform;
+        a.chain.insert(a.chain.begin(), placement);
+        into.instanceAnimations.push_back(std::move(a));
     }
     // A sphere stays a sphere: its radius scales by the transform's mean scale factor (exact for
     // uniform scaling; non-uniform scaling of a sphere would make an ellipsoid).

@@ -23,6 +23,13 @@ Aabb Scene::bounds() const {
         box.grow(s.center + Vec3{s.radius});
     }
     for (const Sprite& s : sprites) box.grow(spriteBounds(s));
+    for (const Instance& i : instances) {
+        if (i.prototype >= prototypes.size()) continue;
+        Aabb local;
+        for (const Mesh& m : prototypes[i.prototype].meshes)
+            for (Vec3 p : m.positions) local.grow(p);
+        box.grow(transformBounds(local, i.transform));
+    }
     return box;
 }
 
@@ -65,8 +72,7 @@ void Scene::validate() const {
         if (!isFinite(mat.emission) || minComponent(mat.emission) < 0)
             throw Error("material '" + mat.name + "': emission must be finite and >= 0");
     }
-    for (const Mesh& m : meshes) {
-        const std::string where = "mesh '" + m.name + "' in scene '" + name + "'";
+    auto checkMesh = [&](const Mesh& m, const std::string& where) {
         if (m.indices.size() % 3 != 0)
             throw Error(where + ": index count " + std::to_string(m.indices.size()) +
                         " is not a multiple of 3");
@@ -82,6 +88,28 @@ void Scene::validate() const {
                             std::to_string(m.positions.size()) + " vertices");
         for (Vec3 p : m.positions)
             if (!isFinite(p)) throw Error(where + ": a vertex position is not finite");
+    };
+    for (const Mesh& m : meshes) checkMesh(m, "mesh '" + m.name + "' in scene '" + name + "'");
+    for (const Prototype& p : prototypes)
+        for (const Mesh& m : p.meshes) checkMesh(m, "mesh '" + m.name + "' of instanced '" + p.name + "'");
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+        const std::string where = "instance " + std::to_string(i) + " in scene '" + name + "'";
+        if (instances[i].prototype >= prototypes.size())
+            throw Error(where + ": it places prototype " + std::to_string(instances[i].prototype) +
+                        ", which does not exist");
+        for (const auto& row : instances[i].transform.m)
+            for (float v : row)
+                if (!std::isfinite(v)) throw Error(where + ": its transform is not finite");
+        const float det = instances[i].transform.determinant();
+        if (!(std::abs(det) > 1e-12f) || !std::isfinite(1.0f / det))
+            throw Error(where + ": its transform flattens it (determinant 0); give it a nonzero scale");
+    }
+    for (std::size_t i = 0; i < instanceAnimations.size(); ++i) {
+        const InstanceAnimation& a = instanceAnimations[i];
+        const std::string where = "animation " + std::to_string(i) + " in scene '" + name + "'";
+        if (a.instance >= instances.size()) throw Error(where + ": it moves an instance that does not exist");
+        for (const NodeMotion& m : a.chain)
+            for (const Track* t : {&m.translationTrack, &m.rotationTrack, &m.scaleTrack}) validateTrack(*t, where);
     }
     for (std::size_t i = 0; i < spheres.size(); ++i) {
         const Sphere& s = spheres[i];
@@ -126,9 +154,14 @@ void attachTorch(Scene& scene) {
 std::size_t sceneBytes(const Scene& scene) {
     std::size_t bytes = sizeof(Scene) + scene.materials.size() * sizeof(Material) + scene.lights.size() * sizeof(Light) +
                         scene.spheres.size() * sizeof(Sphere) + scene.sprites.size() * sizeof(Sprite);
-    for (const Mesh& m : scene.meshes)
-        bytes += sizeof(Mesh) + m.positions.capacity() * sizeof(Vec3) + m.normals.capacity() * sizeof(Vec3) +
-                 m.uvs.capacity() * sizeof(Vec2) + m.indices.capacity() * sizeof(std::uint32_t);
+    auto meshBytes = [](const Mesh& m) {
+        return sizeof(Mesh) + m.positions.capacity() * sizeof(Vec3) + m.normals.capacity() * sizeof(Vec3) +
+               m.uvs.capacity() * sizeof(Vec2) + m.indices.capacity() * sizeof(std::uint32_t);
+    };
+    for (const Mesh& m : scene.meshes) bytes += meshBytes(m);
+    for (const Prototype& p : scene.prototypes)
+        for (const Mesh& m : p.meshes) bytes += meshBytes(m);
+    bytes += scene.instances.size() * sizeof(Instance);
     for (const Texture& t : scene.textures) bytes += sizeof(Texture) + t.rgba.capacity();
     if (scene.environment.map) bytes += scene.environment.map->radiance.capacity() * sizeof(Vec3);
     return bytes;
@@ -137,7 +170,12 @@ std::size_t sceneBytes(const Scene& scene) {
 std::vector<SceneTriangle> flattenTriangles(const Scene& scene) {
     std::vector<SceneTriangle> out;
     out.reserve(scene.triangleCount());
-    for (const Mesh& m : scene.meshes) {
+    for (const Mesh& m : scene.meshes) appendTriangles(m, out);
+    return out;
+}
+
+void appendTriangles(const Mesh& m, std::vector<SceneTriangle>& out) {
+    {
         for (std::size_t t = 0; t < m.triangleCount(); ++t) {
             SceneTriangle tri;
             tri.material = m.material;
@@ -153,7 +191,6 @@ std::vector<SceneTriangle> flattenTriangles(const Scene& scene) {
             out.push_back(tri);
         }
     }
-    return out;
 }
 
 void validateCamera(const Camera& camera) {

@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "core/aabb.h"
+#include "core/transform.h"
 #include "core/vec.h"
+#include "scene/node_animation.h"
 #include "scene/walk/walk_map.h"
 
 namespace penumbra {
@@ -203,10 +205,27 @@ struct Torch {
     float range = 0.0f;             // 0: unlimited
 };
 
+// Geometry placed many times is stored once (docs/SCENES.md "instances"; scene/instances.h): a
+// prototype is a group of meshes in its own object space, and each instance places one prototype
+// with an affine transform. The renderer gives each prototype one bottom-level BVH.
+struct Prototype {
+    std::string name;
+    std::vector<Mesh> meshes;  // object space; materials index Scene::materials
+};
+
+struct Instance {
+    std::uint32_t prototype = 0;
+    Affine transform;  // object to world; invertible
+};
+
 struct Scene {
     std::string name;
     std::vector<Material> materials;
-    std::vector<Mesh> meshes;
+    std::vector<Mesh> meshes;  // world space, each drawn once
+    std::vector<Prototype> prototypes;
+    std::vector<Instance> instances;  // none: every mesh is in `meshes`
+    // Instances whose transform follows animated nodes (glTF animations; scene/animation.h).
+    std::vector<InstanceAnimation> instanceAnimations;
     std::vector<Sphere> spheres;
     std::vector<Sprite> sprites;
     std::vector<Texture> textures;
@@ -223,7 +242,7 @@ struct Scene {
     std::optional<walk::WalkMap> walkMap;
 
     std::size_t triangleCount() const;
-    Aabb bounds() const;  // meshes, spheres and sprites
+    Aabb bounds() const;  // meshes, instances, spheres and sprites
     // Throws Error naming the mesh, sphere, sprite or texture and the problem (index out of range, non-finite vertex,
     // bad material id, ...). Loaders call it before handing a scene on.
     void validate() const;
@@ -246,8 +265,10 @@ void attachTorch(Scene& scene);
 // Bytes the scene model holds in memory (vector payloads), for `penumbra info`.
 std::size_t sceneBytes(const Scene& scene);
 
-// All triangles of the scene in mesh order.
+// All triangles of the scene's meshes in mesh order (instances are not among them).
 std::vector<SceneTriangle> flattenTriangles(const Scene& scene);
+// One mesh's triangles, appended in order, in the mesh's own space.
+void appendTriangles(const Mesh& mesh, std::vector<SceneTriangle>& out);
 
 // Checks a camera and throws a UsageError naming the problem (look-at equal to the position,
 // up parallel to the view direction, field of view outside (0, 180), negative aperture or

@@ -116,3 +116,42 @@ TEST(Duration, RefusesTheRestNamingTheFlag) {
 
 }  // namespace
 }  // namespace penumbra
+
+#include "scene/node_animation.h"
+
+namespace penumbra {
+namespace {
+
+// Rotation keys: halfway between 0 and 90 degrees about +y is 45 degrees, whichever sign the
+// second key's quaternion has (q and -q are one rotation; slerp takes the shorter arc).
+TEST(NodeAnimation, RotationsInterpolateAlongTheShorterArc) {
+    const float s = std::sin(0.25f * 3.14159265f), c = std::cos(0.25f * 3.14159265f);  // 90 deg about y
+    for (float sign : {1.0f, -1.0f}) {
+        Track track;
+        track.times = {0.0f, 2.0f};
+        track.values = {{0, 0, 0, 1}, {0, sign * s, 0, sign * c}};
+        const KeyValue q = sampleTrack(track, 1.0, true);
+        const Affine r = trsTransform(Vec3{0}, q, Vec3{1});
+        const Vec3 x = r.vector({1, 0, 0});
+        const float k = std::sqrt(0.5f);
+        EXPECT_NEAR(x.x, k, 1e-5f);
+        EXPECT_NEAR(x.z, -k, 1e-5f) << "sign " << sign;
+    }
+}
+
+TEST(NodeAnimation, ChainsComposeParentFirst) {
+    NodeMotion parent, child;
+    parent.fixed = Affine::eulerDegrees({0, 90, 0});
+    child.trs = true;
+    child.translationTrack.times = {0.0f, 1.0f};
+    child.translationTrack.values = {{0, 0, 0, 0}, {1, 0, 0, 0}};
+    const Vec3 p = chainTransform({parent, child}, 1.0).point(Vec3{0});
+    EXPECT_NEAR(p.x, 0.0f, 1e-5f);
+    EXPECT_NEAR(p.z, -1.0f, 1e-5f);  // the child's +x, turned 90 degrees about +y by the parent
+    Track bad = child.translationTrack;
+    bad.times = {1.0f, 1.0f};
+    EXPECT_THROW(validateTrack(bad, "test"), Error);
+}
+
+}  // namespace
+}  // namespace penumbra

@@ -81,9 +81,14 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, envWidth), offsetof(FrameUniforms, envIntensity),
                        offsetof(FrameUniforms, envRotation), offsetof(FrameUniforms, envHeight),
                        offsetof(FrameUniforms, misMode), offsetof(FrameUniforms, debugMode),
-                       offsetof(FrameUniforms, pad0), offsetof(FrameUniforms, time),
+                       offsetof(FrameUniforms, instanceCount), offsetof(FrameUniforms, time),
                        offsetof(FrameUniforms, topLightCount), offsetof(FrameUniforms, envLuminance),
-                       offsetof(FrameUniforms, lightRefCount), offsetof(FrameUniforms, lightPickUniform)});
+                       offsetof(FrameUniforms, lightRefCount), offsetof(FrameUniforms, lightPickUniform),
+                       offsetof(FrameUniforms, topRoot), offsetof(FrameUniforms, pad1), offsetof(FrameUniforms, pad2),
+                       offsetof(FrameUniforms, pad3)});
+        expectMembers(spv, "Instance", {0, offsetof(Instance, worldToObject), offsetof(Instance, rootNode),
+                                        offsetof(Instance, firstPrimitive), offsetof(Instance, primitiveCount),
+                                        offsetof(Instance, id)});
         expectMembers(spv, "PunctualLight", {0, offsetof(PunctualLight, type), offsetof(PunctualLight, intensity),
                                              offsetof(PunctualLight, range), offsetof(PunctualLight, direction),
                                              offsetof(PunctualLight, cosOuter), offsetof(PunctualLight, cosInner),
@@ -103,7 +108,7 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
         expectMembers(spv, "BsdfTestQuery", {0, offsetof(BsdfTestQuery, entering), offsetof(BsdfTestQuery, wi), 28});
         expectMembers(spv, "BsdfTestResult", {0, offsetof(BsdfTestResult, pdf), offsetof(BsdfTestResult, value),
                                               offsetof(BsdfTestResult, isDelta)});
-        for (const char* s : {"BvhNode", "TriVerts", "FrameUniforms", "Material", "BsdfTestQuery", "BsdfTestResult"})
+        for (const char* s : {"BvhNode", "TriVerts", "FrameUniforms", "Material", "BsdfTestQuery", "BsdfTestResult", "Instance"})
             structsChecked += int(spv.count(s));
         envStructsChecked += int(spv.count("EnvAlias"));
     }

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "scene/instances.h"
 #include "scene/io/scene_json.h"
 #include "scene/presets/presets.h"
 
@@ -206,3 +207,48 @@ TEST(SceneJson, FacesThatOverflowAreSkippedAndNoneLeftIsAnError) {
 
 }  // namespace
 }  // namespace penumbra::test
+
+namespace penumbra {
+namespace {
+
+// A scene file placing an asset twice through "instances": one prototype, two instances, the
+// asset's own transform first; baked, the same meshes as two separately placed assets.
+TEST(SceneJson, InstancesPlaceOneMeshManyTimes) {
+    const auto dir = std::filesystem::temp_directory_path() / ("penumbra-instances-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "tile.json") << R"({
+        "materials": [{"name": "m"}],
+        "quads": [{"material": "m", "corners": [[0, 0, 0], [1, 0, 0], [1, 0, -1], [0, 0, -1]]}]})";
+    std::ofstream(dir / "instanced.json") << R"({"assets": [{"file": "tile.json", "scale": 2, "material": "red",
+        "instances": [{"translate": [10, 0, 0]}, {"rotate": [0, 90, 0], "translate": [0, 0, 5]}]}],
+        "materials": [{"name": "red", "albedo": [0.8, 0.1, 0.1]}]})";
+    std::ofstream(dir / "copies.json") << R"({"assets": [
+        {"file": "tile.json", "scale": 2, "translate": [10, 0, 0], "material": "red"},
+        {"file": "tile.json", "scale": 2, "rotate": [0, 90, 0], "translate": [0, 0, 5], "material": "red"}],
+        "materials": [{"name": "red", "albedo": [0.8, 0.1, 0.1]}]})";
+    std::ofstream(dir / "bad.json") << R"({"assets": [{"file": "tile.json", "instances": []}]})";
+    const Scene s = loadSceneJson(dir / "instanced.json");
+    const Scene copies = loadSceneJson(dir / "copies.json");
+    std::string badError;
+    try {
+        loadSceneJson(dir / "bad.json");
+    } catch (const Error& e) {
+        badError = e.what();
+    }
+    std::filesystem::remove_all(dir);
+    EXPECT_TRUE(s.meshes.empty());
+    ASSERT_EQ(s.prototypes.size(), 1u);
+    ASSERT_EQ(s.instances.size(), 2u);
+    EXPECT_EQ(s.materials[s.prototypes[0].meshes.at(0).material].name, "red");
+    Scene baked = s;
+    bakeAllInstances(baked);
+    ASSERT_EQ(baked.meshes.size(), copies.meshes.size());
+    for (std::size_t m = 0; m < copies.meshes.size(); ++m)
+        for (std::size_t v = 0; v < copies.meshes[m].positions.size(); ++v)
+            EXPECT_LT(length(baked.meshes[m].positions[v] - copies.meshes[m].positions[v]), 1e-5f);
+    EXPECT_LT(length(s.bounds().hi - copies.bounds().hi), 1e-5f);
+    EXPECT_NE(badError.find("instances"), std::string::npos) << badError;
+}
+
+}  // namespace
+}  // namespace penumbra

@@ -286,10 +286,12 @@ public:
     Scene run() {
         scene_.name = name_;
         for (std::size_t i = 0; i < model_.materials.size(); ++i) scene_.materials.push_back(material(int(i)));
+        readAnimations();
         traverse();
-        if (scene_.meshes.empty() && skipped_.total() > 0)
+        placeMeshes();
+        if (scene_.meshes.empty() && scene_.instances.empty() && skipped_.total() > 0)
             throw Error(name_ + ": no face can be rendered: the file has " + skipped_.describe());
-        if (scene_.meshes.empty())
+        if (scene_.meshes.empty() && scene_.instances.empty())
             throw Error(name_ + ": the glTF scene has no triangles (no mesh with TRIANGLES primitives is reachable)");
         skipped_.warn(name_);
         if (scene_.materials.empty()) defaultMaterial();
@@ -578,6 +580,11 @@ private:
             const tinygltf::Node& n = model_.nodes[std::size_t(node)];
             Mat4 world = parent * localMatrix(n, where);
             onPath[std::size_t(node)] = 1;
+            if (!animated_.empty() && n.mesh >= 0) {  // the node chain, for animated instances
+                path_.clear();
+                for (const Frame& f : stack) path_.push_back(f.node);
+                path_.push_back(node);
+            }
             visitNode(node, n, world, where);
             stack.push_back({node, world, 0});
         };
@@ -602,11 +609,7 @@ private:
         if (n.mesh >= 0) {
             if (std::size_t(n.mesh) >= model_.meshes.size())
                 throw Error(where + ": mesh " + std::to_string(n.mesh) + " does not exist");
-            const tinygltf::Mesh& mesh = model_.meshes[std::size_t(n.mesh)];
-            for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
-                addPrimitive(index, n.mesh, int(p), world,
-                             where + ", mesh " + std::to_string(n.mesh) + " ('" + clampName(mesh.name) +
-                                 "') primitive " + std::to_string(p));
+            pending_.push_back({index, n.mesh, world, where, animatedPath() ? path_ : std::vector<int>{}});
         } else if (n.mesh < -1) {
             throw Error(where + ": mesh " + std::to_string(n.mesh) + " does not exist");
         }
@@ -752,7 +755,132 @@ private:
         return primCache_.emplace(key, std::move(out)).first->second.get();
     }
 
-    void addPrimitive(int, int meshIndex, int primIndex, const Mat4& world, const std::string& where) {
+    // A mesh that one node uses is baked into world space; one that several nodes use becomes a
+    // prototype (stored once, in the mesh's own space) and an instance per node (Scene::instances).
+    void placeMeshes() {
+        std::map<int, int> uses;
+        for (const PendingMesh& p : pending_) ++uses[p.mesh];
+        std::map<int, std::uint32_t> prototypeOf;
+        for (const PendingMesh& p : pending_) {
+            const Affine placement = toAffine(p.world);
+            const float det = placement.determinant();
+            const bool invertible = std::abs(det) > 1e-12f && std::isfinite(1.0f / det);
+            const bool animated = !p.path.empty();
+            if ((uses[p.mesh] < 2 && !animated) || !invertible) {
+                addMesh(p.node, p.mesh, p.world, p.where, scene_.meshes);
+                continue;
+            }
+            auto it = prototypeOf.find(p.mesh);
+            if (it == prototypeOf.end()) {
+                Prototype proto;
+                proto.name = model_.meshes[std::size_t(p.mesh)].name;
+                addMesh(p.node, p.mesh, Mat4{}, p.where, proto.meshes);
+                const auto index = proto.meshes.empty() ? kNoPrototype : std::uint32_t(scene_.prototypes.size());
+                if (!proto.meshes.empty()) scene_.prototypes.push_back(std::move(proto));
+                it = prototypeOf.emplace(p.mesh, index).first;
+            }
+            if (it->second == kNoPrototype) continue;
+            if (animated) scene_.instanceAnimations.push_back({std::uint32_t(scene_.instances.size()), chainOf(p.path)});
+            scene_.instances.push_back({it->second, placement});
+        }
+    }
+
+    // ---- animations (scene/node_animation.h): every channel of every animation plays at once ----
+
+    bool animatedPath() const {
+        for (int node : path_)
+            if (animated_.count(node)) return true;
+        return false;
+    }
+
+    void readAnimations() {
+        for (std::size_t a = 0; a < model_.animations.size(); ++a) {
+            const tinygltf::Animation& anim = model_.animations[a];
+            const std::string where = name_ + ": animation " + std::to_string(a);
+            for (std::size_t c = 0; c < anim.channels.size(); ++c) {
+                const tinygltf::AnimationChannel& ch = anim.channels[c];
+                const std::string at = where + " channel " + std::to_string(c);
+                if (ch.target_path == "weights") {
+                    warnOnce("morph target animations (weights) are not supported; they are ignored");
+                    continue;
+                }
+                if (ch.target_path != "translation" && ch.target_path != "rotation" && ch.target_path != "scale")
+                    throw Error(at + ": unknown target path '" + clampName(ch.target_path) + "'");
+                if (ch.target_node < 0 || std::size_t(ch.target_node) >= model_.nodes.size())
+                    throw Error(at + ": target node " + std::to_string(ch.target_node) + " does not exist");
+                if (ch.sampler < 0 || std::size_t(ch.sampler) >= anim.samplers.size())
+                    throw Error(at + ": sampler " + std::to_string(ch.sampler) + " does not exist");
+                if (!model_.nodes[std::size_t(ch.target_node)].matrix.empty())
+                    throw Error(at + ": it animates node " + std::to_string(ch.target_node) +
+                                ", which has a matrix (glTF allows animating TRS nodes only)");
+                const bool rotation = ch.target_path == "rotation";
+                Track track = readTrack(anim.samplers[std::size_t(ch.sampler)], rotation ? 4 : 3, at);
+                NodeTracks& tracks = animated_[ch.target_node];
+                (rotation ? tracks.rotation : ch.target_path == "scale" ? tracks.scale : tracks.translation) = std::move(track);
+            }
+        }
+    }
+
+    Track readTrack(const tinygltf::AnimationSampler& sampler, int components, const std::string& where) {
+        Track track;
+        if (sampler.interpolation == "STEP") track.interpolation = KeyInterpolation::Step;
+        else if (sampler.interpolation == "CUBICSPLINE") track.interpolation = KeyInterpolation::CubicSpline;
+        else if (sampler.interpolation.empty() || sampler.interpolation == "LINEAR") track.interpolation = KeyInterpolation::Linear;
+        else throw Error(where + ": unknown interpolation '" + clampName(sampler.interpolation) + "'");
+        const AccessorView in = accessor(sampler.input, where + " input", 1);
+        const AccessorView out = accessor(sampler.output, where + " output", components);
+        if (in.count == 0) throw Error(where + ": the sampler has no keys");
+        for (std::size_t k = 0; k < in.count; ++k) track.times.push_back(float(in.component(k, 0)));
+        for (std::size_t k = 0; k < out.count; ++k) {
+            KeyValue v{0, 0, 0, 0};
+            for (int i = 0; i < components; ++i) v[std::size_t(i)] = float(out.component(k, i));
+            track.values.push_back(v);
+        }
+        validateTrack(track, where);
+        return track;
+    }
+
+    std::vector<NodeMotion> chainOf(const std::vector<int>& path) const {
+        std::vector<NodeMotion> chain;
+        for (int index : path) {
+            const tinygltf::Node& n = model_.nodes[std::size_t(index)];
+            NodeMotion m;
+            const auto it = animated_.find(index);
+            if (it == animated_.end()) {
+                m.fixed = toAffine(localMatrix(n, nodeWhere(index)));
+            } else {
+                m.trs = true;
+                if (n.translation.size() == 3) m.translation = {float(n.translation[0]), float(n.translation[1]), float(n.translation[2])};
+                if (n.rotation.size() == 4)
+                    m.rotation = {float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]), float(n.rotation[3])};
+                if (n.scale.size() == 3) m.scale = {float(n.scale[0]), float(n.scale[1]), float(n.scale[2])};
+                m.translationTrack = it->second.translation;
+                m.rotationTrack = it->second.rotation;
+                m.scaleTrack = it->second.scale;
+            }
+            chain.push_back(std::move(m));
+        }
+        return chain;
+    }
+
+    static Affine toAffine(const Mat4& m) {
+        Affine a;
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 4; ++c) a.m[r][c] = float(m.at(r, c));
+        return a;
+    }
+
+    void addMesh(int node, int meshIndex, const Mat4& world, const std::string& where, std::vector<Mesh>& into) {
+        const tinygltf::Mesh& mesh = model_.meshes[std::size_t(meshIndex)];
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+            addPrimitive(node, meshIndex, int(p), world,
+                         where + ", mesh " + std::to_string(meshIndex) + " ('" + clampName(mesh.name) + "') primitive " +
+                             std::to_string(p),
+                         into);
+    }
+
+    void addPrimitive(int, int meshIndex, int primIndex, const Mat4& world, const std::string& where,
+                      std::vector<Mesh>& into) {
         const tinygltf::Primitive& p = model_.meshes[std::size_t(meshIndex)].primitives[std::size_t(primIndex)];
         if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
             warnOnce("primitives with mode " + std::to_string(p.mode) + " (not TRIANGLES) are skipped");
@@ -801,8 +929,23 @@ private:
         if (det < 0)  // mirrored: keep counter-clockwise front faces
             for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) std::swap(m.indices[t + 1], m.indices[t + 2]);
         dropBadTriangles(m, skipped_);
-        if (!m.indices.empty()) scene_.meshes.push_back(std::move(m));
+        if (!m.indices.empty()) into.push_back(std::move(m));
     }
+
+    static constexpr std::uint32_t kNoPrototype = 0xffffffffu;
+    struct PendingMesh {
+        int node;
+        int mesh;
+        Mat4 world;
+        std::string where;
+        std::vector<int> path;  // root to node, when a node on it is animated (else empty)
+    };
+    std::vector<PendingMesh> pending_;  // mesh uses in traversal order, placed by placeMeshes
+    struct NodeTracks {
+        Track translation, rotation, scale;
+    };
+    std::map<int, NodeTracks> animated_;  // by node
+    std::vector<int> path_;               // the node being visited and its ancestors, root first
 
     const Model& model_;
     std::string name_;

@@ -12,6 +12,7 @@
 #include "scene/animation.h"
 #include "scene/face_check.h"
 #include "scene/io/env_spec.h"
+#include "scene/instances.h"
 #include "scene/io/load.h"
 #include "scene/merge.h"
 #include "scene/presets/presets.h"
@@ -182,6 +183,7 @@ struct AssetMaterial {
     std::string material;
     std::string where;
     std::size_t meshBegin, meshEnd, sphereBegin, sphereEnd;
+    std::size_t prototypeBegin = 0, prototypeEnd = 0;
 };
 
 Scene loadAsset(const Reader& r, const Json& a, const std::string& where, const std::filesystem::path& baseDir) {
@@ -191,6 +193,51 @@ Scene loadAsset(const Reader& r, const Json& a, const std::string& where, const 
     LoadOptions options;
     if (a.contains("map")) options.map = r.string(a["map"], where + ".map");
     return loadSceneFile(file, options);
+}
+
+// An asset with "instances": its meshes become one prototype (stored once, one bottom-level BVH)
+// placed by each entry's transform after the asset's own; instances the asset already has (a
+// scene file's, a glTF's shared meshes) are placed with it.
+void placeInstances(const Reader& r, const Json& a, const std::string& where, Scene part, const Affine& transform,
+                    Scene& scene) {
+    const Json& list = a["instances"];
+    const std::string listWhere = where + ".instances";
+    if (!list.is_array() || list.empty() || list.size() > 10'000'000)
+        r.fail(listWhere, "expected an array of 1 to 10,000,000 placements ({\"scale\", \"rotate\", \"translate\"})");
+    if (!part.spheres.empty() || !part.sprites.empty() || !part.lights.empty())
+        r.fail(listWhere, "instances place meshes only, and this asset also has spheres, sprites or lights; "
+                          "place it with one asset per copy instead");
+    const auto materialBase = static_cast<std::uint32_t>(scene.materials.size());
+    const auto prototypeBase = static_cast<std::uint32_t>(scene.prototypes.size());
+    std::vector<Prototype> prototypes = std::move(part.prototypes);
+    std::vector<Instance> inner = std::move(part.instances);
+    std::vector<InstanceAnimation> innerAnimations = std::move(part.instanceAnimations);
+    part.instanceAnimations.clear();
+    const auto own = static_cast<std::uint32_t>(prototypes.size());
+    if (!part.meshes.empty()) prototypes.push_back({r.string(a["file"], where + ".file"), std::move(part.meshes)});
+    part.prototypes.clear();
+    part.instances.clear();
+    part.meshes.clear();
+    appendScene(scene, std::move(part), Affine{});  // materials and textures only
+    for (Prototype& p : prototypes) {
+        for (Mesh& m : p.meshes) m.material += materialBase;
+        scene.prototypes.push_back(std::move(p));
+    }
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string at = listWhere + "[" + std::to_string(i) + "]";
+        if (!list[i].is_object()) r.fail(at, "expected an object");
+        const Affine placed = readTransform(r, list[i], at) * transform;
+        if (own < prototypes.size()) scene.instances.push_back({prototypeBase + own, placed});
+        const auto innerBase = static_cast<std::uint32_t>(scene.instances.size());
+        for (const Instance& k : inner) scene.instances.push_back({prototypeBase + k.prototype, placed * k.transform});
+        for (InstanceAnimation a : innerAnimations) {  // each copy keeps moving, under its placement
+            a.instance += innerBase;
+            NodeMotion placement;
+            placement.fixed = placed;
+            a.chain.insert(a.chain.begin(), placement);
+            scene.instanceAnimations.push_back(std::move(a));
+        }
+    }
 }
 
 // "assets": each is loaded, transformed and appended; the first one's camera (transformed with
@@ -212,12 +259,18 @@ std::vector<AssetMaterial> readAssets(const Reader& r, const Json& doc, const st
             scene.background = part.background;
             scene.environment = part.environment;
         }
-        AssetMaterial am{"", where, scene.meshes.size(), 0, scene.spheres.size(), 0};
-        appendScene(scene, std::move(part), transform);
+        AssetMaterial am{"", where, scene.meshes.size(), 0, scene.spheres.size(), 0, scene.prototypes.size(), 0};
+        if (a.contains("instances")) {
+            if (a.contains("preset")) r.fail(where + ".instances", "instances place a \"file\" asset, not a preset");
+            placeInstances(r, a, where, std::move(part), transform, scene);
+        } else {
+            appendScene(scene, std::move(part), transform);
+        }
         if (a.contains("material")) {
             am.material = r.string(a["material"], where + ".material");
             am.meshEnd = scene.meshes.size();
             am.sphereEnd = scene.spheres.size();
+            am.prototypeEnd = scene.prototypes.size();
             assetMaterials.push_back(am);
         }
     }
@@ -248,6 +301,8 @@ void assignAssetMaterials(const Reader& r, const std::vector<AssetMaterial>& ass
         const std::uint32_t id = findMaterial(r, am.material, am.where + ".material", scene);
         for (std::size_t m = am.meshBegin; m < am.meshEnd; ++m) scene.meshes[m].material = id;
         for (std::size_t s = am.sphereBegin; s < am.sphereEnd; ++s) scene.spheres[s].material = id;
+        for (std::size_t p = am.prototypeBegin; p < am.prototypeEnd; ++p)
+            for (Mesh& m : scene.prototypes[p].meshes) m.material = id;
     }
 }
 
@@ -256,6 +311,8 @@ void assignAssetMaterials(const Reader& r, const std::vector<AssetMaterial>& ass
 void warnUnusedMaterials(const std::string& file, const Json& mats, const Scene& scene) {
     std::vector<bool> used(scene.materials.size(), false);
     for (const Mesh& m : scene.meshes) used.at(m.material) = true;
+    for (const Prototype& p : scene.prototypes)
+        for (const Mesh& m : p.meshes) used.at(m.material) = true;
     for (const Sphere& s : scene.spheres) used.at(s.material) = true;
     for (const Sprite& s : scene.sprites) used.at(s.material) = true;
     for (std::size_t i = 0; i < mats.size(); ++i) {
@@ -428,13 +485,15 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
         if (s.contains("exposure")) read.exposure = r.number(s["exposure"], "render.exposure", -64, 64);
         if (settings) *settings = read;
     }
-    if (scene.meshes.empty() && scene.spheres.empty())
+    if (scene.meshes.empty() && scene.spheres.empty() && scene.instances.empty())
         r.fail("top level", "the scene has no geometry (add \"assets\", \"meshes\", \"quads\" or \"spheres\")");
     // Inline meshes, and assets scaled up, can hold faces the renderer cannot use.
     SkippedFaces skipped;
     for (Mesh& m : scene.meshes) dropBadTriangles(m, skipped);
-    const bool anyFace = std::any_of(scene.meshes.begin(), scene.meshes.end(),
-                                     [](const Mesh& m) { return !m.indices.empty(); });
+    for (Prototype& p : scene.prototypes)
+        for (Mesh& m : p.meshes) dropBadTriangles(m, skipped);
+    const bool anyFace = !scene.instances.empty() || std::any_of(scene.meshes.begin(), scene.meshes.end(),
+                                                                 [](const Mesh& m) { return !m.indices.empty(); });
     if (!anyFace && scene.spheres.empty() && skipped.total() > 0)
         throw Error(name + ": no face can be rendered: the scene has " + skipped.describe());
     skipped.warn(name);
@@ -453,7 +512,10 @@ Scene loadSceneJson(const std::filesystem::path& path, SceneFileSettings* settin
     return loadSceneJsonFromText(text, path.parent_path(), path.string(), settings);
 }
 
-std::string sceneToJson(const Scene& scene) {
+std::string sceneToJson(const Scene& instanced) {
+    // Scene files write instances as the world meshes they place.
+    Scene scene = instanced;
+    bakeAllInstances(scene);
     Json doc;
     auto v3 = [](Vec3 v) { return Json::array({v.x, v.y, v.z}); };
     doc["camera"] = {{"position", v3(scene.camera.position)}, {"look_at", v3(scene.camera.lookAt)},

@@ -11,6 +11,8 @@
 #include "core/error.h"
 #include "io_test_util.h"
 #include "mesh_files.h"
+#include "scene/animation.h"
+#include "scene/instances.h"
 #include "scene/io/gltf.h"
 
 namespace penumbra {
@@ -122,6 +124,87 @@ TEST(GltfLoader, NodeTransformsTurnNormalsByTheInverseTranspose) {
         EXPECT_EQ(m.indices[t], sphere.indices[t]);
         EXPECT_EQ(m.indices[t + 1], sphere.indices[t + 2]) << "a mirroring node keeps the winding";
     }
+}
+
+// Two nodes that use one mesh: the mesh is stored once (a prototype in its own space) and placed
+// twice; baked, the instances are the meshes the nodes' transforms make.
+TEST(GltfLoader, NodesSharingAMeshBecomeInstances) {
+    const Mesh sphere = test::smoothSphere(Vec3{0}, 1.0f, 4, 6, 0);
+    test::TempDir dir;
+    test::writeGltf(dir.path(), "sphere", sphere, nlohmann::json{{"translation", {1, 0, 0}}});
+    nlohmann::json doc;
+    std::ifstream(dir / "sphere.gltf") >> doc;
+    doc["nodes"].push_back({{"mesh", 0}, {"translation", {0, 2, 0}}, {"scale", {2, 2, -2}}});
+    doc["scenes"][0]["nodes"].push_back(1);
+    std::ofstream(dir / "two.gltf") << doc.dump();
+    Scene s = loadGltf(dir / "two.gltf");
+    EXPECT_TRUE(s.meshes.empty());
+    ASSERT_EQ(s.prototypes.size(), 1u);
+    ASSERT_EQ(s.instances.size(), 2u);
+    ASSERT_EQ(s.prototypes[0].meshes.size(), 1u);
+    EXPECT_EQ(s.prototypes[0].meshes[0].positions.size(), sphere.positions.size());
+    bakeAllInstances(s);
+    ASSERT_EQ(s.meshes.size(), 2u);
+    for (std::size_t i = 0; i < sphere.positions.size(); ++i) {
+        expectNear(s.meshes[0].positions[i], sphere.positions[i] + Vec3{1, 0, 0}, 1e-5f);
+        expectNear(s.meshes[1].positions[i], sphere.positions[i] * Vec3{2, 2, -2} + Vec3{0, 2, 0}, 1e-5f);
+    }
+    EXPECT_EQ(s.meshes[1].indices[1], sphere.indices[2]) << "a mirroring node keeps the winding";
+}
+
+// A node with a keyframed translation under a fixed parent: at each moment the instance is where
+// the keys say (linear, step and cubic-spline interpolation), before the first key at the first.
+Vec3 animatedPosition(const std::string& interpolation, const std::vector<float>& values, double seconds) {
+    const Mesh sphere = test::smoothSphere(Vec3{0}, 1.0f, 4, 6, 0);
+    test::TempDir dir;
+    test::writeGltf(dir.path(), "sphere", sphere);
+    const std::vector<float> times = {0.0f, 1.0f, 2.0f};
+    {
+        std::ofstream bin(dir / "anim.bin", std::ios::binary);
+        bin.write(reinterpret_cast<const char*>(times.data()), std::streamsize(times.size() * 4));
+        bin.write(reinterpret_cast<const char*>(values.data()), std::streamsize(values.size() * 4));
+    }
+    nlohmann::json doc;
+    std::ifstream(dir / "sphere.gltf") >> doc;
+    const int buffer = int(doc["buffers"].size()), view = int(doc["bufferViews"].size()), acc = int(doc["accessors"].size());
+    doc["buffers"].push_back({{"uri", "anim.bin"}, {"byteLength", (times.size() + values.size()) * 4}});
+    doc["bufferViews"].push_back({{"buffer", buffer}, {"byteOffset", 0}, {"byteLength", times.size() * 4}});
+    doc["bufferViews"].push_back({{"buffer", buffer}, {"byteOffset", times.size() * 4}, {"byteLength", values.size() * 4}});
+    doc["accessors"].push_back({{"bufferView", view}, {"componentType", 5126}, {"count", times.size()}, {"type", "SCALAR"},
+                                {"min", {0.0}}, {"max", {2.0}}});
+    doc["accessors"].push_back({{"bufferView", view + 1}, {"componentType", 5126}, {"count", values.size() / 3}, {"type", "VEC3"}});
+    using Json = nlohmann::json;
+    doc["nodes"].push_back({{"children", Json::array({0})}, {"translation", {0, 0, 5}}});
+    doc["scenes"][0]["nodes"] = Json::array({1});
+    const Json sampler = {{"input", acc}, {"output", acc + 1}, {"interpolation", interpolation}};
+    const Json channel = {{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}};
+    doc["animations"] = Json::array({Json{{"samplers", Json::array({sampler})}, {"channels", Json::array({channel})}}});
+    std::ofstream(dir / "animated.gltf") << doc.dump();
+    Scene s = loadGltf(dir / "animated.gltf");
+    EXPECT_TRUE(s.meshes.empty());
+    EXPECT_EQ(s.instances.size(), 1u);
+    EXPECT_EQ(s.instanceAnimations.size(), 1u);
+    EXPECT_TRUE(animatesGeometry(s));
+    applySceneTime(s, seconds);
+    bakeAllInstances(s);
+    // The sphere's centre is the mean of its two poles (the first and last vertices).
+    return (s.meshes.at(0).positions.front() + s.meshes.at(0).positions.back()) * 0.5f;
+}
+
+TEST(GltfLoader, KeyframedTranslationPutsTheNodeWhereTheKeysSay) {
+    const std::vector<float> keys = {0, 0, 0, 2, 0, 0, 2, 4, 0};
+    expectNear(animatedPosition("LINEAR", keys, 0.5), {1, 0, 5}, 1e-5f);
+    expectNear(animatedPosition("LINEAR", keys, 1.5), {2, 2, 5}, 1e-5f);
+    expectNear(animatedPosition("LINEAR", keys, -1.0), {0, 0, 5}, 1e-5f);
+    expectNear(animatedPosition("LINEAR", keys, 7.0), {2, 4, 5}, 1e-5f);
+    expectNear(animatedPosition("STEP", keys, 1.9), {2, 0, 5}, 1e-5f);
+    // Cubic spline: (in-tangent, value, out-tangent) per key. From key 0 (value 0, out-tangent
+    // 4 along x) to key 1 (value 2, in-tangent 0) over 1 s, halfway: 0.5 * 0 + 0.125 * 4 + 0.5 * 2.
+    const std::vector<float> cubic = {0, 0, 0, 0, 0, 0, 4, 0, 0,  //
+                                      0, 0, 0, 2, 0, 0, 0, 0, 0,  //
+                                      0, 0, 0, 2, 4, 0, 0, 0, 0};
+    expectNear(animatedPosition("CUBICSPLINE", cubic, 0.5), {1.5f, 0, 5}, 1e-5f);
+    expectNear(animatedPosition("CUBICSPLINE", cubic, 2.0), {2, 4, 5}, 1e-5f);
 }
 
 TEST_F(GltfScene, Materials) {

@@ -1,0 +1,51 @@
+// Two-level BVHs: bottom levels (one per unique mesh, built once, in object space) and a top level
+// over instances of them with affine transforms, rebuilt whenever an instance moves. Bottom and
+// top levels share one node array with absolute indices (layout at shader::Instance), so each
+// level is walked like the flat BVH; traversal moves the ray into an instance's space on the way
+// down. The CPU reference traversal here is the oracle for the shader's (lib/bvh.glsl).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "bvh/builder.h"
+#include "bvh/traverse_cpu.h"
+#include "core/aabb.h"
+#include "core/transform.h"
+#include "shared/types.h"
+
+namespace penumbra::bvh {
+
+// objectToWorld must be invertible (Scene::validate checks instances).
+shader::Instance makeInstance(const Affine& objectToWorld, std::uint32_t rootNode, std::uint32_t firstPrimitive,
+                              std::uint32_t primitiveCount, std::uint32_t id);
+Affine objectToWorld(const shader::Instance& instance);
+Affine worldToObject(const shader::Instance& instance);
+
+// Appends a bottom level built over primitives that go to slots [primitiveBase, ...): its node
+// indices become absolute (interior: + nodes.size(); leaves: + primitiveBase). Returns its root.
+std::uint32_t appendBottomLevel(std::vector<shader::BvhNode>& nodes, const Bvh& bottom, std::uint32_t primitiveBase);
+
+// The top level over instances with these world bounds, its node indices starting at nodeBase;
+// each leaf holds one instance (firstOrRight = its index in instanceBounds, triCount = 1). Empty
+// for no instances.
+std::vector<shader::BvhNode> buildTopLevel(std::span<const Aabb> instanceBounds, std::uint32_t nodeBase);
+
+// A two-level scene as the GPU sees it: every level's nodes, the primitive slots, the instances
+// and the top level's root.
+struct TwoLevelView {
+    std::span<const shader::BvhNode> nodes;
+    std::span<const shader::TriVerts> tris;
+    std::span<const shader::Instance> instances;
+    std::uint32_t topRoot = 0;
+};
+
+// Closest hit with t in (0, ray.tMax) over every instance (t is the world ray's: directions are
+// transformed without normalising); Hit::instance names the instance hit.
+Hit closestHit(const TwoLevelView& scene, const Ray& ray);
+bool anyHit(const TwoLevelView& scene, const Ray& ray);
+// Every primitive of every instance, in order; the oracle for the two above.
+Hit closestHitBrute(const TwoLevelView& scene, const Ray& ray);
+
+}  // namespace penumbra::bvh

@@ -1,0 +1,107 @@
+#include "render/instance_arrays.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "bvh/triangle.h"
+#include "bvh/two_level.h"
+#include "core/error.h"
+#include "scene/objects.h"
+
+namespace penumbra {
+namespace {
+
+struct BottomLevel {
+    std::uint32_t root = PN_NO_HIT;
+    std::uint32_t firstPrimitive = 0, primitiveCount = 0;
+    Aabb bounds;
+};
+
+// One prototype's triangles in object space, with its BVH, appended to the arrays.
+BottomLevel appendPrototype(const Prototype& prototype, SceneArrays& out, const bvh::BuildOptions& options) {
+    std::vector<SceneTriangle> tris;
+    for (const Mesh& m : prototype.meshes) appendTriangles(m, tris);
+    BottomLevel level;
+    if (tris.empty()) return level;
+    const std::vector<bvh::Triangle> geometry = bvh::trianglesOf(tris);
+    const bvh::Bvh tree = bvh::buildTriangles(geometry, options);
+    if (out.triVerts.size() + tris.size() >= PN_NO_HIT) throw Error("the scene's instanced meshes have too many triangles");
+    level.firstPrimitive = static_cast<std::uint32_t>(out.triVerts.size());
+    level.primitiveCount = static_cast<std::uint32_t>(tris.size());
+    level.root = bvh::appendBottomLevel(out.nodes, tree, level.firstPrimitive);
+    level.bounds.grow(tree.nodes[0].boundsMin);
+    level.bounds.grow(tree.nodes[0].boundsMax);
+    for (std::uint32_t original : tree.primOrder) {
+        const SceneTriangle& t = tris[original];
+        out.triVerts.push_back(bvh::toTriVerts(geometry[original]));
+        shader::TriAttribs a{};
+        a.n0 = t.n[0];
+        a.n1 = t.n[1];
+        a.n2 = t.n[2];
+        a.uv0 = t.uv[0];
+        a.uv1 = t.uv[1];
+        a.uv2 = t.uv[2];
+        a.materialId = t.material;
+        a.lightIndex = PN_NO_LIGHT;  // emissive prototypes are baked into the world (scene/instances.h)
+        a.area = 0.5f * length(cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));  // object space
+        out.triAttribs.push_back(a);
+        out.primitiveObject.push_back(kNoObject);
+    }
+    return level;
+}
+
+}  // namespace
+
+void appendInstanceLevels(const Scene& scene, SceneArrays& out, const bvh::BuildOptions& options) {
+    if (scene.instances.empty()) return;
+    const auto start = std::chrono::steady_clock::now();
+    out.instances.clear();
+    out.instanceBounds.clear();
+    if (!out.nodes.empty()) {
+        // The world's own primitives: an identity instance over the flat BVH at node 0.
+        out.instances.push_back(bvh::makeInstance(Affine{}, 0, 0, static_cast<std::uint32_t>(out.triVerts.size()), PN_NO_HIT));
+        Aabb world;
+        world.grow(out.nodes[0].boundsMin);
+        world.grow(out.nodes[0].boundsMax);
+        out.instanceBounds.push_back(world);
+    }
+    std::vector<BottomLevel> levels(scene.prototypes.size());
+    std::vector<bool> built(scene.prototypes.size(), false);
+    for (std::size_t k = 0; k < scene.instances.size(); ++k) {
+        const Instance& inst = scene.instances[k];
+        if (!built[inst.prototype]) {
+            levels[inst.prototype] = appendPrototype(scene.prototypes[inst.prototype], out, options);
+            built[inst.prototype] = true;
+        }
+        const BottomLevel& level = levels[inst.prototype];
+        if (level.root == PN_NO_HIT) continue;  // a prototype without triangles places nothing
+        out.instances.push_back(bvh::makeInstance(inst.transform, level.root, level.firstPrimitive, level.primitiveCount,
+                                                  static_cast<std::uint32_t>(k)));
+        out.instanceBounds.push_back(level.bounds);
+    }
+    out.bottomNodeCount = static_cast<std::uint32_t>(out.nodes.size());
+    out.uniqueMeshes = static_cast<std::uint32_t>(std::count(built.begin(), built.end(), true));
+    rebuildTopLevel(out);
+    out.buildMilliseconds +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void rebuildTopLevel(SceneArrays& arrays) {
+    PN_CHECK(arrays.instanceBounds.size() == arrays.instances.size() && arrays.bottomNodeCount <= arrays.nodes.size());
+    arrays.nodes.resize(arrays.bottomNodeCount);
+    std::vector<Aabb> world(arrays.instances.size());
+    for (std::size_t i = 0; i < world.size(); ++i)
+        world[i] = transformBounds(arrays.instanceBounds[i], bvh::objectToWorld(arrays.instances[i]));
+    const std::vector<shader::BvhNode> top = bvh::buildTopLevel(world, arrays.bottomNodeCount);
+    arrays.nodes.insert(arrays.nodes.end(), top.begin(), top.end());
+    arrays.topRoot = arrays.bottomNodeCount;
+}
+
+void setInstanceTransform(SceneArrays& arrays, std::uint32_t index, const Affine& objectToWorld) {
+    PN_CHECK(index < arrays.instances.size());
+    shader::Instance& inst = arrays.instances[index];
+    inst = bvh::makeInstance(objectToWorld, inst.rootNode, inst.firstPrimitive, inst.primitiveCount, inst.id);
+    rebuildTopLevel(arrays);
+}
+
+}  // namespace penumbra

@@ -1,0 +1,49 @@
+// The scene as arrays in the GPU's layouts, on the host (render/gpu_scene.h builds and uploads
+// them). Plain data: tools, tests and the two-level code (render/instance_arrays.h) use it without
+// the upload.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bvh/stats.h"
+#include "core/aabb.h"
+#include "render/env_table.h"
+#include "shared/types.h"
+
+namespace penumbra {
+
+// The host-side arrays, kept separate from the upload so tests and tools can use them on the CPU.
+struct SceneArrays {
+    std::vector<shader::BvhNode> nodes;
+    std::vector<shader::TriVerts> triVerts;      // leaf order; triangles and spheres (PN_TRI_SPHERE)
+    std::vector<shader::TriAttribs> triAttribs;  // leaf order
+    std::vector<shader::Material> materials;
+    // The unified light sampler's lights and light BVH (render/light_list.h).
+    std::vector<shader::LightRef> lightRefs;
+    std::vector<shader::LightNode> lightNodes;
+    std::uint32_t topLightCount = 0;
+    float envLuminance = 0;  // mean luminance of the environment over directions (intensity 1)
+    std::vector<shader::TextureInfo> textures;
+    std::vector<std::uint32_t> texels;  // RGBA8, one texel per word
+    std::vector<shader::PunctualLight> punctual;
+    std::vector<shader::SphereLight> sphereLights;
+    std::uint32_t sphereCount = 0;  // sphere slots among triVerts
+    // Two levels (render/instance_arrays.h), only when the scene has instances: nodes holds the
+    // world's flat BVH, then one bottom level per prototype, then (from topRoot) the top level.
+    std::vector<shader::Instance> instances;
+    std::vector<Aabb> instanceBounds;  // host only: each instance's bottom-level bounds, object space
+    std::uint32_t bottomNodeCount = 0;  // nodes before the top level
+    std::uint32_t topRoot = 0;
+    std::uint32_t uniqueMeshes = 0;     // bottom levels built for prototypes
+    // Host only (never uploaded, so traversal stays lean): for each primitive in leaf order, the
+    // scene object it came from, numbered as sceneObjectOf/objectPrimitive in scene_objects.h.
+    std::vector<std::uint32_t> primitiveObject;
+    EnvTable env;  // empty without an environment map
+    bvh::BvhStats stats{};
+    double buildMilliseconds = 0;
+    bool bvhFromCache = false;  // read from the BVH cache (buildMilliseconds then times the read)
+    double envBuildMilliseconds = 0;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,40 @@
+#include "scene/objects.h"
+
+#include "core/error.h"
+
+namespace penumbra {
+
+std::uint32_t sphereObject(const Scene& scene, std::size_t sphere) {
+    return static_cast<std::uint32_t>(scene.meshes.size() + sphere);
+}
+
+bool isObject(const Scene& scene, std::uint32_t object) {
+    return object != kNoObject && object < scene.meshes.size() + scene.spheres.size();
+}
+
+std::string objectName(const Scene& scene, std::uint32_t object) {
+    PN_CHECK(isObject(scene, object));
+    if (object < scene.meshes.size()) {
+        const std::string& name = scene.meshes[object].name;
+        return name.empty() ? "mesh " + std::to_string(object) : "mesh '" + name + "'";
+    }
+    return "sphere " + std::to_string(object - scene.meshes.size());
+}
+
+std::uint32_t objectMaterial(const Scene& scene, std::uint32_t object) {
+    PN_CHECK(isObject(scene, object));
+    if (object < scene.meshes.size()) return scene.meshes[object].material;
+    return scene.spheres[object - scene.meshes.size()].material;
+}
+
+void translateObject(Scene& scene, std::uint32_t object, Vec3 offset) {
+    PN_CHECK(isObject(scene, object));
+    if (object < scene.meshes.size()) {
+        for (Vec3& p : scene.meshes[object].positions) p = p + offset;
+    } else {
+        Sphere& s = scene.spheres[object - scene.meshes.size()];
+        s.center = s.center + offset;
+    }
+}
+
+}  // namespace penumbra

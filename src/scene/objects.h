@@ -1,0 +1,22 @@
+// The objects a viewer user can pick and edit: each mesh, then each of the scene's own spheres
+// (the spheres made for sphere lights are lights, not objects). Scene data only; picking them in
+// an image is render/scene_objects.h.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace penumbra {
+
+inline constexpr std::uint32_t kNoObject = 0xffffffffu;
+
+std::uint32_t sphereObject(const Scene& scene, std::size_t sphere);
+bool isObject(const Scene& scene, std::uint32_t object);
+std::string objectName(const Scene& scene, std::uint32_t object);  // "mesh 'floor'", "sphere 2"
+std::uint32_t objectMaterial(const Scene& scene, std::uint32_t object);
+// Moves a mesh's vertices or a sphere's centre by offset (the caller rebuilds the GPU scene).
+void translateObject(Scene& scene, std::uint32_t object, Vec3 offset);
+
+}  // namespace penumbra
