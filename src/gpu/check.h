@@ -4,15 +4,41 @@
 
 #include <vulkan/vulkan.h>
 
+#include <atomic>
+#include <cstdint>
+
+#include "core/error.h"
+
 namespace penumbra::gpu {
 
+// What PN_VK throws. A lost device or exhausted memory is one line for the user like any Error;
+// the result lets a caller that holds something worth keeping (a checkpoint) add to the message.
+class VulkanError : public Error {
+public:
+    VulkanError(const std::string& message, VkResult result) : Error(message), result(result) {}
+    VkResult result;
+};
+
 [[noreturn]] void throwVkError(const char* call, VkResult result, const char* file, int line);
+
+// Test hook (device loss and out-of-memory cannot be provoked on demand): after `afterCalls` more
+// PN_VK calls, every PN_VK call reports `result` instead of what the driver returned, as a lost
+// device keeps failing. VK_SUCCESS disarms it. PENUMBRA_TEST_VK_FAILURE=RESULT:N (for example
+// VK_ERROR_DEVICE_LOST:200) arms it for a whole process.
+void injectVkFailure(VkResult result, std::uint64_t afterCalls);
+
+namespace detail {
+extern std::atomic<bool> failureArmed;
+VkResult injectedResult(VkResult real);
+}  // namespace detail
 
 }  // namespace penumbra::gpu
 
 #define PN_VK(call)                                                                   \
     do {                                                                              \
         VkResult pn_vk_result_ = (call);                                              \
+        if (::penumbra::gpu::detail::failureArmed.load(std::memory_order_relaxed))    \
+            pn_vk_result_ = ::penumbra::gpu::detail::injectedResult(pn_vk_result_);   \
         if (pn_vk_result_ != VK_SUCCESS)                                              \
             ::penumbra::gpu::throwVkError(#call, pn_vk_result_, __FILE__, __LINE__);  \
     } while (0)
