@@ -57,12 +57,12 @@ namespace detail {
 
 std::atomic<bool> failureArmed{armFromEnvironment()};
 
-VkResult injectedResult(VkResult real) {
+VkResult injectedResult() {
     std::lock_guard lock(g_injectMutex);
-    if (g_injectResult == VK_SUCCESS) return real;
+    if (g_injectResult == VK_SUCCESS) return VK_SUCCESS;
     if (g_callsLeft > 0) {
         --g_callsLeft;
-        return real;
+        return VK_SUCCESS;
     }
     return g_injectResult;
 }
@@ -74,6 +74,11 @@ void injectVkFailure(VkResult result, std::uint64_t afterCalls) {
     g_injectResult = result;
     g_callsLeft = afterCalls;
     detail::failureArmed.store(result != VK_SUCCESS);
+}
+
+std::uint64_t injectVkFailureCallsLeft() {
+    std::lock_guard lock(g_injectMutex);
+    return g_callsLeft;
 }
 
 void throwVkError(const char* call, VkResult result, const char* file, int line) {

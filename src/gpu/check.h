@@ -22,23 +22,27 @@ public:
 [[noreturn]] void throwVkError(const char* call, VkResult result, const char* file, int line);
 
 // Test hook (device loss and out-of-memory cannot be provoked on demand): after `afterCalls` more
-// PN_VK calls, every PN_VK call reports `result` instead of what the driver returned, as a lost
-// device keeps failing. VK_SUCCESS disarms it. PENUMBRA_TEST_VK_FAILURE=RESULT:N (for example
+// PN_VK calls, every PN_VK call fails with `result` without reaching the driver, as a lost device
+// keeps failing. VK_SUCCESS disarms it. PENUMBRA_TEST_VK_FAILURE=RESULT:N (for example
 // VK_ERROR_DEVICE_LOST:200) arms it for a whole process.
 void injectVkFailure(VkResult result, std::uint64_t afterCalls);
+// How many calls are left before the armed failure (tests count a workload's calls this way).
+std::uint64_t injectVkFailureCallsLeft();
 
 namespace detail {
 extern std::atomic<bool> failureArmed;
-VkResult injectedResult(VkResult real);
+VkResult injectedResult();  // VK_SUCCESS: make the call
 }  // namespace detail
 
 }  // namespace penumbra::gpu
 
+// An injected failure replaces the call, as a real one would: nothing is created or submitted.
 #define PN_VK(call)                                                                   \
     do {                                                                              \
-        VkResult pn_vk_result_ = (call);                                              \
-        if (::penumbra::gpu::detail::failureArmed.load(std::memory_order_relaxed))    \
-            pn_vk_result_ = ::penumbra::gpu::detail::injectedResult(pn_vk_result_);   \
+        VkResult pn_vk_result_ = VK_SUCCESS;                                          \
+        if (!::penumbra::gpu::detail::failureArmed.load(std::memory_order_relaxed) || \
+            (pn_vk_result_ = ::penumbra::gpu::detail::injectedResult()) == VK_SUCCESS) \
+            pn_vk_result_ = (call);                                                   \
         if (pn_vk_result_ != VK_SUCCESS)                                              \
             ::penumbra::gpu::throwVkError(#call, pn_vk_result_, __FILE__, __LINE__);  \
     } while (0)

@@ -45,23 +45,33 @@ TEST_F(DeviceLossTest, OutOfMemoryAtAnyCallSaysWhatToShrink) {
     }
 }
 
-// The renderer is lost part-way through a render, at each of many points (every call of the
-// render); each time the Error reaches the caller and everything is torn down cleanly.
+// The renderer is lost part-way through a render, at every fifth of its calls from the first to
+// the last; each time the Error reaches the caller and everything is torn down cleanly.
 TEST_F(DeviceLossTest, ARendererLostAtAnyCallUnwindsWithoutCrashing) {
     const Scene scene = makeCornellBox();
     const RenderSettings settings = testSettings(8, 8, 4, 2);
-    for (std::uint64_t at : {0ull, 5ull, 20ull, 60ull, 120ull, 200ull}) {
+    auto renderOnce = [&] {
+        Renderer renderer(*ctx, scene, settings);
+        renderer.render();
+        (void)renderer.image();
+    };
+    std::uint64_t calls = 0;
+    {
+        InjectedFailure never(VK_ERROR_DEVICE_LOST, UINT64_MAX);  // counts down, never fails
+        renderOnce();
+        calls = UINT64_MAX - gpu::injectVkFailureCallsLeft();
+    }
+    ASSERT_GT(calls, 20u);
+    for (std::uint64_t at : {std::uint64_t(0), calls / 5, 2 * calls / 5, 3 * calls / 5, 4 * calls / 5, calls - 1}) {
         InjectedFailure lost(VK_ERROR_DEVICE_LOST, at);
         bool threw = false;
         try {
-            Renderer renderer(*ctx, scene, settings);
-            renderer.render();
-            (void)renderer.image();
+            renderOnce();
         } catch (const gpu::VulkanError& e) {
             threw = true;
             EXPECT_EQ(e.result, VK_ERROR_DEVICE_LOST) << e.what();
         }
-        EXPECT_TRUE(threw) << "lost after " << at << " calls, yet the render finished";
+        EXPECT_TRUE(threw) << "lost after " << at << " of " << calls << " calls, yet the render finished";
     }
 }
 
