@@ -229,7 +229,7 @@ void tracePixel(uvec2 pixel, uint pixelIndex) {
 }
 
 void main() {
-    uvec2 pixel = gl_GlobalInvocationID.xy;
+    uvec2 pixel = gl_GlobalInvocationID.xy + uvec2(push.tileX, push.tileY);
     // Adaptive sampling (render/adaptive.h): a pixel whose mask entry is 0 takes no samples this
     // pass. Whole tiles share an entry, so the threads of a workgroup mostly agree and skip together.
     bool sampled = pixel.x < frame.width && pixel.y < frame.height;

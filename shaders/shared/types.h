@@ -437,12 +437,16 @@ PN_STRUCT(HeatCounters) {
     uint maxLeafTris;
 };
 
-// Per-dispatch constants, 16 bytes.
+// Per-dispatch constants, 32 bytes.
 PN_STRUCT(PassPush) {
     uint passIndex;      // which progressive pass this is; with seed it decorrelates samples
     uint mode;           // pass-specific (raybench mode, test kernel mode)
     uint itemCount;      // pass-specific (rays in a test batch)
     uint countRays;      // nonzero: add traced rays to the counters buffer
+    uint tileX;          // trace.comp: the first pixel of this dispatch; a long pass is split into
+    uint tileY;          //   tiles so no dispatch trips a display watchdog (render/passes/trace_tiles.h)
+    uint pad0;
+    uint pad1;
 };
 
 // Counters written by the trace pass: rays only when PassPush.countRays is set.
@@ -544,7 +548,8 @@ static_assert(sizeof(SphereLight) == 64 && offsetof(SphereLight, radius) == 12 &
               offsetof(SphereLight, spotDirection) == 32 && offsetof(SphereLight, cosOuter) == 44 &&
               offsetof(SphereLight, cosInner) == 48 &&
               offsetof(SphereLight, primitive) == 56);
-static_assert(sizeof(PassPush) == 16 && offsetof(PassPush, countRays) == 12);
+static_assert(sizeof(PassPush) == 32 && offsetof(PassPush, countRays) == 12 && offsetof(PassPush, tileX) == 16 &&
+              offsetof(PassPush, tileY) == 20);
 static_assert(sizeof(RayCounters) == 16);
 static_assert(sizeof(RayDesc) == 32 && offsetof(RayDesc, tMax) == 12 && offsetof(RayDesc, direction) == 16);
 static_assert(sizeof(HitRecord) == 16 && offsetof(HitRecord, v) == 12);

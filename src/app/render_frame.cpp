@@ -7,6 +7,7 @@
 #include "app/render_outputs.h"
 #include "core/interrupt.h"
 #include "core/progress.h"
+#include "gpu/check.h"
 #include "render/checkpoint.h"
 #include "render/final_passes.h"
 
@@ -31,6 +32,18 @@ void writeCheckpointFiles(const std::filesystem::path& output, const FrameJob& j
                           output.string() + " and the state in " + state + "; run the same command with --resume '" +
                           resume + "' to finish",
                       128 + signal);
+}
+
+// A lost device or exhausted memory ends the render like any Error; when a checkpoint exists
+// (written atomically, so a failure mid-write leaves the one before), the line says how to go on.
+[[noreturn]] void throwVulkanFailure(const gpu::VulkanError& e, const std::filesystem::path& output,
+                                     const FrameJob& job) {
+    std::error_code ec;
+    const std::filesystem::path state = statePathFor(output);
+    if (!std::filesystem::exists(state, ec)) throw;
+    const std::string resume = job.resumeArgument.empty() ? state.string() : job.resumeArgument;
+    throw Error(std::string(e.what()) + "; the last checkpoint is intact: run the same command with --resume '" +
+                resume + "' to continue from it");
 }
 
 void removeState(const std::filesystem::path& output) {
@@ -65,7 +78,11 @@ FrameOutcome renderFrame(const gpu::Context& ctx, const Scene& scene, const Fram
     budget.onProgress = [&](std::uint32_t spp, double secondsLeft) { progress.update(spp, secondsLeft); };
     const auto start = Clock::now();
     FrameOutcome outcome;
-    outcome.reason = render.run(budget);
+    try {
+        outcome.reason = render.run(budget);
+    } catch (const gpu::VulkanError& e) {
+        throwVulkanFailure(e, output, job);
+    }
     outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     outcome.samplesPerPixel = render.samplesPerPixel();
     progress.update(outcome.samplesPerPixel, 0);

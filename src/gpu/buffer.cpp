@@ -5,11 +5,17 @@
 #include "core/error.h"
 #include "gpu/check.h"
 #include "gpu/commands.h"
+#include "gpu/limits.h"
 
 namespace penumbra::gpu {
 
 Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryKind kind) {
     size_ = std::max<VkDeviceSize>(16, (size + 15) / 16 * 16);
+    // Shaders bind whole buffers: a storage buffer past the device's range would be refused by
+    // validation, or silently cut short without it.
+    if (usage & VK_BUFFER_USAGE_STORAGE_BUFFER_BIT)
+        checkStorageBufferFits(ctx, size_, "a storage buffer",
+                               "render a smaller image (--width/--height) or scene, or pick another device (--device)");
     VkDevice device = ctx.device();
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = size_;

@@ -25,7 +25,14 @@ Commands::Commands(const Context& ctx) : ctx_(ctx) {
     fence_ = Fence(device, fence);
 }
 
-Commands::~Commands() = default;  // the pool frees its command buffer
+Commands::~Commands() {
+    // A submission abandoned by an exception (a failed wait) may still run: wait before the pool
+    // and fence go. A lost device answers at once; the result changes nothing here.
+    if (inFlight_) {
+        VkFence fence = fence_.get();
+        vkWaitForFences(ctx_.device(), 1, &fence, VK_TRUE, UINT64_MAX);
+    }
+}  // the pool frees its command buffer
 
 void Commands::run(const std::function<void(VkCommandBuffer)>& record) {
     PN_VK(vkResetCommandBuffer(cmd_, 0));
@@ -41,7 +48,9 @@ void Commands::run(const std::function<void(VkCommandBuffer)>& record) {
     VkFence fence = fence_.get();
     PN_VK(vkResetFences(ctx_.device(), 1, &fence));
     PN_VK(vkQueueSubmit(ctx_.queue(), 1, &submit, fence));
+    inFlight_ = true;
     PN_VK(vkWaitForFences(ctx_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+    inFlight_ = false;
 }
 
 void computeBarrier(VkCommandBuffer cmd) {

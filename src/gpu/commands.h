@@ -23,6 +23,7 @@ private:
     CommandPool pool_;
     Fence fence_;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+    bool inFlight_ = false;  // submitted, not yet waited for
 };
 
 // Makes compute-shader and transfer writes visible to later compute shaders and transfers.

@@ -17,6 +17,7 @@
 #include "render/env_table.h"
 #include "render/instance_arrays.h"
 #include "render/light_list.h"
+#include "render/scene_limits.h"
 #include "render/sphere_lights.h"
 #include "scene/environment.h"
 #include "scene/objects.h"
@@ -290,7 +291,8 @@ std::size_t deviceBytes(const SceneArrays& a) {
 }
 
 GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& a)
-    : nodes(gpu::uploadStorageBuffer<shader::BvhNode>(ctx, commands, a.nodes)),
+    // The device's limits are checked before the first buffer is made (render/scene_limits.h).
+    : nodes((checkSceneFitsDevice(ctx, a), gpu::uploadStorageBuffer<shader::BvhNode>(ctx, commands, a.nodes))),
       triVerts(gpu::uploadStorageBuffer<shader::TriVerts>(ctx, commands, a.triVerts)),
       triAttribs(gpu::uploadStorageBuffer<shader::TriAttribs>(ctx, commands, a.triAttribs)),
       materials(gpu::uploadStorageBuffer<shader::Material>(ctx, commands, a.materials)),

@@ -275,7 +275,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
         timer_.end(cmd, std::uint32_t(pass));
         recorded_ |= 1u << std::uint32_t(pass);
     };
-    timed(ViewerPass::Trace, [&] { trace_->record(cmd, width_, height_, tracedFrames_++, true); });
+    timed(ViewerPass::Trace, [&] { trace_->record(cmd, width_, height_, s.samplesPerFrame, tracedFrames_++, true); });
     timed(ViewerPass::GBuffer, [&] { gbufferPass_->record(cmd, width_, height_); });
     if (heat) timed(ViewerPass::Heatmap, [&] { heatmap_->record(cmd, width_, height_); });
     gpu::computeBarrier(cmd);

@@ -37,8 +37,11 @@ std::string kernelFeatureNames(std::uint32_t features) {
         {PN_FEATURE_ENV_MAP, "environment-map"}, {PN_FEATURE_BRUTE_FORCE, "brute-force"},
         {PN_FEATURE_SPRITES, "sprites"},         {PN_FEATURE_SKY_PORTALS, "sky-portals"}};
     std::string out;
-    for (auto [bit, name] : kNames)
-        if (features & bit) out += (out.empty() ? "" : ",") + std::string(name);
+    for (auto [bit, name] : kNames) {
+        if (!(features & bit)) continue;
+        if (!out.empty()) out += ',';  // appended, not `"," + name`: GCC 12 -Wrestrict misfires on that
+        out += name;
+    }
     return out.empty() ? "none" : out;
 }
 

@@ -26,6 +26,8 @@ struct RenderSettings {
     // oracle that tests compare the light sampler with (same mean, more noise).
     bool uniformLightPick = false;
     float time = 0.0f;  // seconds: the moment animated textures show (render --time)
+    // Paths per trace dispatch (render/passes/trace_tiles.h); 0: the device's default.
+    std::uint64_t pathsPerDispatch = 0;
 };
 
 // Limits that keep absurd requests from allocating unbounded memory or running forever.

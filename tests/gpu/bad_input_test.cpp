@@ -259,8 +259,9 @@ TEST_F(BadInputTest, EveryMalformedFileIsOneLineExitOneNoOutputInBoundedMemory) 
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
         for (const char* internal : {"std::", "bad_alloc", "basic_string", "out of memory"})
             EXPECT_EQ(r.err.find(internal), std::string::npos) << "an internal message, not what is wrong: " << r.err;
-        if (c.contents == kDirectory)
+        if (c.contents == kDirectory) {
             EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << "a folder is not a missing file: " << r.err;
+        }
         EXPECT_FALSE(fs::exists(dir / "out.png"));
         EXPECT_EQ(filesIn(dir).size(), before) << "a file was left behind";
         fs::remove_all(work);

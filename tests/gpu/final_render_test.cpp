@@ -111,7 +111,9 @@ TEST_F(GpuTest, CheckpointsComeDuringTheRenderNeverAfterIt) {
     ASSERT_FALSE(at.empty());
     for (std::size_t i = 0; i < at.size(); ++i) {
         EXPECT_LT(at[i], 24u);
-        if (i > 0) EXPECT_GT(at[i], at[i - 1]);
+        if (i > 0) {
+            EXPECT_GT(at[i], at[i - 1]);
+        }
     }
 }
 

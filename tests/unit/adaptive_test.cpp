@@ -118,7 +118,9 @@ TEST(AdaptiveSampling, FlatPixelsStopEarlyAndStayExact) {
     for (std::size_t i = 0; i < r.sums.pixelCount(); ++i) {
         (noisy(i) ? noisyTaken : flatTaken) += r.sums.samplesTaken(i);
         // A zero-variance pixel's control mean is exact: skipping it adds no error at all.
-        if (!noisy(i)) EXPECT_NEAR(image.pixels[i].x, kTrueMean, 1e-6) << i;
+        if (!noisy(i)) {
+            EXPECT_NEAR(image.pixels[i].x, kTrueMean, 1e-6) << i;
+        }
         EXPECT_GE(r.sums.samplesTaken(i), a.minSamples) << i;
     }
     const double half = double(kW / 2 * kH);

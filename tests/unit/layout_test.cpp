@@ -100,7 +100,8 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                                            offsetof(SphereLight, cosOuter), offsetof(SphereLight, cosInner),
                                            offsetof(SphereLight, pad3), offsetof(SphereLight, primitive),
                                            offsetof(SphereLight, pad0)});
-        expectMembers(spv, "PassPush", {0, 4, 8, offsetof(PassPush, countRays)});
+        expectMembers(spv, "PassPush", {0, 4, 8, offsetof(PassPush, countRays), offsetof(PassPush, tileX),
+                                        offsetof(PassPush, tileY), 24, 28});
         expectMembers(spv, "RayCounters", {0, 4, offsetof(RayCounters, invalidSamples), 12});
         expectMembers(spv, "RayDesc", {0, offsetof(RayDesc, tMax), offsetof(RayDesc, direction), 28});
         expectMembers(spv, "HitRecord", {0, offsetof(HitRecord, triangle), 8, offsetof(HitRecord, v)});

@@ -76,7 +76,9 @@ void checkSubtree(const LightTree& t, std::uint32_t base, std::uint32_t index, s
         }
         const float thetaN = std::acos(std::clamp(n.cosThetaO, -1.0f, 1.0f));
         const float thetaC = std::acos(std::clamp(c.cosThetaO, -1.0f, 1.0f));
-        if (n.cosThetaO > -1.0f) EXPECT_LE(angleBetween(n.axis, c.axis) + thetaC, thetaN + 1e-3f);
+        if (n.cosThetaO > -1.0f) {
+            EXPECT_LE(angleBetween(n.axis, c.axis) + thetaC, thetaN + 1e-3f);
+        }
         checkSubtree(t, base, child, depth + 1, walk);
     }
     EXPECT_NEAR(n.phi, t.nodes[index + 1 - base].phi + t.nodes[n.childOrLight - base].phi, 1e-4f * n.phi);

@@ -21,12 +21,18 @@ public:
     const gpu::ComputePipeline& pipeline() const { return *pipeline_; }
 
     // masked: pixels whose mask entry is 0 take no samples (needs the constructor's activeMask).
-    void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, std::uint32_t passIndex,
-                bool countRays, bool masked = false) const;
+    // One dispatch per tile of at most pathBudget() paths (render/passes/trace_tiles.h).
+    void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, std::uint32_t samplesPerPass,
+                std::uint32_t passIndex, bool countRays, bool masked = false) const;
+
+    // Paths per dispatch: by device type unless set (0 puts the device's default back).
+    std::uint64_t pathBudget() const { return pathBudget_; }
+    void setPathBudget(std::uint64_t paths);
 
 private:
     gpu::Buffer placeholderMask_;
     bool hasMask_;
+    std::uint64_t defaultBudget_, pathBudget_;
     std::unique_ptr<gpu::ComputePipeline> pipeline_;
 };
 

@@ -250,7 +250,9 @@ TEST(WadAnimation, ACycleBringsItsFramesConsecutively) {
     bilinear.filter = Filter::Linear;
     for (const Material& m :
          loadWadFromMemory(animatedWad(), "E1M1", "anim.wad", bilinear).materials)
-        if (m.albedoTexture.present()) EXPECT_EQ(m.albedoTexture.filter, Filter::Linear) << m.name;
+        if (m.albedoTexture.present()) {
+            EXPECT_EQ(m.albedoTexture.filter, Filter::Linear) << m.name;
+        }
 }
 
 // The clock the shaders pick frames with and the viewer restarts its mean by: whole frames shown

@@ -1,0 +1,47 @@
+// Issue 12 as a user meets it: a scene too large for the device is refused before anything is
+// allocated, and a device lost part-way through a render ends with one line that points at the
+// last checkpoint, which is intact (the state files are written atomically).
+#include <regex>
+
+#include "cli_fixture.h"
+
+namespace penumbra::test {
+namespace {
+
+TEST_F(CliTest, ASceneLargerThanTheDeviceAllowsIsRefusedWithWhatToDo) {
+    const RunResult r = run("render cornell --width 8 --height 8 --spp 1 -o a.png", "PENUMBRA_TEST_MAX_STORAGE_BUFFER=1024");
+    expectOneLineError(r, 1, "maxStorageBufferRange 1.0 KiB");
+    EXPECT_NE(r.err.find("use a smaller scene"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "a.png"));
+}
+
+TEST_F(CliTest, ADeviceLostMidRenderLeavesTheLastCheckpointIntact) {
+    // Checkpoints after every submission; the device is lost after 3000 checked calls, well past
+    // the start-up (about 250) and the first checkpoints.
+    const RunResult lost = run("render cornell --width 8 --height 8 --seed 5 --spp 1000000 --checkpoint 0.001 -o a.exr",
+                               "PENUMBRA_TEST_VK_FAILURE=VK_ERROR_DEVICE_LOST:3000");
+    expectOneLineError(lost, 1, "VK_ERROR_DEVICE_LOST");
+    EXPECT_NE(lost.err.find("the last checkpoint is intact"), std::string::npos) << lost.err;
+    EXPECT_NE(lost.err.find("--resume 'a.exr.state'"), std::string::npos) << lost.err;
+    ASSERT_TRUE(fs::exists(dir / "a.exr.state"));
+
+    // The state reads back (its checksum holds) and the render continues from it.
+    const RunResult resumed = run("render cornell --width 8 --height 8 --seed 5 --spp 1 -o a.exr --resume a.exr.state");
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(resumed.err, m, std::regex("resuming a.exr.state at ([0-9]+) spp"))) << resumed.err;
+    EXPECT_GT(std::stoi(m[1]), 0);
+    EXPECT_TRUE(fs::exists(dir / "a.exr"));
+}
+
+TEST_F(CliTest, ADeviceLostWithoutCheckpointsIsOneLineAndNoImage) {
+    // Lost after 300 calls: past the start-up, during the passes of this 64-spp render.
+    const RunResult lost = run("render cornell --width 8 --height 8 --spp 64 -o a.png",
+                               "PENUMBRA_TEST_VK_FAILURE=VK_ERROR_DEVICE_LOST:300");
+    expectOneLineError(lost, 1, "the GPU was lost");
+    EXPECT_FALSE(fs::exists(dir / "a.png"));
+    EXPECT_FALSE(fs::exists(dir / "a.png.state"));
+}
+
+}  // namespace
+}  // namespace penumbra::test
