@@ -60,7 +60,7 @@ vec3 toInstanceVector(uint instance, vec3 v) {
 Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
     Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0, PN_NO_HIT);
     if (frame.nodeCount == 0u) return hit;
-    bool twoLevel = frame.instanceCount != 0u;
+    bool twoLevel = PN_HAS(PN_FEATURE_INSTANCES) && frame.instanceCount != 0u;
     uint current = twoLevel ? frame.topRoot : 0u;
     vec3 o = worldO, d = worldD;
     vec3 invD = safeInverse(d);
@@ -107,7 +107,7 @@ Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
                 continue;
             }
         }
-        if (instance != PN_NO_HIT && depth == instanceDepth) {
+        if (PN_HAS(PN_FEATURE_INSTANCES) && instance != PN_NO_HIT && depth == instanceDepth) {
             instance = PN_NO_HIT;
             o = worldO;
             d = worldD;

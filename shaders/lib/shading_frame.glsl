@@ -36,7 +36,7 @@ vec3 normalMapped(Material m, uint triangle, uint instance, vec2 uv, vec3 front)
     if (abs(det) < 1e-12) return front;
     vec3 dpdu = (tv.e1 * duv2.y - tv.e2 * duv1.y) / det;
     vec3 dpdv = (tv.e2 * duv1.x - tv.e1 * duv2.x) / det;
-    if (instance != PN_NO_HIT) {
+    if (PN_HAS(PN_FEATURE_INSTANCES) && instance != PN_NO_HIT) {
         dpdu = instanceVectorToWorld(instance, dpdu);
         dpdv = instanceVectorToWorld(instance, dpdv);
     }

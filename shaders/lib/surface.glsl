@@ -50,7 +50,7 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     s.position = o + hit.t * d;
     vec3 ng = normalize(cross(tv.e1, tv.e2));
     vec3 ns = normalize((1.0 - hit.u - hit.v) * ta.n0 + hit.u * ta.n1 + hit.v * ta.n2);
-    if (hit.instance != PN_NO_HIT) {
+    if (PN_HAS(PN_FEATURE_INSTANCES) && hit.instance != PN_NO_HIT) {
         ng = instanceNormalToWorld(hit.instance, ng);
         ns = instanceNormalToWorld(hit.instance, ns);
     }

@@ -67,7 +67,8 @@ using namespace penumbra::gpu_types;
 #define PN_FEATURE_BRUTE_FORCE 128u // --accel brute
 #define PN_FEATURE_SPRITES 256u     // sprites (PN_TRI_SPRITE) among the primitives
 #define PN_FEATURE_SKY_PORTALS 512u // materials that show the environment (PN_MATERIAL_SKY_PORTAL)
-#define PN_FEATURE_ALL 0x3ffu    // every feature above
+#define PN_FEATURE_INSTANCES 1024u // a two-level BVH (instances); without it the flat walk carries none of that code
+#define PN_FEATURE_ALL 0x7ffu    // every feature above
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic

@@ -120,7 +120,9 @@ TEST(Instances, TheWorldAsOneIdentityInstanceChangesNoHit) {
     for (const Ray& ray : roomRays(2000, 4)) {
         const bvh::Hit a = bvh::closestHit(flat.nodes, flat.triVerts, ray), b = bvh::closestHit(view(two), ray);
         ASSERT_EQ(a.triangle == PN_NO_HIT, b.triangle == PN_NO_HIT);
-        if (a.triangle != PN_NO_HIT) EXPECT_EQ(a.t, b.t);
+        if (a.triangle != PN_NO_HIT) {
+            EXPECT_EQ(a.t, b.t);
+        }
     }
 }
 

@@ -230,12 +230,12 @@ void placeInstances(const Reader& r, const Json& a, const std::string& where, Sc
         if (own < prototypes.size()) scene.instances.push_back({prototypeBase + own, placed});
         const auto innerBase = static_cast<std::uint32_t>(scene.instances.size());
         for (const Instance& k : inner) scene.instances.push_back({prototypeBase + k.prototype, placed * k.transform});
-        for (InstanceAnimation a : innerAnimations) {  // each copy keeps moving, under its placement
-            a.instance += innerBase;
+        for (InstanceAnimation moving : innerAnimations) {  // each copy keeps moving, under its placement
+            moving.instance += innerBase;
             NodeMotion placement;
             placement.fixed = placed;
-            a.chain.insert(a.chain.begin(), placement);
-            scene.instanceAnimations.push_back(std::move(a));
+            moving.chain.insert(moving.chain.begin(), placement);
+            scene.instanceAnimations.push_back(std::move(moving));
         }
     }
 }

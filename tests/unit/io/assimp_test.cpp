@@ -216,11 +216,11 @@ INSTANTIATE_TEST_SUITE_P(
                       Model{"DXF/wuson.dxf", 1000}, Model{"MD2/faerie.md2", 100}, Model{"MD5/SimpleCube.md5mesh", 12},
                       Model{"SMD/triangle.smd", 1}, Model{"NFF/NFF/cylinder.nff", 10},
                       Model{"OpenGEX/Example.ogex", 1}),
-    [](const auto& info) {
-        std::string name = std::filesystem::path(info.param.path).stem().string();
+    [](const auto& model) {
+        std::string name = std::filesystem::path(model.param.path).stem().string();
         for (char& c : name)
             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-        return name + "_" + std::filesystem::path(info.param.path).extension().string().substr(1);
+        return name + "_" + std::filesystem::path(model.param.path).extension().string().substr(1);
     });
 
 TEST(AssimpTestModels, TextAndBinaryEncodingsAgree) {

@@ -96,8 +96,12 @@ TEST(ExrCompression, DwaEnvironmentMapMatchesTheUncompressedOne) {
         const double meanRelative = sumRelative / double(map.radiance.size() * 3);
         EXPECT_LT(meanRelative, 0.01) << "mean relative error";
         EXPECT_LT(maxRelative, 0.1) << "largest relative error";
-        if (compression == Imf::PIZ_COMPRESSION) EXPECT_EQ(maxRelative, 0.0) << "PIZ is lossless";
-        if (compression == Imf::DWAB_COMPRESSION) EXPECT_GT(maxRelative, 0.0) << "the file was not DWA compressed";
+        if (compression == Imf::PIZ_COMPRESSION) {
+            EXPECT_EQ(maxRelative, 0.0) << "PIZ is lossless";
+        }
+        if (compression == Imf::DWAB_COMPRESSION) {
+            EXPECT_GT(maxRelative, 0.0) << "the file was not DWA compressed";
+        }
     }
     fs::remove_all(dir);
 }
