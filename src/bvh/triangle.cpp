@@ -20,6 +20,20 @@ shader::TriVerts toTriVerts(const Triangle& tri) {
     return out;
 }
 
+shader::TriAttribs toTriAttribs(const SceneTriangle& t) {
+    shader::TriAttribs a{};
+    a.n0 = t.n[0];
+    a.n1 = t.n[1];
+    a.n2 = t.n[2];
+    a.uv0 = t.uv[0];
+    a.uv1 = t.uv[1];
+    a.uv2 = t.uv[2];
+    a.materialId = t.material;
+    a.lightIndex = PN_NO_LIGHT;
+    a.area = 0.5f * length(cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
+    return a;
+}
+
 std::vector<Triangle> trianglesOf(std::span<const SceneTriangle> sceneTriangles) {
     std::vector<Triangle> out;
     out.reserve(sceneTriangles.size());

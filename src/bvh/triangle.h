@@ -23,6 +23,10 @@ Aabb bounds(const Triangle& tri);
 // Edges are precomputed so that traversal on either side of the bus does no subtraction per test.
 shader::TriVerts toTriVerts(const Triangle& tri);
 
+// The cold per-triangle data shading reads (normals, uvs, material, area; not a light: lightIndex
+// is PN_NO_LIGHT until the light list claims it), in the space of t's positions.
+shader::TriAttribs toTriAttribs(const SceneTriangle& t);
+
 // Positions only: the BVH needs nothing else from the scene.
 std::vector<Triangle> trianglesOf(std::span<const SceneTriangle> sceneTriangles);
 

@@ -221,15 +221,7 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
         out.primitiveObject[i] = triangleMesh[tree.primOrder[i]];
         out.triVerts[i] = bvh::toTriVerts(geometry[tree.primOrder[i]]);
         shader::TriAttribs& a = out.triAttribs[i];
-        a = {};
-        a.n0 = t.n[0];
-        a.n1 = t.n[1];
-        a.n2 = t.n[2];
-        a.uv0 = t.uv[0];
-        a.uv1 = t.uv[1];
-        a.uv2 = t.uv[2];
-        a.materialId = t.material;
-        a.area = 0.5f * length(cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
+        a = bvh::toTriAttribs(t);
         const Material& m = scene.materials[t.material];
         if (m.isEmissive() && m.lightSampled && a.area > 0) {
             // Emission textures scale the light by their mean (over an animation's frames): the

@@ -34,16 +34,8 @@ BottomLevel appendPrototype(const Prototype& prototype, SceneArrays& out, const 
     for (std::uint32_t original : tree.primOrder) {
         const SceneTriangle& t = tris[original];
         out.triVerts.push_back(bvh::toTriVerts(geometry[original]));
-        shader::TriAttribs a{};
-        a.n0 = t.n[0];
-        a.n1 = t.n[1];
-        a.n2 = t.n[2];
-        a.uv0 = t.uv[0];
-        a.uv1 = t.uv[1];
-        a.uv2 = t.uv[2];
-        a.materialId = t.material;
-        a.lightIndex = PN_NO_LIGHT;  // emissive prototypes are baked into the world (scene/instances.h)
-        a.area = 0.5f * length(cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));  // object space
+        // Object space; never a light: emissive prototypes are baked into the world (scene/instances.h).
+        shader::TriAttribs a = bvh::toTriAttribs(t);
         out.triAttribs.push_back(a);
         out.primitiveObject.push_back(kNoObject);
     }

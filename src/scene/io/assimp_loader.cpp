@@ -256,15 +256,7 @@ std::string assimpExtensions() {
 }
 
 Scene loadAssimp(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw Error("cannot open '" + path.string() + "': " +
-                    (std::filesystem::exists(path, ec) ? "it is not a regular file" : "no such file"));
-    const auto size = std::filesystem::file_size(path, ec);
-    if (ec) throw Error("cannot read '" + path.string() + "': " + ec.message());
-    if (size > kMaxModelBytes)
-        throw Error("'" + path.string() + "' is " + std::to_string(size) + " bytes, more than the " +
-                    std::to_string(kMaxModelBytes) + " this importer reads");
+    const auto size = checkedFileSize(path, kMaxModelBytes);
     if (size == 0) throw Error("'" + path.string() + "' is empty");
     std::string ext = path.extension().string();
     for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));

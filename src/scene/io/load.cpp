@@ -39,7 +39,7 @@ std::string sceneFileExtensions() {
     return ".obj, .ply, .ply.gz, .gltf, .glb, .wad, .json or (through Assimp) " + assimpExtensions();
 }
 
-std::string readFileBytes(const std::filesystem::path& path, std::size_t maxBytes) {
+std::uintmax_t checkedFileSize(const std::filesystem::path& path, std::uintmax_t maxBytes) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error("cannot open '" + path.string() + "': " +
@@ -49,6 +49,11 @@ std::string readFileBytes(const std::filesystem::path& path, std::size_t maxByte
     if (size > maxBytes)
         throw Error("'" + path.string() + "' is " + std::to_string(size) + " bytes, more than the " +
                     std::to_string(maxBytes) + " this format allows");
+    return size;
+}
+
+std::string readFileBytes(const std::filesystem::path& path, std::size_t maxBytes) {
+    const auto size = static_cast<std::size_t>(checkedFileSize(path, maxBytes));
     std::ifstream in(path, std::ios::binary);
     std::string bytes(size, '\0');
     if (!in.read(bytes.data(), std::streamsize(size))) throw Error("cannot read '" + path.string() + "'");

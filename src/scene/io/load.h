@@ -1,6 +1,7 @@
 // Opening scene files: the format is chosen by extension and checked against the content.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -26,5 +27,9 @@ Scene loadSceneByName(const std::string& nameOrPath, const LoadOptions& options 
 
 // Reads a whole file, refusing files over `maxBytes` (so hostile inputs cannot exhaust memory).
 std::string readFileBytes(const std::filesystem::path& path, std::size_t maxBytes = std::size_t(2) << 30);
+
+// The size of a regular file of at most maxBytes; one clear error otherwise (missing, not a
+// regular file, unreadable, too large).
+std::uintmax_t checkedFileSize(const std::filesystem::path& path, std::uintmax_t maxBytes);
 
 }  // namespace penumbra
