@@ -3,7 +3,9 @@
 // (the fixture fails on any message). Afterwards nothing has grown (live Vulkan objects exactly;
 // descriptors, threads and memory within noise) and nothing has drifted: a still camera's running
 // mean agrees with the one it gave at the start, within the sampling error both carry.
-// PENUMBRA_SOAK_FRAMES sets the frame count (default 1000).
+// Opt-in: it runs only when PENUMBRA_SOAK_FRAMES sets the frame count (thousands for a real soak).
+// On lavapipe on 2 cores even 300 frames took more than four minutes, too long for every run of
+// the suite (issue 12 is open for making it fast enough to run always).
 #include <cmath>
 
 #include "gpu/buffer.h"
@@ -17,6 +19,7 @@ namespace penumbra::test {
 namespace {
 
 constexpr std::uint32_t kW = 8, kH = 6;
+constexpr std::uint32_t kStillFrames = 64;  // per still-camera mean, before and after the soak
 
 void drawFrame(InteractiveRenderer& viewer, const Camera& camera, const ViewSettings& view) {
     viewer.commands().run([&](VkCommandBuffer cmd) { viewer.record(cmd, camera, view); });
@@ -48,13 +51,15 @@ MeanWithError stillMean(const gpu::Context& ctx, InteractiveRenderer& viewer, co
 using ViewerSoakTest = GpuTest;
 
 TEST_F(ViewerSoakTest, ThousandsOfMovingFramesAndAReloadLeaveNothingBehindAndNoDrift) {
-    const int frames = std::max(400, envInt("PENUMBRA_SOAK_FRAMES", 1000));
+    const int frames = envInt("PENUMBRA_SOAK_FRAMES", 0);
+    if (frames <= 0) GTEST_SKIP() << "the soak runs only with PENUMBRA_SOAK_FRAMES=N (N frames, e.g. 5000)";
+    ASSERT_GE(frames, 200) << "PENUMBRA_SOAK_FRAMES below 200 leaves too few frames after the warm-up";
     const int warmup = 100;
     const Scene scene = makeCornellBox();
     InteractiveRenderer viewer(*ctx, scene, false);
     viewer.resize(kW, kH);
     const ViewSettings view;
-    const MeanWithError before = stillMean(*ctx, viewer, scene.camera, view, 256);
+    const MeanWithError before = stillMean(*ctx, viewer, scene.camera, view, kStillFrames);
     ASSERT_GT(before.mean, 0.0);
 
     ProcessResources warm{};
@@ -74,7 +79,7 @@ TEST_F(ViewerSoakTest, ThousandsOfMovingFramesAndAReloadLeaveNothingBehindAndNoD
     expectSameObjects(warmTally, lastTally, "soak frames");
     expectNoGrowth(warm, last, frames - warmup, "soak frames");
 
-    const MeanWithError after = stillMean(*ctx, viewer, scene.camera, view, 256);
+    const MeanWithError after = stillMean(*ctx, viewer, scene.camera, view, kStillFrames);
     const double sigma = std::sqrt(before.stderr * before.stderr + after.stderr * after.stderr);
     // 5 sigma: a false alarm about once in 3.5 million runs.
     EXPECT_NEAR(after.mean, before.mean, 5 * sigma) << "the still image drifted over " << frames << " frames";
