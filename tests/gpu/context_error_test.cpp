@@ -2,28 +2,12 @@
 // refused another, and the tests skipped with "no Vulkan driver could be loaded; install a GPU
 // driver", though the driver had worked all along.
 #include <cstdlib>
-#include <optional>
 
 #include "gpu_fixture.h"
+#include "scoped_env.h"
 
 namespace penumbra::test {
 namespace {
-
-// Sets an environment variable for a scope, then puts back what was there.
-class ScopedEnv {
-public:
-    ScopedEnv(const char* name, const char* value) : name_(name) {
-        if (const char* old = std::getenv(name)) old_ = old;
-        ::setenv(name, value, 1);
-    }
-    ~ScopedEnv() { old_ ? ::setenv(name_, old_->c_str(), 1) : ::unsetenv(name_); }
-    ScopedEnv(const ScopedEnv&) = delete;
-    ScopedEnv& operator=(const ScopedEnv&) = delete;
-
-private:
-    const char* name_;
-    std::optional<std::string> old_;
-};
 
 TEST(ContextErrorTest, ADriverThatWorkedEarlierInTheProcessIsNotCalledMissing) {
     TestContext first = openTestContext();
