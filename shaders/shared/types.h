@@ -20,6 +20,9 @@ using namespace penumbra::gpu_types;
 #define PN_LINEAR_GROUP 64
 #define PN_BVH_STACK_SIZE 64  // traversal stack entries; > PN_BVH_MAX_DEPTH, which the builder guarantees
 #define PN_BVH_MAX_DEPTH 60
+#define PN_WAVE_GROUP 64        // threads per workgroup of the wavefront kernels (one path slot each)
+#define PN_WAVE_PATH_VEC4S 7    // vec4 fields of a path's state in the wavefront buffers (wave_state.glsl)
+#define PN_WAVE_SHADOW_VEC4S 3  // vec4 fields of a queued shadow ray
 
 // ---- binding indices of the scene descriptor set (set 0) ----
 #define PN_BINDING_NODES 0
@@ -53,6 +56,12 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
 #define PN_BINDING_ACTIVE_MASK 29    // uint per pixel: 0 skips the pixel in trace.comp when PN_TRACE_MASKED is set
 #define PN_BINDING_INSTANCES 30      // Instance per placed bottom level (two-level scenes; see FrameUniforms.instanceCount)
+// The wavefront trace pass's working buffers (render/passes/wavefront_pass.h, shaders/wave_*.comp).
+#define PN_BINDING_WAVE_PATHS 31    // vec4 x PN_WAVE_PATH_VEC4S per path slot, field-major (stride PassPush.waveStride)
+#define PN_BINDING_WAVE_HITS 32     // uvec4 per slot (t, primitive, u, v), then uint per slot (instance)
+#define PN_BINDING_WAVE_SHADOWS 33  // vec4 x PN_WAVE_SHADOW_VEC4S per queued shadow ray, field-major
+#define PN_BINDING_WAVE_QUEUES 34   // uint x 2 x waveStride: the live path slots, this bounce's and the next's
+#define PN_BINDING_WAVE_CONTROL 35  // WaveControl
 
 // ---- kernel features: specialization constant 0 of the tracing kernels, a bit set. A pipeline
 // made for a scene leaves out what the scene does not use (render/kernel_features.h); the
@@ -446,8 +455,22 @@ PN_STRUCT(PassPush) {
     uint countRays;      // nonzero: add traced rays to the counters buffer
     uint tileX;          // trace.comp: the first pixel of this dispatch; a long pass is split into
     uint tileY;          //   tiles so no dispatch trips a display watchdog (render/passes/trace_tiles.h)
+    uint tileWidth;      // wave_*.comp: the tile's size in pixels (its path slots are sample-major:
+    uint tileHeight;     //   slot = sample * tileWidth * tileHeight + row * tileWidth + column)
+    uint waveStride;     // wave_*.comp: path slots in the working buffers (their field stride)
+    uint waveBounce;     // wave_*.comp: which bounce this is (picks the queue it reads)
     uint pad0;
     uint pad1;
+};
+
+// The wavefront pass's queue counts and the indirect dispatch sizes computed from them
+// (wave_args.comp), 48 bytes.
+PN_STRUCT(WaveControl) {
+    uint rayCount[2];    // live paths in each queue (read at bounce b: rayCount[b & 1])
+    uint shadowCount;    // shadow rays queued by the last shade pass
+    uint shadowLive;     // the shadow count the pending shadow pass reads (shadowCount is refilled meanwhile)
+    uint extendGroups[4];  // VkDispatchIndirectCommand (x, y, z) + pad, for extend and shade
+    uint shadowGroups[4];  // VkDispatchIndirectCommand, for the shadow pass
 };
 
 // Counters written by the trace pass: rays only when PassPush.countRays is set.
@@ -549,8 +572,11 @@ static_assert(sizeof(SphereLight) == 64 && offsetof(SphereLight, radius) == 12 &
               offsetof(SphereLight, spotDirection) == 32 && offsetof(SphereLight, cosOuter) == 44 &&
               offsetof(SphereLight, cosInner) == 48 &&
               offsetof(SphereLight, primitive) == 56);
-static_assert(sizeof(PassPush) == 32 && offsetof(PassPush, countRays) == 12 && offsetof(PassPush, tileX) == 16 &&
-              offsetof(PassPush, tileY) == 20);
+static_assert(sizeof(PassPush) == 48 && offsetof(PassPush, countRays) == 12 && offsetof(PassPush, tileX) == 16 &&
+              offsetof(PassPush, tileY) == 20 && offsetof(PassPush, tileWidth) == 24 && offsetof(PassPush, waveStride) == 32 &&
+              offsetof(PassPush, waveBounce) == 36);
+static_assert(sizeof(WaveControl) == 48 && offsetof(WaveControl, shadowLive) == 12 &&
+              offsetof(WaveControl, extendGroups) == 16 && offsetof(WaveControl, shadowGroups) == 32);
 static_assert(sizeof(RayCounters) == 16);
 static_assert(sizeof(RayDesc) == 32 && offsetof(RayDesc, tMax) == 12 && offsetof(RayDesc, direction) == 16);
 static_assert(sizeof(HitRecord) == 16 && offsetof(HitRecord, v) == 12);

@@ -28,5 +28,7 @@ private:
 
 // Makes compute-shader and transfer writes visible to later compute shaders and transfers.
 void computeBarrier(VkCommandBuffer cmd);
+// Compute writes before indirect dispatches that read their group counts (and shaders that read them).
+void indirectBarrier(VkCommandBuffer cmd);
 
 }  // namespace penumbra::gpu

@@ -136,12 +136,22 @@ void ComputePipeline::bind(std::uint32_t binding, const Buffer& buffer) {
     vkUpdateDescriptorSets(ctx_.device(), 1, &write, 0, nullptr);
 }
 
-void ComputePipeline::dispatch(VkCommandBuffer cmd, std::uint32_t x, std::uint32_t y, std::uint32_t z,
-                               const void* push) const {
+void ComputePipeline::bindForDispatch(VkCommandBuffer cmd, const void* push) const {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1, &set_, 0, nullptr);
     if (pushBytes_) vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes_, push);
+}
+
+void ComputePipeline::dispatch(VkCommandBuffer cmd, std::uint32_t x, std::uint32_t y, std::uint32_t z,
+                               const void* push) const {
+    bindForDispatch(cmd, push);
     vkCmdDispatch(cmd, x, y, z);
+}
+
+void ComputePipeline::dispatchIndirect(VkCommandBuffer cmd, const Buffer& args, VkDeviceSize offset,
+                                       const void* push) const {
+    bindForDispatch(cmd, push);
+    vkCmdDispatchIndirect(cmd, args.get(), offset);
 }
 
 }  // namespace penumbra::gpu

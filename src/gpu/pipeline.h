@@ -39,10 +39,15 @@ public:
 
     // Binds the pipeline and its set, pushes `push` (pushConstantBytes of it) and dispatches.
     void dispatch(VkCommandBuffer cmd, std::uint32_t x, std::uint32_t y, std::uint32_t z, const void* push) const;
+    // The same, with the group counts read on the GPU from a VkDispatchIndirectCommand in `args`
+    // (which needs VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT) at `offset`.
+    void dispatchIndirect(VkCommandBuffer cmd, const Buffer& args, VkDeviceSize offset, const void* push) const;
 
     const std::string& name() const { return name_; }
 
 private:
+    void bindForDispatch(VkCommandBuffer cmd, const void* push) const;
+
     const Context& ctx_;
     std::string name_;
     std::vector<BindingSpec> bindings_;

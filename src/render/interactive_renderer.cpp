@@ -193,6 +193,7 @@ void InteractiveRenderer::createPasses() {
 
 void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& s) {
     PN_CHECK(width_ > 0 && height_ > 0);
+    trace_->reserve(width_, height_, s.samplesPerFrame);  // before this frame records anything
     if (previousSettings_ && changesTheImage(*previousSettings_, s)) historyValid_ = false;
     if (!s.temporal) historyValid_ = false;
     previousSettings_ = s;
@@ -275,7 +276,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
         timer_.end(cmd, std::uint32_t(pass));
         recorded_ |= 1u << std::uint32_t(pass);
     };
-    timed(ViewerPass::Trace, [&] { trace_->record(cmd, width_, height_, s.samplesPerFrame, tracedFrames_++, true); });
+    timed(ViewerPass::Trace, [&] { trace_->record(cmd, width_, height_, s.samplesPerFrame, tracedFrames_++, s.maxBounces, true); });
     timed(ViewerPass::GBuffer, [&] { gbufferPass_->record(cmd, width_, height_); });
     if (heat) timed(ViewerPass::Heatmap, [&] { heatmap_->record(cmd, width_, height_); });
     gpu::computeBarrier(cmd);

@@ -73,7 +73,7 @@ public:
     bool hasTorch() const { return torchLight_.has_value(); }
     const GpuScene& gpuScene() const { return *gpuScene_; }
     // The trace pass's pipeline (for its driver statistics); valid after resize.
-    const gpu::ComputePipeline& tracePipeline() const { return trace_->pipeline(); }
+    std::vector<gpu::PipelineStatistic> traceStatistics() const { return trace_->statistics(); }
     std::uint32_t kernelFeatures() const { return features_; }
     const SceneArrays& sceneArrays() const { return arrays_; }
     gpu::Commands& commands() { return commands_; }

@@ -37,6 +37,7 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
     trace_ = std::make_unique<TracePass>(ctx, *gpuScene_, frameUniforms_, accumulation_, counters_,
                                          kernelFeatures(arrays_, settings_.accel), &activeMask_);
     trace_->setPathBudget(settings_.pathsPerDispatch);
+    trace_->reserve(settings_.width, settings_.height, settings_.samplesPerPass);
 }
 
 Renderer::~Renderer() = default;
@@ -48,8 +49,8 @@ double Renderer::renderPasses(std::uint32_t passes, bool countRays, bool masked)
         gpu::computeBarrier(cmd);
         timer_.begin(cmd, 0);
         for (std::uint32_t i = 0; i < passes; ++i) {
-            trace_->record(cmd, settings_.width, settings_.height, settings_.samplesPerPass, passesDone_ + i, countRays,
-                           masked);
+            trace_->record(cmd, settings_.width, settings_.height, settings_.samplesPerPass, passesDone_ + i,
+                           settings_.maxBounces, countRays, masked);
             gpu::computeBarrier(cmd);
         }
         timer_.end(cmd, 0);

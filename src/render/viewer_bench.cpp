@@ -148,7 +148,7 @@ ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bo
     }
     ViewerBenchResult result;
     result.kernelFeatures = kernelFeatureNames(renderer.kernelFeatures());
-    result.traceStatistics = renderer.tracePipeline().statistics();
+    result.traceStatistics = renderer.traceStatistics();
     result.frames = o.frames;
     result.frameMs = median(frameMs);
     for (auto& [name, values] : passMs) result.passMs[name] = median(values);

@@ -47,7 +47,8 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
     using namespace shader;
     int structsChecked = 0, envStructsChecked = 0;
     for (const char* shaderName :
-         {"trace", "raybench", "test_ray_query", "test_sphere_light_sample", "test_bsdf_sample", "test_env_sample"}) {
+         {"trace", "wave_start", "wave_args", "wave_shade", "wave_shadow", "raybench", "test_ray_query",
+          "test_sphere_light_sample", "test_bsdf_sample", "test_env_sample"}) {
         Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
         expectMembers(spv, "BvhNode", {0, offsetof(BvhNode, firstOrRight), offsetof(BvhNode, boundsMax), offsetof(BvhNode, triCount)});
         expectMembers(spv, "TriVerts", {0, offsetof(TriVerts, flags), offsetof(TriVerts, e1), 28, offsetof(TriVerts, e2), 44});
@@ -101,7 +102,10 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                                            offsetof(SphereLight, pad3), offsetof(SphereLight, primitive),
                                            offsetof(SphereLight, pad0)});
         expectMembers(spv, "PassPush", {0, 4, 8, offsetof(PassPush, countRays), offsetof(PassPush, tileX),
-                                        offsetof(PassPush, tileY), 24, 28});
+                                        offsetof(PassPush, tileY), offsetof(PassPush, tileWidth), 28,
+                                        offsetof(PassPush, waveStride), offsetof(PassPush, waveBounce), 40, 44});
+        expectMembers(spv, "WaveControl", {0, offsetof(WaveControl, shadowCount), offsetof(WaveControl, shadowLive),
+                                           offsetof(WaveControl, extendGroups), offsetof(WaveControl, shadowGroups)});
         expectMembers(spv, "RayCounters", {0, 4, offsetof(RayCounters, invalidSamples), 12});
         expectMembers(spv, "RayDesc", {0, offsetof(RayDesc, tMax), offsetof(RayDesc, direction), 28});
         expectMembers(spv, "HitRecord", {0, offsetof(HitRecord, triangle), 8, offsetof(HitRecord, v)});

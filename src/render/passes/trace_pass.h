@@ -1,13 +1,23 @@
-// The path-tracing pass: adds samplesPerPass paths per pixel into the accumulation buffer.
+// The path-tracing pass: adds samplesPerPass paths per pixel into the accumulation buffer, with
+// the megakernel (trace.comp: a thread follows its pixel's paths from camera to end) or the
+// wavefront kernels (render/passes/wavefront_pass.h). Both give the same image.
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "gpu/buffer.h"
 #include "gpu/pipeline.h"
 #include "render/gpu_scene.h"
+#include "render/passes/wavefront_pass.h"
 
 namespace penumbra {
+
+enum class TraceKernel { Megakernel, Wavefront };
+
+// The kernel design: PENUMBRA_TRACE_KERNEL=mega or =wavefront (the A/B switch of
+// docs/PERFORMANCE.md), else the default.
+TraceKernel traceKernelFromEnvironment();
 
 class TracePass {
 public:
@@ -16,16 +26,24 @@ public:
     // pass binds a placeholder of its own and never reads it.
     TracePass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
               const gpu::Buffer& accumulation, const gpu::Buffer& counters, std::uint32_t features,
-              const gpu::Buffer* activeMask = nullptr);
+              const gpu::Buffer* activeMask = nullptr, TraceKernel kernel = traceKernelFromEnvironment());
 
-    const gpu::ComputePipeline& pipeline() const { return *pipeline_; }
+    TraceKernel kernel() const { return wave_ ? TraceKernel::Wavefront : TraceKernel::Megakernel; }
+    // What the driver says of the tracing kernels (registers, spills...); names prefixed by kernel.
+    std::vector<gpu::PipelineStatistic> statistics() const;
+
+    // Makes room for passes of width x height x samplesPerPass paths up front (the wavefront's
+    // working buffers), so that record never has to wait for the device to grow them.
+    void reserve(std::uint32_t width, std::uint32_t height, std::uint32_t samplesPerPass);
 
     // masked: pixels whose mask entry is 0 take no samples (needs the constructor's activeMask).
-    // One dispatch per tile of at most pathBudget() paths (render/passes/trace_tiles.h).
+    // One dispatch (megakernel) or wavefront round per tile of at most pathBudget() paths
+    // (render/passes/trace_tiles.h). maxBounces must be the frame uniforms' value.
     void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, std::uint32_t samplesPerPass,
-                std::uint32_t passIndex, bool countRays, bool masked = false) const;
+                std::uint32_t passIndex, std::uint32_t maxBounces, bool countRays, bool masked = false);
 
-    // Paths per dispatch: by device type unless set (0 puts the device's default back).
+    // Paths per dispatch: by device type unless set (0 puts the device's default back), never more
+    // than the wavefront's working buffers can hold on this device.
     std::uint64_t pathBudget() const { return pathBudget_; }
     void setPathBudget(std::uint64_t paths);
 
@@ -33,7 +51,9 @@ private:
     gpu::Buffer placeholderMask_;
     bool hasMask_;
     std::uint64_t defaultBudget_, pathBudget_;
-    std::unique_ptr<gpu::ComputePipeline> pipeline_;
+    std::uint64_t maxBudget_ = ~std::uint64_t(0);  // the wavefront's working buffers bound it
+    std::unique_ptr<gpu::ComputePipeline> pipeline_;  // the megakernel, or
+    std::unique_ptr<WavefrontPass> wave_;              // the wavefront kernels
 };
 
 }  // namespace penumbra

@@ -1,0 +1,48 @@
+// Where the tracing kernels (trace.comp, wave_*.comp) put their results: the accumulation buffer
+// (rgb = sum of radiance, a = sum of squared luminance, for variance estimates), the ray and
+// invalid-sample counters, and the adaptive-sampling mask they obey. Include after
+// shared/types.h and lib/scene_bindings.glsl.
+#ifndef PN_TRACE_OUTPUTS_GLSL
+#define PN_TRACE_OUTPUTS_GLSL
+
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_basic : require
+
+#include "shared/color.h"
+
+layout(std430, set = 0, binding = PN_BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
+layout(std430, set = 0, binding = PN_BINDING_COUNTERS) buffer CounterBuffer { RayCounters counters; };
+layout(std430, set = 0, binding = PN_BINDING_ACTIVE_MASK) readonly buffer ActiveMask { uint activeMask[]; };
+
+// Adaptive sampling (render/adaptive.h): a pixel whose mask entry is 0 takes no samples in a
+// masked pass (PN_TRACE_MASKED). Off-image pixels of a partial workgroup never do.
+bool pixelSampled(uvec2 pixel) {
+    if (pixel.x >= frame.width || pixel.y >= frame.height) return false;
+    return (push.mode & PN_TRACE_MASKED) == 0u || activeMask[pixel.y * frame.width + pixel.x] != 0u;
+}
+
+// A finished sample into the pixel's sums. A NaN or inf sample would poison the pixel forever:
+// it is dropped, and counted so that tests (and the render summary) see it.
+void addSample(vec3 L, inout vec3 sum, inout float sumSquares) {
+    if (any(isnan(L)) || any(isinf(L))) {
+        L = vec3(0.0);
+        atomicAdd(counters.invalidSamples, 1u);
+    }
+    sum += L;
+    float y = luminance(L);
+    sumSquares += y * y;
+}
+
+// This invocation's traced rays into the counters (when the pass counts them), one atomic per
+// subgroup. Every invocation of the subgroup must call it.
+void countRays(uint closest, uint shadow) {
+    if (push.countRays == 0u) return;
+    uint closestSum = subgroupAdd(closest);
+    uint shadowSum = subgroupAdd(shadow);
+    if (subgroupElect()) {
+        if (closestSum != 0u) atomicAdd(counters.closestRays, closestSum);
+        if (shadowSum != 0u) atomicAdd(counters.shadowRays, shadowSum);
+    }
+}
+
+#endif

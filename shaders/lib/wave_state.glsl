@@ -1,0 +1,112 @@
+// The wavefront trace pass's working state (render/passes/wavefront_pass.h): every path of a tile
+// has a slot; its state, its closest hit and its queued shadow ray live in buffers between the
+// kernels (wave_start, wave_extend, wave_shade, wave_shadow, wave_finish), so that each kernel
+// holds only what its own step needs. Fields are stored field-major (field * stride + slot), so
+// a subgroup's loads of one field are contiguous. Everything is stored as uint bits: moves of
+// integers are exact, whatever the values. Include after lib/path.glsl.
+#ifndef PN_WAVE_STATE_GLSL
+#define PN_WAVE_STATE_GLSL
+
+#extension GL_KHR_shader_subgroup_ballot : require
+
+layout(std430, set = 0, binding = PN_BINDING_WAVE_PATHS) buffer WavePaths { uvec4 wavePaths[]; };
+layout(std430, set = 0, binding = PN_BINDING_WAVE_HITS) buffer WaveHits { uvec4 waveHits[]; };
+layout(std430, set = 0, binding = PN_BINDING_WAVE_SHADOWS) buffer WaveShadows { uvec4 waveShadows[]; };
+layout(std430, set = 0, binding = PN_BINDING_WAVE_QUEUES) buffer WaveQueues { uint waveQueues[]; };
+layout(std430, set = 0, binding = PN_BINDING_WAVE_CONTROL) buffer WaveControlBuffer { WaveControl control; };
+
+uvec4 packVec(vec3 v, uint w) { return uvec4(floatBitsToUint(v), w); }
+uvec4 packVec(vec3 v, float w) { return uvec4(floatBitsToUint(v), floatBitsToUint(w)); }
+vec3 unpackVec(uvec4 u) { return uintBitsToFloat(u.xyz); }
+uvec4 pathField(uint field, uint slot) { return wavePaths[field * push.waveStride + slot]; }
+void setPathField(uint field, uint slot, uvec4 value) { wavePaths[field * push.waveStride + slot] = value; }
+
+// The slot's pixel (x, y) and which of the pass's samples it is (z).
+uvec3 slotPixel(uint slot) {
+    uint tilePixels = push.tileWidth * push.tileHeight;
+    uint local = slot % tilePixels;
+    return uvec3(push.tileX + local % push.tileWidth, push.tileY + local / push.tileWidth, slot / tilePixels);
+}
+uint slotOf(uvec2 pixel, uint sampleInPass) {
+    return sampleInPass * push.tileWidth * push.tileHeight + (pixel.y - push.tileY) * push.tileWidth + pixel.x - push.tileX;
+}
+
+const uint PN_WAVE_AFTER_DELTA = 0x80000000u;
+
+void storePath(uint slot, Path p) {
+    setPathField(0u, slot, packVec(p.origin, p.bsdfPdfPrev));
+    setPathField(1u, slot, packVec(p.direction, p.depth | (p.afterDelta ? PN_WAVE_AFTER_DELTA : 0u)));
+    setPathField(2u, slot, packVec(p.throughput, p.rng));
+    setPathField(3u, slot, packVec(p.result, p.sampleIndex));
+    if (PN_HAS(PN_FEATURE_ABSORPTION)) setPathField(4u, slot, packVec(p.medium, 0u));
+    setPathField(5u, slot, packVec(p.previousNormal, 0u));
+    setPathField(6u, slot, packVec(p.previousPosition, 0u));
+}
+
+Path loadPath(uint slot) {
+    Path p;
+    uvec4 f0 = pathField(0u, slot), f1 = pathField(1u, slot), f2 = pathField(2u, slot), f3 = pathField(3u, slot);
+    p.origin = unpackVec(f0);
+    p.bsdfPdfPrev = uintBitsToFloat(f0.w);
+    p.direction = unpackVec(f1);
+    p.depth = f1.w & ~PN_WAVE_AFTER_DELTA;
+    p.afterDelta = (f1.w & PN_WAVE_AFTER_DELTA) != 0u;
+    p.throughput = unpackVec(f2);
+    p.rng = f2.w;
+    p.result = unpackVec(f3);
+    p.sampleIndex = f3.w;
+    p.medium = PN_HAS(PN_FEATURE_ABSORPTION) ? unpackVec(pathField(4u, slot)) : vec3(0.0);
+    p.previousNormal = unpackVec(pathField(5u, slot));
+    p.previousPosition = unpackVec(pathField(6u, slot));
+    return p;
+}
+
+vec3 pathResult(uint slot) { return unpackVec(pathField(3u, slot)); }
+void addToPathResult(uint slot, vec3 light) {
+    uvec4 f3 = pathField(3u, slot);
+    setPathField(3u, slot, packVec(unpackVec(f3) + light, f3.w));
+}
+
+void storeHit(uint slot, Hit h) {
+    waveHits[slot] = uvec4(floatBitsToUint(h.t), h.triangle, floatBitsToUint(h.u), floatBitsToUint(h.v));
+    if (PN_HAS(PN_FEATURE_INSTANCES)) waveHits[push.waveStride + slot].x = h.instance;
+}
+
+Hit loadHit(uint slot) {
+    uvec4 u = waveHits[slot];
+    uint instance = PN_HAS(PN_FEATURE_INSTANCES) ? waveHits[push.waveStride + slot].x : PN_NO_HIT;
+    return Hit(uintBitsToFloat(u.x), u.y, uintBitsToFloat(u.z), uintBitsToFloat(u.w), instance);
+}
+
+void storeShadow(uint index, uint slot, PendingShadow s) {
+    waveShadows[index] = packVec(s.ray.origin, s.ray.tMax);
+    waveShadows[push.waveStride + index] = packVec(s.ray.direction, slot);
+    waveShadows[2u * push.waveStride + index] = packVec(s.light, 0u);
+}
+
+// The queued shadow ray `index`: its ray, the light it carries, and (out) its path's slot.
+PendingShadow loadShadow(uint index, out uint slot) {
+    uvec4 a = waveShadows[index], b = waveShadows[push.waveStride + index], c = waveShadows[2u * push.waveStride + index];
+    slot = b.w;
+    return PendingShadow(ShadowRay(unpackVec(a), unpackVec(b), uintBitsToFloat(a.w)), unpackVec(c), true);
+}
+
+// Appends for the invocations that want to: one atomic per subgroup, offsets by ballot. Returns
+// the invocation's index in the queue (meaningless where !want). Call from every invocation.
+uint appendIndex(bool want, uint counter) {
+    uvec4 ballot = subgroupBallot(want);
+    uint total = subgroupBallotBitCount(ballot);
+    uint base = 0u;
+    if (subgroupElect() && total != 0u) {
+        if (counter == 2u) base = atomicAdd(control.shadowCount, total);
+        else base = atomicAdd(control.rayCount[counter], total);
+    }
+    return subgroupBroadcastFirst(base) + subgroupBallotExclusiveBitCount(ballot);
+}
+
+// The queue a bounce reads (its live paths) and the one it fills for the next bounce.
+uint queueIn(uint i) { return waveQueues[(push.waveBounce & 1u) * push.waveStride + i]; }
+void queueNext(uint i, uint slot) { waveQueues[((push.waveBounce + 1u) & 1u) * push.waveStride + i] = slot; }
+uint liveRays() { return control.rayCount[push.waveBounce & 1u]; }
+
+#endif

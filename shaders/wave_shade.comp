@@ -1,0 +1,31 @@
+#version 460
+// Wavefront trace, step 3: each live path meets its hit (lib/path.glsl extendPath: emission, one
+// light sample, one BSDF sample, roulette); the paths that go on are queued for the next bounce
+// and the light samples' shadow rays for the shadow pass.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+
+layout(local_size_x = PN_WAVE_GROUP) in;
+
+#include "lib/scene_bindings.glsl"
+#include "lib/trace_outputs.glsl"
+#include "lib/path.glsl"
+#include "lib/wave_state.glsl"
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    uint slot = 0u;
+    bool alive = false;
+    PendingShadow shadow = noShadow();
+    if (i < liveRays()) {
+        slot = queueIn(i);
+        Path path = loadPath(slot);
+        uvec3 p = slotPixel(slot);
+        alive = extendPath(path, loadHit(slot), p.y * frame.width + p.x, shadow);
+        storePath(slot, path);
+    }
+    uint next = appendIndex(alive, (push.waveBounce + 1u) & 1u);
+    if (alive) queueNext(next, slot);
+    uint queued = appendIndex(shadow.pending, 2u);
+    if (shadow.pending) storeShadow(queued, slot, shadow);
+}

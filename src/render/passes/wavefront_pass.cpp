@@ -1,0 +1,123 @@
+#include "render/passes/wavefront_pass.h"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "gpu/check.h"
+#include "gpu/commands.h"
+#include "gpu/limits.h"
+#include "render/scene_pipeline.h"
+
+namespace penumbra {
+
+namespace {
+
+constexpr std::uint32_t kWorkingBindings[] = {PN_BINDING_ACCUM,       PN_BINDING_COUNTERS,   PN_BINDING_ACTIVE_MASK,
+                                              PN_BINDING_WAVE_PATHS,  PN_BINDING_WAVE_HITS,  PN_BINDING_WAVE_SHADOWS,
+                                              PN_BINDING_WAVE_QUEUES, PN_BINDING_WAVE_CONTROL};
+
+std::uint32_t groupsFor(std::uint64_t items) { return std::uint32_t((items + PN_WAVE_GROUP - 1) / PN_WAVE_GROUP); }
+
+}  // namespace
+
+WavefrontPass::WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
+                             const gpu::Buffer& accumulation, const gpu::Buffer& counters,
+                             const gpu::Buffer& activeMask, std::uint32_t features)
+    : ctx_(ctx) {
+    const std::vector<std::uint32_t> extra(std::begin(kWorkingBindings), std::end(kWorkingBindings));
+    auto make = [&](const char* shader) {
+        auto pipeline = makeScenePipeline(ctx, shader, scene, frameUniforms, extra, features);
+        pipeline->bind(PN_BINDING_ACCUM, accumulation);
+        pipeline->bind(PN_BINDING_COUNTERS, counters);
+        pipeline->bind(PN_BINDING_ACTIVE_MASK, activeMask);
+        return pipeline;
+    };
+    start_ = make("wave_start");
+    extend_ = make("wave_extend");
+    shade_ = make("wave_shade");
+    shadow_ = make("wave_shadow");
+    finish_ = make("wave_finish");
+    const gpu::BindingSpec controlOnly[] = {{PN_BINDING_WAVE_CONTROL, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+    args_ = std::make_unique<gpu::ComputePipeline>(ctx, "wave_args", controlOnly, sizeof(shader::PassPush));
+    control_ = gpu::Buffer(ctx, sizeof(shader::WaveControl),
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                               VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                           gpu::MemoryKind::DeviceLocal);
+    args_->bind(PN_BINDING_WAVE_CONTROL, control_);
+    reserve(PN_WAVE_GROUP);
+}
+
+std::uint64_t WavefrontPass::maxSlots(const gpu::Context& ctx) {
+    constexpr std::uint64_t pathBytes = PN_WAVE_PATH_VEC4S * 16;
+    constexpr std::uint64_t slotBytes = pathBytes + 2 * 16 + PN_WAVE_SHADOW_VEC4S * 16 + 2 * sizeof(std::uint32_t);
+    const gpu::MemoryLimits limits = gpu::memoryLimits(ctx);
+    const std::uint64_t slots = std::min(limits.maxStorageBufferRange / pathBytes, limits.deviceLocalBytes / 4 / slotBytes);
+    return std::max<std::uint64_t>(slots / PN_WAVE_GROUP * PN_WAVE_GROUP, PN_WAVE_GROUP);
+}
+
+void WavefrontPass::reserve(std::uint64_t slots) {
+    if (slots <= capacity_) return;
+    if (capacity_ != 0) PN_VK(vkDeviceWaitIdle(ctx_.device()));  // the old buffers may still be in use
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    const VkDeviceSize n = slots;
+    paths_ = gpu::Buffer(ctx_, n * PN_WAVE_PATH_VEC4S * 16, storage, gpu::MemoryKind::DeviceLocal);
+    hits_ = gpu::Buffer(ctx_, n * 2 * 16, storage, gpu::MemoryKind::DeviceLocal);  // hits, then instances
+    shadows_ = gpu::Buffer(ctx_, n * PN_WAVE_SHADOW_VEC4S * 16, storage, gpu::MemoryKind::DeviceLocal);
+    queues_ = gpu::Buffer(ctx_, n * 2 * sizeof(std::uint32_t), storage, gpu::MemoryKind::DeviceLocal);
+    capacity_ = slots;
+    bindWorkingBuffers();
+}
+
+void WavefrontPass::bindWorkingBuffers() {
+    for (gpu::ComputePipeline* p : {start_.get(), extend_.get(), shade_.get(), shadow_.get(), finish_.get()}) {
+        p->bind(PN_BINDING_WAVE_PATHS, paths_);
+        p->bind(PN_BINDING_WAVE_HITS, hits_);
+        p->bind(PN_BINDING_WAVE_SHADOWS, shadows_);
+        p->bind(PN_BINDING_WAVE_QUEUES, queues_);
+        p->bind(PN_BINDING_WAVE_CONTROL, control_);
+    }
+}
+
+void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint32_t width, std::uint32_t height,
+                           std::uint32_t samplesPerPass, std::uint32_t passIndex, std::uint32_t maxBounces,
+                           bool countRays, bool masked) {
+    const std::uint32_t tileWidth = std::min(tile.width, width - tile.x);
+    const std::uint32_t tileHeight = std::min(tile.height, height - tile.y);
+    const std::uint64_t slots = std::uint64_t(tileWidth) * tileHeight * samplesPerPass;
+    reserve(slots);
+    shader::PassPush push{passIndex,        masked ? PN_TRACE_MASKED : 0u, std::uint32_t(slots),
+                          countRays ? 1u : 0u, tile.x, tile.y, tileWidth, tileHeight, std::uint32_t(capacity_), 0u, 0u, 0u};
+    vkCmdFillBuffer(cmd, control_.get(), 0, VK_WHOLE_SIZE, 0);
+    gpu::computeBarrier(cmd);
+    start_->dispatch(cmd, groupsFor(slots), 1, 1, &push);
+    gpu::computeBarrier(cmd);
+    // Bounce b traces the live paths' closest hits and shades them, while the shadow rays that
+    // bounce b - 1 queued are traced alongside the closest hits (they touch disjoint state).
+    constexpr VkDeviceSize extendArgs = offsetof(shader::WaveControl, extendGroups);
+    constexpr VkDeviceSize shadowArgs = offsetof(shader::WaveControl, shadowGroups);
+    for (std::uint32_t b = 0; b <= maxBounces + 1; ++b) {
+        push.waveBounce = b;
+        args_->dispatch(cmd, 1, 1, 1, &push);
+        gpu::indirectBarrier(cmd);
+        if (b <= maxBounces) extend_->dispatchIndirect(cmd, control_, extendArgs, &push);
+        if (b >= 1) shadow_->dispatchIndirect(cmd, control_, shadowArgs, &push);
+        gpu::computeBarrier(cmd);
+        if (b <= maxBounces) {
+            shade_->dispatchIndirect(cmd, control_, extendArgs, &push);
+            gpu::computeBarrier(cmd);
+        }
+    }
+    finish_->dispatch(cmd, groupsFor(std::uint64_t(tileWidth) * tileHeight), 1, 1, &push);
+}
+
+std::vector<gpu::PipelineStatistic> WavefrontPass::statistics() const {
+    std::vector<gpu::PipelineStatistic> out;
+    for (const gpu::ComputePipeline* p : {extend_.get(), shade_.get(), shadow_.get()})
+        for (gpu::PipelineStatistic s : p->statistics()) {
+            s.executable = p->name() + ": " + s.executable;
+            out.push_back(std::move(s));
+        }
+    return out;
+}
+
+}  // namespace penumbra
