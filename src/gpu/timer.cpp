@@ -20,6 +20,10 @@ void GpuTimer::reset() {
     if (supported()) vkResetQueryPool(ctx_.device(), pool_.get(), 0, 2 * sections_);
 }
 
+void GpuTimer::reset(VkCommandBuffer cmd) {
+    if (supported()) vkCmdResetQueryPool(cmd, pool_.get(), 0, 2 * sections_);
+}
+
 void GpuTimer::begin(VkCommandBuffer cmd, std::uint32_t section) {
     PN_CHECK(section < sections_);
     if (supported()) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_.get(), 2 * section);
@@ -36,6 +40,17 @@ double GpuTimer::milliseconds(std::uint32_t section) const {
     PN_VK(vkGetQueryPoolResults(ctx_.device(), pool_.get(), 2 * section, 2, sizeof(stamps), stamps,
                                 sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
     return double(stamps[1] - stamps[0]) * ctx_.timestampPeriodNs() * 1e-6;
+}
+
+std::optional<double> GpuTimer::millisecondsIfReady(std::uint32_t section) const {
+    if (!supported()) return std::nullopt;
+    std::uint64_t stamps[4] = {};  // value, availability; value, availability
+    const VkResult r = vkGetQueryPoolResults(ctx_.device(), pool_.get(), 2 * section, 2, sizeof(stamps), stamps,
+                                             2 * sizeof(std::uint64_t),
+                                             VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
+    if (r == VK_NOT_READY || stamps[1] == 0 || stamps[3] == 0) return std::nullopt;
+    PN_VK(r);
+    return double(stamps[2] - stamps[0]) * ctx_.timestampPeriodNs() * 1e-6;
 }
 
 }  // namespace penumbra::gpu

@@ -74,6 +74,7 @@ public:
     const GpuScene& gpuScene() const { return *gpuScene_; }
     // The trace pass's pipeline (for its driver statistics); valid after resize.
     std::vector<gpu::PipelineStatistic> traceStatistics() const { return trace_->statistics(); }
+    std::map<std::string, double> traceStageMilliseconds() const { return trace_->stageMilliseconds(); }
     std::uint32_t kernelFeatures() const { return features_; }
     const SceneArrays& sceneArrays() const { return arrays_; }
     gpu::Commands& commands() { return commands_; }

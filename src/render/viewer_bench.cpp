@@ -152,6 +152,7 @@ ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bo
     result.frames = o.frames;
     result.frameMs = median(frameMs);
     for (auto& [name, values] : passMs) result.passMs[name] = median(values);
+    for (auto& [name, ms] : renderer.traceStageMilliseconds()) result.passMs["trace." + name] = ms;
     result.mraysPerSecond = median(mrays);
     result.raysPerPixelPerSample = raysPerSample / o.frames;
     if (o.reference) measureEqualTimeError(ctx, renderer, scene.camera, o, result);

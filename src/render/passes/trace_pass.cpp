@@ -52,6 +52,10 @@ std::vector<gpu::PipelineStatistic> TracePass::statistics() const {
     return out;
 }
 
+std::map<std::string, double> TracePass::stageMilliseconds() const {
+    return wave_ ? wave_->stageMilliseconds() : std::map<std::string, double>{};
+}
+
 void TracePass::reserve(std::uint32_t width, std::uint32_t height, std::uint32_t samplesPerPass) {
     if (!wave_) return;
     std::uint64_t most = 0;
@@ -67,6 +71,7 @@ void TracePass::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t h
     // Tiles write disjoint pixels, so megakernel tiles need no barrier between them; wavefront
     // tiles share the working buffers and follow one another.
     bool first = true;
+    if (wave_) wave_->beginPass(cmd);
     for (const TraceTile& tile : traceTiles(width, height, samplesPerPass, pathBudget_)) {
         if (wave_) {
             if (!first) gpu::computeBarrier(cmd);

@@ -3,7 +3,9 @@
 // wavefront kernels (render/passes/wavefront_pass.h). Both give the same image.
 #pragma once
 
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "gpu/buffer.h"
@@ -31,6 +33,8 @@ public:
     TraceKernel kernel() const { return wave_ ? TraceKernel::Wavefront : TraceKernel::Megakernel; }
     // What the driver says of the tracing kernels (registers, spills...); names prefixed by kernel.
     std::vector<gpu::PipelineStatistic> statistics() const;
+    // The wavefront's stage times (WavefrontPass::stageMilliseconds); empty for the megakernel.
+    std::map<std::string, double> stageMilliseconds() const;
 
     // Makes room for passes of width x height x samplesPerPass paths up front (the wavefront's
     // working buffers), so that record never has to wait for the device to grow them.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdlib>
+#include <cstring>
 
 #include "gpu/check.h"
 #include "gpu/commands.h"
@@ -17,6 +19,14 @@ constexpr std::uint32_t kWorkingBindings[] = {PN_BINDING_ACCUM,       PN_BINDING
                                               PN_BINDING_WAVE_QUEUES, PN_BINDING_WAVE_CONTROL};
 
 std::uint32_t groupsFor(std::uint64_t items) { return std::uint32_t((items + PN_WAVE_GROUP - 1) / PN_WAVE_GROUP); }
+
+enum Stage : std::uint32_t { kStart, kExtend, kShade, kShadow, kFinish, kStageCount };
+constexpr const char* kStageNames[kStageCount] = {"start", "extend", "shade", "shadow", "finish"};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
 
 }  // namespace
 
@@ -45,6 +55,45 @@ WavefrontPass::WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, con
                            gpu::MemoryKind::DeviceLocal);
     args_->bind(PN_BINDING_WAVE_CONTROL, control_);
     reserve(PN_WAVE_GROUP);
+    const char* stageTimes = std::getenv("PENUMBRA_WAVE_STAGE_TIMES");
+    if (stageTimes && std::strcmp(stageTimes, "1") == 0) stageTimes_ = std::make_unique<StageTimes>(ctx);
+}
+
+template <typename Dispatch>
+void WavefrontPass::timed(VkCommandBuffer cmd, std::uint32_t stage, Dispatch&& dispatch) {
+    if (!stageTimes_ || stageTimes_->sectionStage.size() >= StageTimes::kSections) {
+        dispatch();
+        return;
+    }
+    const auto section = std::uint32_t(stageTimes_->sectionStage.size());
+    stageTimes_->sectionStage.push_back(stage);
+    gpu::computeBarrier(cmd);  // the step runs alone
+    stageTimes_->timer.begin(cmd, section);
+    dispatch();
+    stageTimes_->timer.end(cmd, section);
+}
+
+void WavefrontPass::collectStageTimes(VkCommandBuffer cmd) {
+    if (!stageTimes_) return;
+    StageTimes& st = *stageTimes_;
+    double sums[kStageCount] = {};
+    bool landed = !st.sectionStage.empty();
+    for (std::uint32_t i = 0; i < st.sectionStage.size() && landed; ++i) {
+        const std::optional<double> ms = st.timer.millisecondsIfReady(i);
+        landed = ms.has_value();
+        if (landed) sums[st.sectionStage[i]] += *ms;
+    }
+    if (landed)
+        for (std::uint32_t k = 0; k < kStageCount; ++k) st.perPass[kStageNames[k]].push_back(sums[k]);
+    st.sectionStage.clear();
+    st.timer.reset(cmd);
+}
+
+std::map<std::string, double> WavefrontPass::stageMilliseconds() const {
+    std::map<std::string, double> out;
+    if (stageTimes_)
+        for (const auto& [name, values] : stageTimes_->perPass) out[name] = median(values);
+    return out;
 }
 
 std::uint64_t WavefrontPass::maxSlots(const gpu::Context& ctx) {
@@ -78,6 +127,8 @@ void WavefrontPass::bindWorkingBuffers() {
     }
 }
 
+void WavefrontPass::beginPass(VkCommandBuffer cmd) { collectStageTimes(cmd); }
+
 void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint32_t width, std::uint32_t height,
                            std::uint32_t samplesPerPass, std::uint32_t passIndex, std::uint32_t maxBounces,
                            bool countRays, bool masked) {
@@ -89,7 +140,7 @@ void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint
                           countRays ? 1u : 0u, tile.x, tile.y, tileWidth, tileHeight, std::uint32_t(capacity_), 0u, 0u, 0u};
     vkCmdFillBuffer(cmd, control_.get(), 0, VK_WHOLE_SIZE, 0);
     gpu::computeBarrier(cmd);
-    start_->dispatch(cmd, groupsFor(slots), 1, 1, &push);
+    timed(cmd, kStart, [&] { start_->dispatch(cmd, groupsFor(slots), 1, 1, &push); });
     gpu::computeBarrier(cmd);
     // Bounce b traces the live paths' closest hits and shades them, while the shadow rays that
     // bounce b - 1 queued are traced alongside the closest hits (they touch disjoint state).
@@ -99,15 +150,15 @@ void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint
         push.waveBounce = b;
         args_->dispatch(cmd, 1, 1, 1, &push);
         gpu::indirectBarrier(cmd);
-        if (b <= maxBounces) extend_->dispatchIndirect(cmd, control_, extendArgs, &push);
-        if (b >= 1) shadow_->dispatchIndirect(cmd, control_, shadowArgs, &push);
+        if (b <= maxBounces) timed(cmd, kExtend, [&] { extend_->dispatchIndirect(cmd, control_, extendArgs, &push); });
+        if (b >= 1) timed(cmd, kShadow, [&] { shadow_->dispatchIndirect(cmd, control_, shadowArgs, &push); });
         gpu::computeBarrier(cmd);
         if (b <= maxBounces) {
-            shade_->dispatchIndirect(cmd, control_, extendArgs, &push);
+            timed(cmd, kShade, [&] { shade_->dispatchIndirect(cmd, control_, extendArgs, &push); });
             gpu::computeBarrier(cmd);
         }
     }
-    finish_->dispatch(cmd, groupsFor(std::uint64_t(tileWidth) * tileHeight), 1, 1, &push);
+    timed(cmd, kFinish, [&] { finish_->dispatch(cmd, groupsFor(std::uint64_t(tileWidth) * tileHeight), 1, 1, &push); });
 }
 
 std::vector<gpu::PipelineStatistic> WavefrontPass::statistics() const {

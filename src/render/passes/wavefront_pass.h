@@ -7,11 +7,15 @@
 // draws the megakernel's random numbers in its order, so both give the same image.
 #pragma once
 
+#include <map>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "gpu/buffer.h"
 #include "gpu/pipeline.h"
+#include "gpu/timer.h"
 #include "render/gpu_scene.h"
 #include "render/passes/trace_tiles.h"
 
@@ -32,6 +36,9 @@ public:
     // dispatched this pass's kernels.
     void reserve(std::uint64_t slots);
 
+    // Before a pass's tiles: collects the last pass's stage times (diagnostics, below).
+    void beginPass(VkCommandBuffer cmd);
+
     // One pass over `tile`: its pixels (clipped to width x height) times samplesPerPass paths,
     // maxBounces + 1 closest-hit rays at most per path. Reserves what the tile needs first.
     void record(VkCommandBuffer cmd, const TraceTile& tile, std::uint32_t width, std::uint32_t height,
@@ -41,13 +48,31 @@ public:
     // The driver's statistics of the kernels that matter (extend, shade, shadow), names prefixed.
     std::vector<gpu::PipelineStatistic> statistics() const;
 
+    // Diagnostics, with PENUMBRA_WAVE_STAGE_TIMES=1: the median GPU milliseconds per pass of each
+    // step (start, extend, shade, shadow, finish; summed over bounces and tiles), over the passes
+    // whose timestamps had landed when the next pass was recorded. The steps are then separated
+    // by barriers to be timed alone, so the pass itself is a little slower. Empty otherwise.
+    std::map<std::string, double> stageMilliseconds() const;
+
 private:
     void bindWorkingBuffers();
+    // Around one dispatch of `stage` when stage timing is on.
+    template <typename Dispatch>
+    void timed(VkCommandBuffer cmd, std::uint32_t stage, Dispatch&& dispatch);
+    void collectStageTimes(VkCommandBuffer cmd);
 
     const gpu::Context& ctx_;
     std::uint64_t capacity_ = 0;  // path slots the working buffers hold
     gpu::Buffer paths_, hits_, shadows_, queues_, control_;
     std::unique_ptr<gpu::ComputePipeline> start_, args_, extend_, shade_, shadow_, finish_;
+    struct StageTimes {
+        explicit StageTimes(const gpu::Context& ctx) : timer(ctx, kSections) {}
+        static constexpr std::uint32_t kSections = 256;
+        gpu::GpuTimer timer;
+        std::vector<std::uint32_t> sectionStage;   // the stage of each section recorded since the last reset
+        std::map<std::string, std::vector<double>> perPass;
+    };
+    std::unique_ptr<StageTimes> stageTimes_;
 };
 
 }  // namespace penumbra
