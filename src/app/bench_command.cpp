@@ -191,7 +191,7 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--height", args->height, "frame height (default 1080)");
     cmd->add_option("--bounces", args->bounces, "bounces of the timed frame (default 4)");
     cmd->add_option("--repeats", args->repeats, "timed runs per figure; medians are reported (default 20)");
-    cmd->add_option("--accel", args->accel, "bvh or brute");
+    cmd->add_option("--accel", args->accel, "bvh, wide (compressed 8-wide BVH) or brute");
     cmd->add_flag("--json", args->json, "print one JSON object instead of text");
     cmd->add_flag("--viewer", args->viewer,
                   "time the viewer's whole frame (trace, G-buffer, temporal, denoise, tonemap) instead of ray kernels");

@@ -1,0 +1,275 @@
+#include "bvh/wide.h"
+
+#include <algorithm>
+#include <bit>
+#include <limits>
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+
+namespace penumbra::bvh {
+namespace {
+
+// What one slot of a wide node will hold: a binary interior node (a wide child), or up to three
+// consecutive primitives (in the binary leaf order) of a binary subtree.
+struct Entry {
+    std::uint32_t binary = 0;  // the binary node it came from
+    Aabb box;
+    bool interior = false;
+    std::uint32_t first = 0, count = 0;  // leaf entries: primitives [first, first + count), old order
+};
+
+// Per binary node: primitives below it and the first of them (leaf order), filled bottom-up
+// (children always follow their parent in the depth-first array).
+struct Subtrees {
+    std::vector<std::uint32_t> count, first;
+    explicit Subtrees(const std::vector<shader::BvhNode>& nodes) : count(nodes.size()), first(nodes.size()) {
+        for (std::size_t i = nodes.size(); i-- > 0;) {
+            const shader::BvhNode& n = nodes[i];
+            if (n.triCount > 0) {
+                count[i] = n.triCount;
+                first[i] = n.firstOrRight;
+            } else {
+                PN_CHECK(i + 1 < nodes.size() && n.firstOrRight < nodes.size() && n.firstOrRight > i);
+                count[i] = count[i + 1] + count[n.firstOrRight];
+                first[i] = first[i + 1];
+            }
+        }
+    }
+};
+
+Aabb boxOf(const shader::BvhNode& n) { return Aabb{n.boundsMin, n.boundsMax}; }
+
+class Collapser {
+public:
+    Collapser(const std::vector<shader::BvhNode>& nodes) : nodes_(nodes), sub_(nodes) {}
+
+    // Slots binary node b takes as an entry: one for a wide child, one per three primitives.
+    int slots(std::uint32_t b) const { return expandable(b) ? 1 : int((sub_.count[b] + 2) / 3); }
+    bool expandable(std::uint32_t b) const {
+        return nodes_[b].triCount == 0 && sub_.count[b] > std::uint32_t(kWideLeafPrimitives);
+    }
+
+    // The binary nodes the wide node made from `b` holds: b's children, then the largest boxes
+    // opened while they fit in eight slots.
+    std::vector<std::uint32_t> gather(std::uint32_t b) const {
+        if (!expandable(b)) return {b};  // the root alone: a wide node of leaf slots
+        std::vector<std::uint32_t> open = {b + 1, nodes_[b].firstOrRight};
+        int used = slots(b + 1) + slots(nodes_[b].firstOrRight);
+        for (;;) {
+            int best = -1;
+            float bestArea = -1.0f;
+            for (std::size_t k = 0; k < open.size(); ++k) {
+                const std::uint32_t c = open[k];
+                if (!expandable(c)) continue;
+                const int grown = used - 1 + slots(c + 1) + slots(nodes_[c].firstOrRight);
+                const float area = boxOf(nodes_[c]).halfArea();
+                if (grown <= kWideArity && area > bestArea) {
+                    best = int(k);
+                    bestArea = area;
+                }
+            }
+            if (best < 0) return open;
+            const std::uint32_t c = open[std::size_t(best)];
+            used += slots(c + 1) + slots(nodes_[c].firstOrRight) - 1;
+            open[std::size_t(best)] = c + 1;
+            open.insert(open.begin() + best + 1, nodes_[c].firstOrRight);
+        }
+    }
+
+    std::vector<Entry> entries(std::uint32_t b) const {
+        std::vector<Entry> out;
+        for (std::uint32_t c : gather(b)) {
+            const Aabb box = boxOf(nodes_[c]);
+            if (expandable(c)) {
+                out.push_back({c, box, true, 0, 0});
+                continue;
+            }
+            const std::uint32_t n = sub_.count[c];
+            if (n > std::uint32_t(kWideMaxBinaryLeaf))
+                throw Error("the wide BVH takes binary leaves of at most " + std::to_string(kWideMaxBinaryLeaf) +
+                            " primitives, not " + std::to_string(n));
+            for (std::uint32_t k = 0; k < n; k += kWideLeafPrimitives)
+                out.push_back({c, box, false, sub_.first[c] + k, std::min<std::uint32_t>(kWideLeafPrimitives, n - k)});
+        }
+        PN_CHECK(out.size() <= std::size_t(kWideArity));
+        return out;
+    }
+
+private:
+    const std::vector<shader::BvhNode>& nodes_;
+    Subtrees sub_;
+};
+
+// Slot of each entry: slot s goes to the entry nearest a ray travelling along the diagonal with
+// sign bits s (bit k set: negative along axis k), greedily by the smallest projection of the
+// entry's centre (relative to the node's) on that diagonal.
+std::vector<int> assignSlots(const std::vector<Entry>& entries, const Aabb& parent) {
+    const Vec3 centre = parent.center();
+    std::vector<int> slotOf(entries.size(), -1);
+    bool slotTaken[kWideArity] = {};
+    for (std::size_t round = 0; round < entries.size(); ++round) {
+        float best = std::numeric_limits<float>::infinity();
+        std::size_t bestEntry = 0;
+        int bestSlot = -1;
+        for (std::size_t e = 0; e < entries.size(); ++e) {
+            if (slotOf[e] >= 0) continue;
+            const Vec3 offset = entries[e].box.center() - centre;
+            for (int s = 0; s < kWideArity; ++s) {
+                if (slotTaken[s]) continue;
+                const float cost = (s & 1 ? -offset.x : offset.x) + (s & 2 ? -offset.y : offset.y) +
+                                   (s & 4 ? -offset.z : offset.z);
+                if (bestSlot < 0 || cost < best) {
+                    best = cost;
+                    bestEntry = e;
+                    bestSlot = s;
+                }
+            }
+        }
+        slotOf[bestEntry] = bestSlot;
+        slotTaken[bestSlot] = true;
+    }
+    return slotOf;
+}
+
+void setByte(std::uint32_t (&words)[2], int slot, std::uint32_t value) {
+    const int shift = 8 * (slot % 4);
+    words[slot / 4] = (words[slot / 4] & ~(0xffu << shift)) | (value << shift);
+}
+std::uint32_t getByte(const std::uint32_t (&words)[2], int slot) { return (words[slot / 4] >> (8 * (slot % 4))) & 0xffu; }
+
+float exponentScale(std::uint32_t biased) { return std::bit_cast<float>(biased << 23); }
+
+// A plane decoded as the shader decodes it: origin + q * 2^e (the product is exact).
+float decodePlane(float origin, std::uint32_t q, float scale) { return origin + float(q) * scale; }
+
+// Quantizes the entries' boxes along one axis: the smallest exponent whose 255 steps cover the
+// node, with each lower plane rounded down and each upper plane up until the decoded planes
+// contain the child's (checked in float, as decoded). Returns the biased exponent.
+std::uint32_t quantizeAxis(const std::vector<Entry>& entries, const std::vector<int>& slotOf, int axis, float origin,
+                           float top, std::uint32_t (&lo)[2], std::uint32_t (&hi)[2]) {
+    const double extent = double(top) - double(origin);
+    int e = -126;
+    if (extent > 0) e = std::clamp(int(std::ceil(std::log2(extent / 255.0))), -126, 127);
+    for (;; ++e) {
+        PN_CHECK(e <= 127);
+        const std::uint32_t biased = std::uint32_t(e + 127);
+        const float scale = exponentScale(biased);
+        bool fits = true;
+        for (std::size_t k = 0; k < entries.size() && fits; ++k) {
+            const float cLo = entries[k].box.lo[axis], cHi = entries[k].box.hi[axis];
+            double qLo = std::floor((double(cLo) - double(origin)) / double(scale));
+            double qHi = std::ceil((double(cHi) - double(origin)) / double(scale));
+            std::uint32_t l = std::uint32_t(std::clamp(qLo, 0.0, 255.0));
+            std::uint32_t h = std::uint32_t(std::clamp(qHi, 0.0, 255.0));
+            while (l > 0 && decodePlane(origin, l, scale) > cLo) --l;
+            while (h < 255 && decodePlane(origin, h, scale) < cHi) ++h;
+            if (decodePlane(origin, l, scale) > cLo || decodePlane(origin, h, scale) < cHi) {
+                fits = false;
+                break;
+            }
+            setByte(lo, slotOf[k], l);
+            setByte(hi, slotOf[k], h);
+        }
+        if (fits) return biased;
+    }
+}
+
+shader::WideNode encodeNode(const std::vector<Entry>& entries, const std::vector<int>& slotOf) {
+    Aabb box;
+    for (const Entry& e : entries) box.grow(e.box);
+    shader::WideNode node{};
+    node.origin = box.lo;
+    std::uint32_t exponents = 0;
+    exponents |= quantizeAxis(entries, slotOf, 0, box.lo.x, box.hi.x, node.loX, node.hiX);
+    exponents |= quantizeAxis(entries, slotOf, 1, box.lo.y, box.hi.y, node.loY, node.hiY) << 8;
+    exponents |= quantizeAxis(entries, slotOf, 2, box.lo.z, box.hi.z, node.loZ, node.hiZ) << 16;
+    node.exponentsMask = exponents;
+    return node;
+}
+
+std::uint32_t unaryCount(std::uint32_t count) { return (1u << count) - 1u; }
+
+}  // namespace
+
+std::uint32_t wideMeta(const shader::WideNode& node, int slot) { return getByte(node.meta, slot); }
+
+Aabb wideSlotBounds(const shader::WideNode& node, int slot) {
+    if (wideSlotEmpty(wideMeta(node, slot))) return Aabb{};
+    const float sx = exponentScale(node.exponentsMask & 0xffu);
+    const float sy = exponentScale((node.exponentsMask >> 8) & 0xffu);
+    const float sz = exponentScale((node.exponentsMask >> 16) & 0xffu);
+    Aabb b;
+    b.lo = Vec3{decodePlane(node.origin.x, getByte(node.loX, slot), sx), decodePlane(node.origin.y, getByte(node.loY, slot), sy),
+                decodePlane(node.origin.z, getByte(node.loZ, slot), sz)};
+    b.hi = Vec3{decodePlane(node.origin.x, getByte(node.hiX, slot), sx), decodePlane(node.origin.y, getByte(node.hiY, slot), sy),
+                decodePlane(node.origin.z, getByte(node.hiZ, slot), sz)};
+    return b;
+}
+
+std::uint32_t wideChildIndex(const shader::WideNode& node, int slot) {
+    const std::uint32_t interior = node.exponentsMask >> 24;
+    return node.childBase + std::uint32_t(std::popcount(interior & ((1u << slot) - 1u)));
+}
+
+WideBvh collapseToWide(Bvh& bvh) {
+    WideBvh out;
+    if (bvh.nodes.empty()) return out;
+    const Collapser collapser(bvh.nodes);
+    std::vector<std::uint32_t> newOrder;  // newOrder[k] = old leaf-order position of the k-th primitive
+    newOrder.reserve(bvh.primOrder.size());
+    struct Pending {
+        std::uint32_t wide, binary, depth;
+    };
+    std::vector<Pending> pending = {{0, 0, 1}};
+    out.nodes.emplace_back();
+    while (!pending.empty()) {
+        const Pending p = pending.back();
+        pending.pop_back();
+        out.maxDepth = std::max(out.maxDepth, p.depth);
+        const std::vector<Entry> entries = collapser.entries(p.binary);
+        const std::vector<int> slotOf = assignSlots(entries, boxOf(bvh.nodes[p.binary]));
+        shader::WideNode node = encodeNode(entries, slotOf);
+        // Leaves' primitives in entry order (the pieces of one binary leaf stay together), then
+        // the interior children in slot order, contiguous.
+        node.primBase = std::uint32_t(newOrder.size());
+        for (std::size_t k = 0; k < entries.size(); ++k) {
+            if (entries[k].interior) continue;
+            const std::uint32_t offset = std::uint32_t(newOrder.size()) - node.primBase;
+            PN_CHECK(offset + entries[k].count <= std::uint32_t(kWideArity * kWideLeafPrimitives));
+            setByte(node.meta, slotOf[k], (unaryCount(entries[k].count) << 5) | offset);
+            for (std::uint32_t j = 0; j < entries[k].count; ++j) newOrder.push_back(entries[k].first + j);
+        }
+        node.childBase = std::uint32_t(out.nodes.size());
+        std::uint32_t interiorMask = 0;
+        for (int s = 0; s < kWideArity; ++s) {
+            for (std::size_t k = 0; k < entries.size(); ++k) {
+                if (slotOf[k] != s || !entries[k].interior) continue;
+                interiorMask |= 1u << s;
+                setByte(node.meta, s, 0x38u | std::uint32_t(s));
+                pending.push_back({std::uint32_t(out.nodes.size()), entries[k].binary, p.depth + 1});
+                out.nodes.emplace_back();
+            }
+        }
+        node.exponentsMask |= interiorMask << 24;
+        out.nodes[p.wide] = node;
+    }
+    PN_CHECK(newOrder.size() == bvh.primOrder.size());
+
+    // The binary tree in the new order: each binary leaf's primitives stayed consecutive.
+    std::vector<std::uint32_t> newPosition(newOrder.size());
+    for (std::uint32_t k = 0; k < newOrder.size(); ++k) newPosition[newOrder[k]] = k;
+    for (shader::BvhNode& n : bvh.nodes) {
+        if (n.triCount == 0) continue;
+        const std::uint32_t first = newPosition[n.firstOrRight];
+        for (std::uint32_t j = 1; j < n.triCount; ++j) PN_CHECK(newPosition[n.firstOrRight + j] == first + j);
+        n.firstOrRight = first;
+    }
+    std::vector<std::uint32_t> primOrder(newOrder.size());
+    for (std::size_t k = 0; k < newOrder.size(); ++k) primOrder[k] = bvh.primOrder[newOrder[k]];
+    bvh.primOrder = std::move(primOrder);
+    return out;
+}
+
+}  // namespace penumbra::bvh
