@@ -1,6 +1,7 @@
 #include "bvh/wide.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <limits>
 #include <cmath>
@@ -41,65 +42,113 @@ struct Subtrees {
 
 Aabb boxOf(const shader::BvhNode& n) { return Aabb{n.boundsMin, n.boundsMax}; }
 
+// Which binary subtrees become a wide node's slots, chosen by the SAH dynamic program of
+// Ylitie et al. (section 3.1): cost[n][i] is the least SAH cost of subtree n spread over at most
+// i + 1 slots of its wide parent, as a leaf (at most three primitives per slot), as one wide
+// interior child, or split between its two children. Binary leaves of more than three
+// primitives take several slots (or become a wide node of their pieces).
 class Collapser {
 public:
-    Collapser(const std::vector<shader::BvhNode>& nodes) : nodes_(nodes), sub_(nodes) {}
-
-    // Slots binary node b takes as an entry: one for a wide child, one per three primitives.
-    int slots(std::uint32_t b) const { return expandable(b) ? 1 : int((sub_.count[b] + 2) / 3); }
-    bool expandable(std::uint32_t b) const {
-        return nodes_[b].triCount == 0 && sub_.count[b] > std::uint32_t(kWideLeafPrimitives);
+    explicit Collapser(const std::vector<shader::BvhNode>& nodes)
+        : nodes_(nodes), sub_(nodes), cost_(nodes.size()), choice_(nodes.size()), split_(nodes.size()) {
+        for (std::size_t n = nodes.size(); n-- > 0;) solve(std::uint32_t(n));
     }
 
-    // The binary nodes the wide node made from `b` holds: b's children, then the largest boxes
-    // opened while they fit in eight slots.
-    std::vector<std::uint32_t> gather(std::uint32_t b) const {
-        if (!expandable(b)) return {b};  // the root alone: a wide node of leaf slots
-        std::vector<std::uint32_t> open = {b + 1, nodes_[b].firstOrRight};
-        int used = slots(b + 1) + slots(nodes_[b].firstOrRight);
-        for (;;) {
-            int best = -1;
-            float bestArea = -1.0f;
-            for (std::size_t k = 0; k < open.size(); ++k) {
-                const std::uint32_t c = open[k];
-                if (!expandable(c)) continue;
-                const int grown = used - 1 + slots(c + 1) + slots(nodes_[c].firstOrRight);
-                const float area = boxOf(nodes_[c]).halfArea();
-                if (grown <= kWideArity && area > bestArea) {
-                    best = int(k);
-                    bestArea = area;
-                }
-            }
-            if (best < 0) return open;
-            const std::uint32_t c = open[std::size_t(best)];
-            used += slots(c + 1) + slots(nodes_[c].firstOrRight) - 1;
-            open[std::size_t(best)] = c + 1;
-            open.insert(open.begin() + best + 1, nodes_[c].firstOrRight);
-        }
-    }
-
+    // The wide node made from binary node b (the root, or an interior slot's subtree).
     std::vector<Entry> entries(std::uint32_t b) const {
         std::vector<Entry> out;
-        for (std::uint32_t c : gather(b)) {
-            const Aabb box = boxOf(nodes_[c]);
-            if (expandable(c)) {
-                out.push_back({c, box, true, 0, 0});
-                continue;
-            }
-            const std::uint32_t n = sub_.count[c];
-            if (n > std::uint32_t(kWideMaxBinaryLeaf))
-                throw Error("the wide BVH takes binary leaves of at most " + std::to_string(kWideMaxBinaryLeaf) +
-                            " primitives, not " + std::to_string(n));
-            for (std::uint32_t k = 0; k < n; k += kWideLeafPrimitives)
-                out.push_back({c, box, false, sub_.first[c] + k, std::min<std::uint32_t>(kWideLeafPrimitives, n - k)});
+        if (nodes_[b].triCount > 0 || sub_.count[b] <= std::uint32_t(kWideLeafPrimitives)) {
+            addLeaf(b, out);
+        } else {
+            const int k = split_[b];
+            expand(b + 1, k, out);
+            expand(nodes_[b].firstOrRight, kWideArity - k, out);
         }
         PN_CHECK(out.size() <= std::size_t(kWideArity));
         return out;
     }
 
 private:
+    static constexpr float kNodeCost = 1.0f;       // visiting a wide node
+    static constexpr float kPrimitiveCost = 0.3f;  // one primitive test (the paper's ratio)
+    static constexpr std::uint8_t kLeaf = 0, kInterior = 1;  // choices; 2 + k: split, k slots left
+
+    float area(std::uint32_t n) const { return std::max(boxOf(nodes_[n]).halfArea(), 0.0f); }
+    int leafSlots(std::uint32_t n) const { return int((sub_.count[n] + 2) / 3); }
+    bool canBeLeaf(std::uint32_t n) const {
+        return nodes_[n].triCount > 0 || sub_.count[n] <= std::uint32_t(kWideLeafPrimitives);
+    }
+
+    void solve(std::uint32_t n) {
+        const shader::BvhNode& node = nodes_[n];
+        if (node.triCount > std::uint32_t(kWideMaxBinaryLeaf))
+            throw Error("the wide BVH takes binary leaves of at most " + std::to_string(kWideMaxBinaryLeaf) +
+                        " primitives, not " + std::to_string(node.triCount));
+        const float leafCost = area(n) * kPrimitiveCost * float(sub_.count[n]);
+        float splitCost[kWideArity] = {};  // [i]: the children sharing i + 1 slots
+        int bestSplit[kWideArity] = {};
+        if (node.triCount == 0) {
+            const std::uint32_t l = n + 1, r = node.firstOrRight;
+            for (int i = 1; i < kWideArity; ++i) {
+                splitCost[i] = std::numeric_limits<float>::infinity();
+                for (int k = 1; k <= i; ++k) {
+                    const float c = cost_[l][k - 1] + cost_[r][i - k];
+                    if (c < splitCost[i]) {
+                        splitCost[i] = c;
+                        bestSplit[i] = k;
+                    }
+                }
+            }
+        }
+        // As a wide node of its own: its leaf pieces, or its children over eight slots.
+        const float interiorCost = area(n) * kNodeCost + (node.triCount > 0 ? leafCost : splitCost[kWideArity - 1]);
+        split_[n] = std::uint8_t(bestSplit[kWideArity - 1]);
+        for (int i = 0; i < kWideArity; ++i) {
+            float best = interiorCost;
+            std::uint8_t choice = kInterior;
+            if (canBeLeaf(n) && leafSlots(n) <= i + 1 && leafCost <= best) {
+                best = leafCost;
+                choice = kLeaf;
+            }
+            if (node.triCount == 0 && i > 0 && splitCost[i] < best) {
+                best = splitCost[i];
+                choice = std::uint8_t(2 + bestSplit[i]);
+            }
+            if (i > 0 && cost_[n][i - 1] <= best) {  // fewer slots do at least as well
+                best = cost_[n][i - 1];
+                choice = choice_[n][i - 1];
+            }
+            cost_[n][i] = best;
+            choice_[n][i] = choice;
+        }
+    }
+
+    // Subtree n's entries in at most `slots` slots, as the program chose.
+    void expand(std::uint32_t n, int slots, std::vector<Entry>& out) const {
+        const std::uint8_t choice = choice_[n][slots - 1];
+        if (choice == kLeaf) {
+            addLeaf(n, out);
+        } else if (choice == kInterior) {
+            out.push_back({n, boxOf(nodes_[n]), true, 0, 0});
+        } else {
+            const int k = choice - 2;
+            expand(n + 1, k, out);
+            expand(nodes_[n].firstOrRight, slots - k, out);
+        }
+    }
+
+    void addLeaf(std::uint32_t n, std::vector<Entry>& out) const {
+        const std::uint32_t count = sub_.count[n];
+        for (std::uint32_t k = 0; k < count; k += kWideLeafPrimitives)
+            out.push_back({n, boxOf(nodes_[n]), false, sub_.first[n] + k,
+                           std::min<std::uint32_t>(kWideLeafPrimitives, count - k)});
+    }
+
     const std::vector<shader::BvhNode>& nodes_;
     Subtrees sub_;
+    std::vector<std::array<float, kWideArity>> cost_;
+    std::vector<std::array<std::uint8_t, kWideArity>> choice_;
+    std::vector<std::uint8_t> split_;  // the best split of a node's children over eight slots
 };
 
 // Slot of each entry: slot s goes to the entry nearest a ray travelling along the diagonal with
