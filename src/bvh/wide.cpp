@@ -21,24 +21,15 @@ struct Entry {
     std::uint32_t first = 0, count = 0;  // leaf entries: primitives [first, first + count), old order
 };
 
-// Per binary node: primitives below it and the first of them (leaf order), filled bottom-up
-// (children always follow their parent in the depth-first array).
-struct Subtrees {
-    std::vector<std::uint32_t> count, first;
-    explicit Subtrees(const std::vector<shader::BvhNode>& nodes) : count(nodes.size()), first(nodes.size()) {
-        for (std::size_t i = nodes.size(); i-- > 0;) {
-            const shader::BvhNode& n = nodes[i];
-            if (n.triCount > 0) {
-                count[i] = n.triCount;
-                first[i] = n.firstOrRight;
-            } else {
-                PN_CHECK(i + 1 < nodes.size() && n.firstOrRight < nodes.size() && n.firstOrRight > i);
-                count[i] = count[i + 1] + count[n.firstOrRight];
-                first[i] = first[i + 1];
-            }
-        }
-    }
+// The primitives of a small subtree (a slot's leaf): its first (leaf order) and count.
+struct Range {
+    std::uint32_t first = 0, count = 0;
 };
+Range subtreeRange(const std::vector<shader::BvhNode>& nodes, std::uint32_t n) {
+    if (nodes[n].triCount > 0) return {nodes[n].firstOrRight, nodes[n].triCount};
+    const Range left = subtreeRange(nodes, n + 1), right = subtreeRange(nodes, nodes[n].firstOrRight);
+    return {left.first, left.count + right.count};
+}
 
 Aabb boxOf(const shader::BvhNode& n) { return Aabb{n.boundsMin, n.boundsMax}; }
 
@@ -47,17 +38,16 @@ Aabb boxOf(const shader::BvhNode& n) { return Aabb{n.boundsMin, n.boundsMax}; }
 // i + 1 slots of its wide parent, as a leaf (at most three primitives per slot), as one wide
 // interior child, or split between its two children. Binary leaves of more than three
 // primitives take several slots (or become a wide node of their pieces).
+// (The binary builder bounds the depth by PN_BVH_MAX_DEPTH, which bounds the recursion.)
 class Collapser {
 public:
     explicit Collapser(const std::vector<shader::BvhNode>& nodes)
-        : nodes_(nodes), sub_(nodes), cost_(nodes.size()), choice_(nodes.size()), split_(nodes.size()) {
-        for (std::size_t n = nodes.size(); n-- > 0;) solve(std::uint32_t(n));
-    }
+        : nodes_(nodes), choice_(nodes.size()), split_(nodes.size()), rootCount_(solve(0).count) {}
 
     // The wide node made from binary node b (the root, or an interior slot's subtree).
     std::vector<Entry> entries(std::uint32_t b) const {
         std::vector<Entry> out;
-        if (nodes_[b].triCount > 0 || sub_.count[b] <= std::uint32_t(kWideLeafPrimitives)) {
+        if (nodes_[b].triCount > 0 || (b == 0 && rootCount_ <= std::uint32_t(kWideLeafPrimitives))) {
             addLeaf(b, out);
         } else {
             const int k = split_[b];
@@ -74,25 +64,31 @@ private:
     static constexpr std::uint8_t kLeaf = 0, kInterior = 1;  // choices; 2 + k: split, k slots left
 
     float area(std::uint32_t n) const { return std::max(boxOf(nodes_[n]).halfArea(), 0.0f); }
-    int leafSlots(std::uint32_t n) const { return int((sub_.count[n] + 2) / 3); }
-    bool canBeLeaf(std::uint32_t n) const {
-        return nodes_[n].triCount > 0 || sub_.count[n] <= std::uint32_t(kWideLeafPrimitives);
-    }
+    struct Costs {
+        std::array<float, kWideArity> cost;
+        std::uint32_t count;  // primitives below
+    };
 
-    void solve(std::uint32_t n) {
+    // Post-order, so that only the costs along the current path are alive (the choices are kept
+    // for every node); the depth is at most PN_BVH_MAX_DEPTH.
+    Costs solve(std::uint32_t n) {
         const shader::BvhNode& node = nodes_[n];
+        PN_CHECK(node.triCount > 0 || (node.firstOrRight > n + 1 && node.firstOrRight < nodes_.size()));
         if (node.triCount > std::uint32_t(kWideMaxBinaryLeaf))
             throw Error("the wide BVH takes binary leaves of at most " + std::to_string(kWideMaxBinaryLeaf) +
                         " primitives, not " + std::to_string(node.triCount));
-        const float leafCost = area(n) * kPrimitiveCost * float(sub_.count[n]);
         float splitCost[kWideArity] = {};  // [i]: the children sharing i + 1 slots
         int bestSplit[kWideArity] = {};
+        std::uint32_t count = node.triCount;
         if (node.triCount == 0) {
-            const std::uint32_t l = n + 1, r = node.firstOrRight;
+            const Costs l = solve(n + 1), r = solve(node.firstOrRight);
+            const auto& left = l.cost;
+            const auto& right = r.cost;
+            count = l.count + r.count;
             for (int i = 1; i < kWideArity; ++i) {
                 splitCost[i] = std::numeric_limits<float>::infinity();
                 for (int k = 1; k <= i; ++k) {
-                    const float c = cost_[l][k - 1] + cost_[r][i - k];
+                    const float c = left[k - 1] + right[i - k];
                     if (c < splitCost[i]) {
                         splitCost[i] = c;
                         bestSplit[i] = k;
@@ -100,13 +96,17 @@ private:
                 }
             }
         }
+        const float leafCost = area(n) * kPrimitiveCost * float(count);
+        const bool canBeLeaf = node.triCount > 0 || count <= std::uint32_t(kWideLeafPrimitives);
+        const int leafSlots = int((count + 2) / 3);
         // As a wide node of its own: its leaf pieces, or its children over eight slots.
         const float interiorCost = area(n) * kNodeCost + (node.triCount > 0 ? leafCost : splitCost[kWideArity - 1]);
         split_[n] = std::uint8_t(bestSplit[kWideArity - 1]);
+        std::array<float, kWideArity> cost;
         for (int i = 0; i < kWideArity; ++i) {
             float best = interiorCost;
             std::uint8_t choice = kInterior;
-            if (canBeLeaf(n) && leafSlots(n) <= i + 1 && leafCost <= best) {
+            if (canBeLeaf && leafSlots <= i + 1 && leafCost <= best) {
                 best = leafCost;
                 choice = kLeaf;
             }
@@ -114,13 +114,14 @@ private:
                 best = splitCost[i];
                 choice = std::uint8_t(2 + bestSplit[i]);
             }
-            if (i > 0 && cost_[n][i - 1] <= best) {  // fewer slots do at least as well
-                best = cost_[n][i - 1];
+            if (i > 0 && cost[i - 1] <= best) {  // fewer slots do at least as well
+                best = cost[i - 1];
                 choice = choice_[n][i - 1];
             }
-            cost_[n][i] = best;
+            cost[i] = best;
             choice_[n][i] = choice;
         }
+        return {cost, count};
     }
 
     // Subtree n's entries in at most `slots` slots, as the program chose.
@@ -138,17 +139,16 @@ private:
     }
 
     void addLeaf(std::uint32_t n, std::vector<Entry>& out) const {
-        const std::uint32_t count = sub_.count[n];
-        for (std::uint32_t k = 0; k < count; k += kWideLeafPrimitives)
-            out.push_back({n, boxOf(nodes_[n]), false, sub_.first[n] + k,
-                           std::min<std::uint32_t>(kWideLeafPrimitives, count - k)});
+        const Range range = subtreeRange(nodes_, n);  // a binary leaf, or at most three primitives
+        for (std::uint32_t k = 0; k < range.count; k += kWideLeafPrimitives)
+            out.push_back({n, boxOf(nodes_[n]), false, range.first + k,
+                           std::min<std::uint32_t>(kWideLeafPrimitives, range.count - k)});
     }
 
     const std::vector<shader::BvhNode>& nodes_;
-    Subtrees sub_;
-    std::vector<std::array<float, kWideArity>> cost_;
     std::vector<std::array<std::uint8_t, kWideArity>> choice_;
     std::vector<std::uint8_t> split_;  // the best split of a node's children over eight slots
+    std::uint32_t rootCount_;
 };
 
 // Slot of each entry: slot s goes to the entry nearest a ray travelling along the diagonal with
@@ -272,6 +272,7 @@ WideBvh collapseToWide(Bvh& bvh) {
         std::uint32_t wide, binary, depth;
     };
     std::vector<Pending> pending = {{0, 0, 1}};
+    out.nodes.reserve(bvh.nodes.size() / 6 + 1);  // about one wide node per eight binary ones
     out.nodes.emplace_back();
     while (!pending.empty()) {
         const Pending p = pending.back();

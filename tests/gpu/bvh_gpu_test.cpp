@@ -71,7 +71,7 @@ void expectAgreement(const gpu::Context& ctx, const Scene& scene, std::size_t ra
         if (ref.triangle == PN_NO_HIT) continue;
         ++hits;
         EXPECT_EQ(cpuWide.t, ref.t) << "CPU wide, ray " << i;
-        for (const shader::HitRecord* gh : {&g, &brute.closest[i], &wide.closest[i]}) {
+        for (const shader::HitRecord* gh : std::initializer_list<const shader::HitRecord*>{&g, &brute.closest[i], &wide.closest[i]}) {
             EXPECT_NEAR(gh->t, ref.t, 1e-5f * std::max(1.0f, ref.t)) << "ray " << i;
             // Same triangle, unless two triangles tie at this distance (coplanar duplicates).
             if (gh->triangle != ref.triangle) {

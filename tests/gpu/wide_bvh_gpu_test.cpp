@@ -143,5 +143,29 @@ TEST_F(GpuTest, WideBvhMatchesBinaryAndBruteForceThroughAlphaTestedHoles) {
     EXPECT_GT(behind, rays.size() / 5);
 }
 
+// The comparisons above would pass if --accel wide silently ran the binary walk: with every
+// slot of the wide nodes emptied, the wide walk must find nothing where the binary walk hits.
+TEST_F(GpuTest, WideAccelReallyWalksTheWideNodes) {
+    SceneArrays arrays = buildSceneArrays(alphaStack());
+    for (shader::WideNode& n : arrays.wideNodes) n.meta[0] = n.meta[1] = 0;
+    std::vector<shader::RayDesc> rays;
+    for (int i = 0; i < 64; ++i) {
+        shader::RayDesc r{};
+        r.origin = Vec3{-1.9f + 0.06f * float(i), 0.3f, 3.0f};
+        r.direction = Vec3{0, 0, -1};
+        r.tMax = 1e30f;
+        rays.push_back(r);
+    }
+    const GpuHits bvh = traceOnGpu(*ctx, arrays, rays, Accel::Bvh);
+    const GpuHits wide = traceOnGpu(*ctx, arrays, rays, Accel::Wide);
+    std::size_t binaryHits = 0, wideHits = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        binaryHits += bvh.closest[i].triangle != PN_NO_HIT;
+        wideHits += wide.closest[i].triangle != PN_NO_HIT || wide.occluded[i];
+    }
+    EXPECT_EQ(binaryHits, rays.size());
+    EXPECT_EQ(wideHits, 0u);
+}
+
 }  // namespace
 }  // namespace penumbra::test
