@@ -21,6 +21,21 @@ struct Entry {
     std::uint32_t first = 0, count = 0;  // leaf entries: primitives [first, first + count), old order
 };
 
+// A wide node's entries: at most eight, kept off the heap.
+struct Entries {
+    std::array<Entry, kWideArity> items;
+    std::size_t count = 0;
+    void push_back(const Entry& e) {
+        PN_CHECK(count < items.size());
+        items[count++] = e;
+    }
+    std::size_t size() const { return count; }
+    const Entry& operator[](std::size_t i) const { return items[i]; }
+    const Entry* begin() const { return items.data(); }
+    const Entry* end() const { return items.data() + count; }
+};
+using SlotOf = std::array<int, kWideArity>;  // the slot of each entry
+
 // The primitives of a small subtree (a slot's leaf): its first (leaf order) and count.
 struct Range {
     std::uint32_t first = 0, count = 0;
@@ -45,8 +60,8 @@ public:
         : nodes_(nodes), choice_(nodes.size()), split_(nodes.size()), rootCount_(solve(0).count) {}
 
     // The wide node made from binary node b (the root, or an interior slot's subtree).
-    std::vector<Entry> entries(std::uint32_t b) const {
-        std::vector<Entry> out;
+    Entries entries(std::uint32_t b) const {
+        Entries out;
         if (nodes_[b].triCount > 0 || (b == 0 && rootCount_ <= std::uint32_t(kWideLeafPrimitives))) {
             addLeaf(b, out);
         } else {
@@ -54,7 +69,6 @@ public:
             expand(b + 1, k, out);
             expand(nodes_[b].firstOrRight, kWideArity - k, out);
         }
-        PN_CHECK(out.size() <= std::size_t(kWideArity));
         return out;
     }
 
@@ -125,7 +139,7 @@ private:
     }
 
     // Subtree n's entries in at most `slots` slots, as the program chose.
-    void expand(std::uint32_t n, int slots, std::vector<Entry>& out) const {
+    void expand(std::uint32_t n, int slots, Entries& out) const {
         const std::uint8_t choice = choice_[n][slots - 1];
         if (choice == kLeaf) {
             addLeaf(n, out);
@@ -138,7 +152,7 @@ private:
         }
     }
 
-    void addLeaf(std::uint32_t n, std::vector<Entry>& out) const {
+    void addLeaf(std::uint32_t n, Entries& out) const {
         const Range range = subtreeRange(nodes_, n);  // a binary leaf, or at most three primitives
         for (std::uint32_t k = 0; k < range.count; k += kWideLeafPrimitives)
             out.push_back({n, boxOf(nodes_[n]), false, range.first + k,
@@ -154,9 +168,16 @@ private:
 // Slot of each entry: slot s goes to the entry nearest a ray travelling along the diagonal with
 // sign bits s (bit k set: negative along axis k), greedily by the smallest projection of the
 // entry's centre (relative to the node's) on that diagonal.
-std::vector<int> assignSlots(const std::vector<Entry>& entries, const Aabb& parent) {
+SlotOf assignSlots(const Entries& entries, const Aabb& parent) {
     const Vec3 centre = parent.center();
-    std::vector<int> slotOf(entries.size(), -1);
+    float cost[kWideArity][kWideArity];
+    for (std::size_t e = 0; e < entries.size(); ++e) {
+        const Vec3 offset = entries[e].box.center() - centre;
+        for (int s = 0; s < kWideArity; ++s)
+            cost[e][s] = (s & 1 ? -offset.x : offset.x) + (s & 2 ? -offset.y : offset.y) + (s & 4 ? -offset.z : offset.z);
+    }
+    SlotOf slotOf;
+    slotOf.fill(-1);
     bool slotTaken[kWideArity] = {};
     for (std::size_t round = 0; round < entries.size(); ++round) {
         float best = std::numeric_limits<float>::infinity();
@@ -164,16 +185,11 @@ std::vector<int> assignSlots(const std::vector<Entry>& entries, const Aabb& pare
         int bestSlot = -1;
         for (std::size_t e = 0; e < entries.size(); ++e) {
             if (slotOf[e] >= 0) continue;
-            const Vec3 offset = entries[e].box.center() - centre;
             for (int s = 0; s < kWideArity; ++s) {
-                if (slotTaken[s]) continue;
-                const float cost = (s & 1 ? -offset.x : offset.x) + (s & 2 ? -offset.y : offset.y) +
-                                   (s & 4 ? -offset.z : offset.z);
-                if (bestSlot < 0 || cost < best) {
-                    best = cost;
-                    bestEntry = e;
-                    bestSlot = s;
-                }
+                if (slotTaken[s] || (bestSlot >= 0 && !(cost[e][s] < best))) continue;
+                best = cost[e][s];
+                bestEntry = e;
+                bestSlot = s;
             }
         }
         slotOf[bestEntry] = bestSlot;
@@ -196,7 +212,7 @@ float decodePlane(float origin, std::uint32_t q, float scale) { return origin + 
 // Quantizes the entries' boxes along one axis: the smallest exponent whose 255 steps cover the
 // node, with each lower plane rounded down and each upper plane up until the decoded planes
 // contain the child's (checked in float, as decoded). Returns the biased exponent.
-std::uint32_t quantizeAxis(const std::vector<Entry>& entries, const std::vector<int>& slotOf, int axis, float origin,
+std::uint32_t quantizeAxis(const Entries& entries, const SlotOf& slotOf, int axis, float origin,
                            float top, std::uint32_t (&lo)[2], std::uint32_t (&hi)[2]) {
     const double extent = double(top) - double(origin);
     int e = -126;
@@ -225,7 +241,7 @@ std::uint32_t quantizeAxis(const std::vector<Entry>& entries, const std::vector<
     }
 }
 
-shader::WideNode encodeNode(const std::vector<Entry>& entries, const std::vector<int>& slotOf) {
+shader::WideNode encodeNode(const Entries& entries, const SlotOf& slotOf) {
     Aabb box;
     for (const Entry& e : entries) box.grow(e.box);
     shader::WideNode node{};
@@ -278,8 +294,8 @@ WideBvh collapseToWide(Bvh& bvh) {
         const Pending p = pending.back();
         pending.pop_back();
         out.maxDepth = std::max(out.maxDepth, p.depth);
-        const std::vector<Entry> entries = collapser.entries(p.binary);
-        const std::vector<int> slotOf = assignSlots(entries, boxOf(bvh.nodes[p.binary]));
+        const Entries entries = collapser.entries(p.binary);
+        const SlotOf slotOf = assignSlots(entries, boxOf(bvh.nodes[p.binary]));
         shader::WideNode node = encodeNode(entries, slotOf);
         // Leaves' primitives in entry order (the pieces of one binary leaf stay together), then
         // the interior children in slot order, contiguous.
