@@ -153,7 +153,7 @@ void runBench(const BenchArgs& args) {
     RayBenchResult r = runRayBench(*ctx, renderer, args.repeats);
     const SceneArrays& a = renderer.sceneArrays();
     if (settings.accel == Accel::Wide && a.wideNodes.empty())
-        std::fprintf(stderr, "penumbra: warning: scenes with instances keep the binary BVH; --accel wide measures it\n");
+        std::fprintf(stderr, "penumbra: warning: this scene has instances, which the wide BVH does not cover: the figures are the binary BVH's\n");
 
     if (args.json) {
         std::printf(
