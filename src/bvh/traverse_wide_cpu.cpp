@@ -22,14 +22,15 @@ constexpr std::uint32_t kInteriorBits = 0xff000000u;
 
 // onPrimitive(slot) returns true to stop the walk (any hit).
 template <typename OnPrimitive>
-void traverseWide(std::span<const shader::WideNode> nodes, const Ray& ray, const float& tMax, TraversalCounts* counts,
-                  OnPrimitive&& onPrimitive) {
+void traverseWide(std::span<const shader::WideNode> nodes, const Ray& ray, const float& tMax,
+                  TraversalCounts* counts, OnPrimitive&& onPrimitive) {
     if (nodes.empty()) return;
     const SlabRay slab(ray);
     // Slot s holds the child nearest to rays with sign bits s; XOR with the flipped octant puts
     // this ray's nearest child at the highest bit.
-    const std::uint32_t octantFlip = 7u ^ ((slab.negative[0] ? 1u : 0u) | (slab.negative[1] ? 2u : 0u) |
-                                           (slab.negative[2] ? 4u : 0u));
+    const std::uint32_t octantFlip =
+        7u ^ ((slab.negative[0] ? 1u : 0u) | (slab.negative[1] ? 2u : 0u) |
+              (slab.negative[2] ? 4u : 0u));
     Group stack[PN_BVH_STACK_SIZE];
     int sp = 0;
     Group group{0, 0x80000000u};  // the root, as the only interior child of a node with mask 0
@@ -43,7 +44,8 @@ void traverseWide(std::span<const shader::WideNode> nodes, const Ray& ray, const
                 stack[sp++] = group;
             }
             const std::uint32_t slot = std::uint32_t(bit - 24) ^ octantFlip;
-            const std::uint32_t index = group.base + std::uint32_t(std::popcount(group.bits & 0xffu & ((1u << slot) - 1u)));
+            const std::uint32_t index =
+                group.base + std::uint32_t(std::popcount(group.bits & 0xffu & ((1u << slot) - 1u)));
             PN_CHECK(index < nodes.size());
             const shader::WideNode& node = nodes[index];
             if (counts) ++counts->nodesVisited;
@@ -52,7 +54,8 @@ void traverseWide(std::span<const shader::WideNode> nodes, const Ray& ray, const
                 const std::uint32_t meta = wideMeta(node, s);
                 if (wideSlotEmpty(meta)) continue;
                 const Aabb box = wideSlotBounds(node, s);
-                if (slab.enter(box.lo, box.hi, tMax) == std::numeric_limits<float>::infinity()) continue;
+                if (slab.enter(box.lo, box.hi, tMax) == std::numeric_limits<float>::infinity())
+                    continue;
                 if (wideSlotInterior(meta))
                     hits |= 1u << (24u + (std::uint32_t(s) ^ octantFlip));
                 else
@@ -79,14 +82,14 @@ void traverseWide(std::span<const shader::WideNode> nodes, const Ray& ray, const
 
 void checkSlot(std::uint32_t slot, std::size_t count) {
     if (slot >= count)
-        throw Error("wide BVH leaf references primitive " + std::to_string(slot) + " but only " + std::to_string(count) +
-                    " exist");
+        throw Error("wide BVH leaf references primitive " + std::to_string(slot) + " but only " +
+                    std::to_string(count) + " exist");
 }
 
 }  // namespace
 
-Hit closestHitWide(std::span<const shader::WideNode> nodes, std::span<const shader::TriVerts> tris, const Ray& ray,
-                   TraversalCounts* counts) {
+Hit closestHitWide(std::span<const shader::WideNode> nodes, std::span<const shader::TriVerts> tris,
+                   const Ray& ray, TraversalCounts* counts) {
     Hit hit;
     hit.t = ray.tMax;
     traverseWide(nodes, ray, hit.t, counts, [&](std::uint32_t i) {
@@ -98,8 +101,8 @@ Hit closestHitWide(std::span<const shader::WideNode> nodes, std::span<const shad
     return hit;
 }
 
-bool anyHitWide(std::span<const shader::WideNode> nodes, std::span<const shader::TriVerts> tris, const Ray& ray,
-                TraversalCounts* counts) {
+bool anyHitWide(std::span<const shader::WideNode> nodes, std::span<const shader::TriVerts> tris,
+                const Ray& ray, TraversalCounts* counts) {
     const float tMax = ray.tMax;
     bool found = false;
     traverseWide(nodes, ray, tMax, counts, [&](std::uint32_t i) {

@@ -12,10 +12,10 @@ namespace penumbra::bvh {
 
 // Closest hit with t in (0, ray.tMax), as closestHit for the binary tree; `tris` in the order
 // collapseToWide left. An empty node array never hits.
-Hit closestHitWide(std::span<const shader::WideNode> nodes, std::span<const shader::TriVerts> tris, const Ray& ray,
-                   TraversalCounts* counts = nullptr);
+Hit closestHitWide(std::span<const shader::WideNode> nodes, std::span<const shader::TriVerts> tris,
+                   const Ray& ray, TraversalCounts* counts = nullptr);
 // True at the first hit with t in (0, ray.tMax).
-bool anyHitWide(std::span<const shader::WideNode> nodes, std::span<const shader::TriVerts> tris, const Ray& ray,
-                TraversalCounts* counts = nullptr);
+bool anyHitWide(std::span<const shader::WideNode> nodes, std::span<const shader::TriVerts> tris,
+                const Ray& ray, TraversalCounts* counts = nullptr);
 
 }  // namespace penumbra::bvh

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/error.h"
@@ -18,7 +18,8 @@ struct Entry {
     std::uint32_t binary = 0;  // the binary node it came from
     Aabb box;
     bool interior = false;
-    std::uint32_t first = 0, count = 0;  // leaf entries: primitives [first, first + count), old order
+    std::uint32_t first = 0,
+                  count = 0;  // leaf entries: primitives [first, first + count), old order
 };
 
 // A wide node's entries: at most eight, kept off the heap.
@@ -42,7 +43,8 @@ struct Range {
 };
 Range subtreeRange(const std::vector<shader::BvhNode>& nodes, std::uint32_t n) {
     if (nodes[n].triCount > 0) return {nodes[n].firstOrRight, nodes[n].triCount};
-    const Range left = subtreeRange(nodes, n + 1), right = subtreeRange(nodes, nodes[n].firstOrRight);
+    const Range left = subtreeRange(nodes, n + 1),
+                right = subtreeRange(nodes, nodes[n].firstOrRight);
     return {left.first, left.count + right.count};
 }
 
@@ -62,7 +64,8 @@ public:
     // The wide node made from binary node b (the root, or an interior slot's subtree).
     Entries entries(std::uint32_t b) const {
         Entries out;
-        if (nodes_[b].triCount > 0 || (b == 0 && rootCount_ <= std::uint32_t(kWideLeafPrimitives))) {
+        if (nodes_[b].triCount > 0 ||
+            (b == 0 && rootCount_ <= std::uint32_t(kWideLeafPrimitives))) {
             addLeaf(b, out);
         } else {
             const int k = split_[b];
@@ -87,10 +90,12 @@ private:
     // for every node); the depth is at most PN_BVH_MAX_DEPTH.
     Costs solve(std::uint32_t n) {
         const shader::BvhNode& node = nodes_[n];
-        PN_CHECK(node.triCount > 0 || (node.firstOrRight > n + 1 && node.firstOrRight < nodes_.size()));
+        PN_CHECK(node.triCount > 0 ||
+                 (node.firstOrRight > n + 1 && node.firstOrRight < nodes_.size()));
         if (node.triCount > std::uint32_t(kWideMaxBinaryLeaf))
-            throw Error("the wide BVH takes binary leaves of at most " + std::to_string(kWideMaxBinaryLeaf) +
-                        " primitives, not " + std::to_string(node.triCount));
+            throw Error("the wide BVH takes binary leaves of at most " +
+                        std::to_string(kWideMaxBinaryLeaf) + " primitives, not " +
+                        std::to_string(node.triCount));
         float splitCost[kWideArity] = {};  // [i]: the children sharing i + 1 slots
         int bestSplit[kWideArity] = {};
         std::uint32_t count = node.triCount;
@@ -114,7 +119,8 @@ private:
         const bool canBeLeaf = node.triCount > 0 || count <= std::uint32_t(kWideLeafPrimitives);
         const int leafSlots = int((count + 2) / 3);
         // As a wide node of its own: its leaf pieces, or its children over eight slots.
-        const float interiorCost = area(n) * kNodeCost + (node.triCount > 0 ? leafCost : splitCost[kWideArity - 1]);
+        const float interiorCost =
+            area(n) * kNodeCost + (node.triCount > 0 ? leafCost : splitCost[kWideArity - 1]);
         split_[n] = std::uint8_t(bestSplit[kWideArity - 1]);
         std::array<float, kWideArity> cost;
         for (int i = 0; i < kWideArity; ++i) {
@@ -174,7 +180,8 @@ SlotOf assignSlots(const Entries& entries, const Aabb& parent) {
     for (std::size_t e = 0; e < entries.size(); ++e) {
         const Vec3 offset = entries[e].box.center() - centre;
         for (int s = 0; s < kWideArity; ++s)
-            cost[e][s] = (s & 1 ? -offset.x : offset.x) + (s & 2 ? -offset.y : offset.y) + (s & 4 ? -offset.z : offset.z);
+            cost[e][s] = (s & 1 ? -offset.x : offset.x) + (s & 2 ? -offset.y : offset.y) +
+                         (s & 4 ? -offset.z : offset.z);
     }
     SlotOf slotOf;
     slotOf.fill(-1);
@@ -202,7 +209,9 @@ void setByte(std::uint32_t (&words)[2], int slot, std::uint32_t value) {
     const int shift = 8 * (slot % 4);
     words[slot / 4] = (words[slot / 4] & ~(0xffu << shift)) | (value << shift);
 }
-std::uint32_t getByte(const std::uint32_t (&words)[2], int slot) { return (words[slot / 4] >> (8 * (slot % 4))) & 0xffu; }
+std::uint32_t getByte(const std::uint32_t (&words)[2], int slot) {
+    return (words[slot / 4] >> (8 * (slot % 4))) & 0xffu;
+}
 
 float exponentScale(std::uint32_t biased) { return std::bit_cast<float>(biased << 23); }
 
@@ -266,9 +275,11 @@ Aabb wideSlotBounds(const shader::WideNode& node, int slot) {
     const float sy = exponentScale((node.exponentsMask >> 8) & 0xffu);
     const float sz = exponentScale((node.exponentsMask >> 16) & 0xffu);
     Aabb b;
-    b.lo = Vec3{decodePlane(node.origin.x, getByte(node.loX, slot), sx), decodePlane(node.origin.y, getByte(node.loY, slot), sy),
+    b.lo = Vec3{decodePlane(node.origin.x, getByte(node.loX, slot), sx),
+                decodePlane(node.origin.y, getByte(node.loY, slot), sy),
                 decodePlane(node.origin.z, getByte(node.loZ, slot), sz)};
-    b.hi = Vec3{decodePlane(node.origin.x, getByte(node.hiX, slot), sx), decodePlane(node.origin.y, getByte(node.hiY, slot), sy),
+    b.hi = Vec3{decodePlane(node.origin.x, getByte(node.hiX, slot), sx),
+                decodePlane(node.origin.y, getByte(node.hiY, slot), sy),
                 decodePlane(node.origin.z, getByte(node.hiZ, slot), sz)};
     return b;
 }
@@ -282,7 +293,8 @@ WideBvh collapseToWide(Bvh& bvh) {
     WideBvh out;
     if (bvh.nodes.empty()) return out;
     const Collapser collapser(bvh.nodes);
-    std::vector<std::uint32_t> newOrder;  // newOrder[k] = old leaf-order position of the k-th primitive
+    std::vector<std::uint32_t>
+        newOrder;  // newOrder[k] = old leaf-order position of the k-th primitive
     newOrder.reserve(bvh.primOrder.size());
     struct Pending {
         std::uint32_t wide, binary, depth;
@@ -305,7 +317,8 @@ WideBvh collapseToWide(Bvh& bvh) {
             const std::uint32_t offset = std::uint32_t(newOrder.size()) - node.primBase;
             PN_CHECK(offset + entries[k].count <= std::uint32_t(kWideArity * kWideLeafPrimitives));
             setByte(node.meta, slotOf[k], (unaryCount(entries[k].count) << 5) | offset);
-            for (std::uint32_t j = 0; j < entries[k].count; ++j) newOrder.push_back(entries[k].first + j);
+            for (std::uint32_t j = 0; j < entries[k].count; ++j)
+                newOrder.push_back(entries[k].first + j);
         }
         node.childBase = std::uint32_t(out.nodes.size());
         std::uint32_t interiorMask = 0;
@@ -314,7 +327,8 @@ WideBvh collapseToWide(Bvh& bvh) {
                 if (slotOf[k] != s || !entries[k].interior) continue;
                 interiorMask |= 1u << s;
                 setByte(node.meta, s, 0x38u | std::uint32_t(s));
-                pending.push_back({std::uint32_t(out.nodes.size()), entries[k].binary, p.depth + 1});
+                pending.push_back(
+                    {std::uint32_t(out.nodes.size()), entries[k].binary, p.depth + 1});
                 out.nodes.emplace_back();
             }
         }
@@ -329,7 +343,8 @@ WideBvh collapseToWide(Bvh& bvh) {
     for (shader::BvhNode& n : bvh.nodes) {
         if (n.triCount == 0) continue;
         const std::uint32_t first = newPosition[n.firstOrRight];
-        for (std::uint32_t j = 1; j < n.triCount; ++j) PN_CHECK(newPosition[n.firstOrRight + j] == first + j);
+        for (std::uint32_t j = 1; j < n.triCount; ++j)
+            PN_CHECK(newPosition[n.firstOrRight + j] == first + j);
         n.firstOrRight = first;
     }
     std::vector<std::uint32_t> primOrder(newOrder.size());

@@ -14,10 +14,11 @@
 namespace penumbra::bvh {
 
 inline constexpr int kWideArity = 8;
-inline constexpr int kWideLeafPrimitives = 3;  // a slot's leaf holds at most this many (unary count in 3 bits)
-// A binary leaf spreads over several slots when it holds more than kWideLeafPrimitives; two such
-// leaves must fit in one node's eight slots.
-inline constexpr int kWideMaxBinaryLeaf = 12;
+inline constexpr int kWideLeafPrimitives =
+    3;  // a slot's leaf holds at most this many (unary count in 3 bits)
+// A binary leaf of more than kWideLeafPrimitives spreads over several slots, at most the eight of
+// a wide node of its own.
+inline constexpr int kWideMaxBinaryLeaf = kWideArity * kWideLeafPrimitives;
 
 struct WideBvh {
     std::vector<shader::WideNode> nodes;  // root first; empty when the binary tree is
@@ -36,7 +37,9 @@ Aabb wideSlotBounds(const shader::WideNode& node, int slot);
 
 inline bool wideSlotEmpty(std::uint32_t meta) { return meta == 0; }
 inline bool wideSlotInterior(std::uint32_t meta) { return (meta & 0xf8u) == 0x38u; }
-inline std::uint32_t wideLeafCount(std::uint32_t meta) { return meta >> 7 ? 3u : (meta >> 6 ? 2u : 1u); }
+inline std::uint32_t wideLeafCount(std::uint32_t meta) {
+    return meta >> 7 ? 3u : (meta >> 6 ? 2u : 1u);
+}
 inline std::uint32_t wideLeafOffset(std::uint32_t meta) { return meta & 31u; }
 // The wide node index of an interior slot: childBase plus the interior slots below it.
 std::uint32_t wideChildIndex(const shader::WideNode& node, int slot);

@@ -21,7 +21,8 @@ std::vector<shader::RayDesc> boxRays(const Aabb& box, std::size_t count, std::ui
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     const Vec3 e = box.extent();
     auto point = [&](float margin) {
-        return Vec3{box.lo.x + e.x * (u(rng) * (1 + 2 * margin) - margin), box.lo.y + e.y * (u(rng) * (1 + 2 * margin) - margin),
+        return Vec3{box.lo.x + e.x * (u(rng) * (1 + 2 * margin) - margin),
+                    box.lo.y + e.y * (u(rng) * (1 + 2 * margin) - margin),
                     box.lo.z + e.z * (u(rng) * (1 + 2 * margin) - margin)};
     };
     std::vector<shader::RayDesc> rays;

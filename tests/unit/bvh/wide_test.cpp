@@ -1,6 +1,8 @@
 // The compressed wide BVH: its quantized boxes contain everything below them, every primitive
 // sits in exactly one leaf, and its reference walk finds the same closest hits as the binary
 // walk and brute force.
+#include "bvh/wide.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -10,7 +12,6 @@
 #include "bvh/sphere.h"
 #include "bvh/stats.h"
 #include "bvh/traverse_wide_cpu.h"
-#include "bvh/wide.h"
 #include "bvh_test_util.h"
 #include "core/error.h"
 
@@ -25,7 +26,8 @@ using test::sameT;
 struct Primitives {
     std::vector<shader::TriVerts> verts;
     std::vector<Aabb> boxes;
-    std::vector<Triangle> triangles;  // for the ray generator: triangles, and spheres' centres as points
+    std::vector<Triangle>
+        triangles;  // for the ray generator: triangles, and spheres' centres as points
 };
 
 Primitives fromTriangles(const std::vector<Triangle>& tris) {
@@ -115,18 +117,20 @@ void checkStructure(const Trees& t) {
                 }
             }
             EXPECT_TRUE(contains(slot, below))
-                << "node " << index << " slot " << s << ": decoded (" << slot.lo.x << " " << slot.lo.y << " "
-                << slot.lo.z << ")-(" << slot.hi.x << " " << slot.hi.y << " " << slot.hi.z << ") misses ("
-                << below.lo.x << " " << below.lo.y << " " << below.lo.z << ")-(" << below.hi.x << " " << below.hi.y
-                << " " << below.hi.z << ")";
+                << "node " << index << " slot " << s << ": decoded (" << slot.lo.x << " "
+                << slot.lo.y << " " << slot.lo.z << ")-(" << slot.hi.x << " " << slot.hi.y << " "
+                << slot.hi.z << ") misses (" << below.lo.x << " " << below.lo.y << " " << below.lo.z
+                << ")-(" << below.hi.x << " " << below.hi.y << " " << below.hi.z << ")";
             all.grow(below);
         }
         EXPECT_EQ(node.exponentsMask >> 24, interior) << "node " << index;
         return all;
     };
     visit(visit, 0, 1);
-    for (std::size_t i = 0; i < primSeen.size(); ++i) ASSERT_EQ(primSeen[i], 1) << "primitive " << i;
-    for (std::size_t i = 0; i < nodeSeen.size(); ++i) ASSERT_EQ(nodeSeen[i], 1) << "wide node " << i;
+    for (std::size_t i = 0; i < primSeen.size(); ++i)
+        ASSERT_EQ(primSeen[i], 1) << "primitive " << i;
+    for (std::size_t i = 0; i < nodeSeen.size(); ++i)
+        ASSERT_EQ(nodeSeen[i], 1) << "wide node " << i;
     EXPECT_EQ(deepest, t.wide.maxDepth);
     EXPECT_LE(std::size_t(t.wide.maxDepth), computeStats(t.binary, {}).maxDepth);
 }
@@ -156,6 +160,7 @@ void expectSameHits(const Trees& t, const std::vector<Ray>& rays) {
     }
 }
 
+// Random trees of every leaf size, scale and offset; the walk must agree on them too.
 TEST(WideBvh, QuantizedBoxesContainTheirChildrenOnRandomTrees) {
     std::mt19937 rng(11);
     for (int round = 0; round < 40; ++round) {
@@ -172,11 +177,12 @@ TEST(WideBvh, QuantizedBoxesContainTheirChildrenOnRandomTrees) {
             }
         BuildOptions options;
         options.maxLeafSize = 1 + int(rng() % kWideMaxBinaryLeaf);
-        SCOPED_TRACE(::testing::Message() << "round " << round << ", " << count << " triangles, leaves of up to "
-                                          << options.maxLeafSize);
+        SCOPED_TRACE(::testing::Message() << "round " << round << ", " << count
+                                          << " triangles, leaves of up to " << options.maxLeafSize);
         Primitives p = fromTriangles(tris);
         Trees t = buildBoth(p, options);
         checkStructure(t);
+        expectSameHits(t, mixedRays(tris, 100, std::uint32_t(round)));
         if (::testing::Test::HasFailure()) return;
     }
 }
@@ -248,7 +254,8 @@ TEST(WideBvh, RejectsLeavesTooBigToSpread) {
     options.traversalCost = 1000.0f;  // make the SAH prefer big leaves
     Bvh tree = buildTriangles(randomSoup(64, 9), options);
     bool big = false;
-    for (const shader::BvhNode& n : tree.nodes) big |= n.triCount > std::uint32_t(kWideMaxBinaryLeaf);
+    for (const shader::BvhNode& n : tree.nodes)
+        big |= n.triCount > std::uint32_t(kWideMaxBinaryLeaf);
     if (!big) GTEST_SKIP() << "the builder made no leaf over " << kWideMaxBinaryLeaf;
     EXPECT_THROW(collapseToWide(tree), Error);
 }
