@@ -18,7 +18,9 @@
 #
 # Settings (environment): SPP (default 16), PATH_LENGTH (Embree's --max-path-length, default 4:
 # the camera ray and three bounces, i.e. Penumbra's --bounces 3), WIDTH/HEIGHT (1920x1080),
-# SCENES (default "dragon dragon12"), REPEATS (penumbra bench's timed runs, default 20).
+# SCENES (default "dragon dragon12"), REPEATS (penumbra bench's timed runs, default 20),
+# ACCELS (the traversals `penumbra bench` measures, default "bvh wide"; rays.txt and the summary
+# give their Mrays/s side by side).
 #
 # What "the same" means here, and where the two differ:
 #  - Geometry: Penumbra reads dragon_vrip.ply.gz (it drops 108 zero-area faces); Embree reads an
@@ -39,6 +41,7 @@ set -euo pipefail
 SPP=${SPP:-16}
 SCENES=${SCENES:-dragon dragon12}
 REPEATS=${REPEATS:-20}
+ACCELS=${ACCELS:-bvh wide}
 PATH_LENGTH=${PATH_LENGTH:-4}
 WIDTH=${WIDTH:-1920}
 HEIGHT=${HEIGHT:-1080}
@@ -170,6 +173,14 @@ pack() {
 
 # --- run (GPU host) ---------------------------------------------------------------------------
 
+# "primary shadow diffuse frame" Mrays/s from a bench JSON ("?" where missing).
+bench_rays() {
+  local f
+  for f in primary shadow diffuse frame; do
+    sed -n "s/.*\"${f}_mrays_per_s\": *\([0-9.]*\).*/\1/p" "$1" | head -1 | grep . || echo "?"
+  done | tr '\n' ' '
+}
+
 ms_since() { awk -v a="$1" -v b="$(date +%s.%N)" 'BEGIN { printf "%.0f", (b - a) * 1000 }'; }
 
 # Penumbra's load and build (info), then its render. Appends "name load build render gpu" to $1.
@@ -184,8 +195,13 @@ penumbra_scene() {  # TABLE NAME SCENE_FILE
   PENUMBRA_CACHE_DIR=$WORK/cache penumbra info "$scene" >> "$log" 2>&1
   local cached
   cached=$(sed -n 's/.*read from the cache in \([0-9.]*\) ms.*/\1/p' "$log" | tail -1)
-  penumbra bench "$scene" --json --no-bvh-cache --width "$WIDTH" --height "$HEIGHT" --bounces "$BOUNCES" \
-    --repeats "$REPEATS" > "$OUT/penumbra-$name-bench.json" 2>&1 || true
+  # The ray benchmark once per traversal: primary, shadow and diffuse rays, and the whole frame.
+  local accel
+  for accel in $ACCELS; do
+    penumbra bench "$scene" --json --no-bvh-cache --width "$WIDTH" --height "$HEIGHT" --bounces "$BOUNCES" \
+      --repeats "$REPEATS" --accel "$accel" > "$OUT/penumbra-$name-bench-$accel.json" 2>&1 || true
+    echo "$name $accel $(bench_rays "$OUT/penumbra-$name-bench-$accel.json")" >> "$OUT/rays.txt"
+  done
   local t0 line
   t0=$(date +%s.%N)
   line=$(penumbra render "$scene" --width "$WIDTH" --height "$HEIGHT" --spp "$SPP" --bounces "$BOUNCES" \
@@ -244,6 +260,7 @@ run() {
   nproc > "$OUT/cpus.txt"
   local table=$OUT/table.txt
   : > "$table"
+  : > "$OUT/rays.txt"
   penumbra info 2>&1 | grep -E '^(device|chosen)' > "$OUT/device.txt" || true
   # The CPU BVH build on two of the host's cores (the issue's 2-core target) and on all of them.
   if command -v bench_bvh_build >/dev/null && [ "$where" = host ]; then
@@ -274,6 +291,13 @@ run() {
     done < "$table"
     echo "(penumbra render ms: the whole 'penumbra render' command, load and build included; gpu/rnd:"
     echo " Penumbra's GPU time, Embree's wall clock minus its load and build)"
+    echo
+    echo "penumbra bench, Mrays/s (${WIDTH}x${HEIGHT}, medians of $REPEATS):"
+    printf '%-9s %-6s %10s %10s %10s %10s\n' scene accel primary shadow diffuse frame
+    while read -r name accel primary shadow diffuse frame; do
+      printf '%-9s %-6s %10s %10s %10s %10s\n' "$name" "$accel" "$primary" "$shadow" "$diffuse" "$frame"
+    done < "$OUT/rays.txt"
+    grep -h 'gpu memory per triangle' "$OUT"/penumbra-*.txt 2>/dev/null | head -2
   } | tee "$OUT/summary.txt"
   rm -rf "$WORK"
 }

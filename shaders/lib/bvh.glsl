@@ -144,8 +144,11 @@ Hit traverseBrute(vec3 o, vec3 d, float tMax, bool anyHit) {
     return hit;
 }
 
+#include "lib/wide_bvh.glsl"
+
 // One ray through the chosen acceleration structure; anyHit for shadow rays.
 Hit traceRay(vec3 o, vec3 d, float tMax, bool anyHit) {
+    if (PN_HAS(PN_FEATURE_WIDE_BVH) && frame.accel == PN_ACCEL_WIDE) return traverseWide(o, d, tMax, anyHit);
     return PN_HAS(PN_FEATURE_BRUTE_FORCE) && frame.accel == PN_ACCEL_BRUTE ? traverseBrute(o, d, tMax, anyHit)
                                                                            : traverseBvh(o, d, tMax, anyHit);
 }

@@ -77,7 +77,8 @@ using namespace penumbra::gpu_types;
 #define PN_FEATURE_SPRITES 256u     // sprites (PN_TRI_SPRITE) among the primitives
 #define PN_FEATURE_SKY_PORTALS 512u // materials that show the environment (PN_MATERIAL_SKY_PORTAL)
 #define PN_FEATURE_INSTANCES 1024u // a two-level BVH (instances); without it the flat walk carries none of that code
-#define PN_FEATURE_ALL 0x7ffu    // every feature above
+#define PN_FEATURE_WIDE_BVH 2048u  // --accel wide (lib/wide_bvh.glsl); other kernels carry none of its code
+#define PN_FEATURE_ALL 0xfffu    // every feature above
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic
@@ -87,6 +88,7 @@ using namespace penumbra::gpu_types;
 // ---- acceleration modes ----
 #define PN_ACCEL_BVH 0u
 #define PN_ACCEL_BRUTE 1u
+#define PN_ACCEL_WIDE 2u  // the compressed 8-wide BVH (WideNode); flat scenes only
 
 // ---- ray benchmark modes (raybench.comp) ----
 #define PN_RAYBENCH_PRIMARY 0u
@@ -155,6 +157,31 @@ PN_STRUCT(BvhNode) {
     uint firstOrRight;  //  4
     vec3 boundsMax;     // 12
     uint triCount;      //  4
+};
+
+// Compressed 8-wide BVH node (the CWBVH layout of Ylitie, Karras and Laine 2017), 80 bytes.
+// Wide nodes are uploaded after the binary nodes in the same buffer (GLSL reads them as five
+// uvec4 from word frame.nodeCount * 2 on), root first. Child slot i (0-7) has a box quantized
+// to 8 bits per plane: lo = origin + q * 2^e, with the three exponents stored as float exponent
+// bits so the shader builds 2^e with one shift. Its meta byte says what the slot holds:
+//   0                          empty
+//   001 11sss (0x38 | slot)    an interior child: node childBase + (interior slots below it)
+//   ccc ooooo                  a leaf: primitives primBase + o, o + 1, ... with ccc = 1, 3 or 7
+//                              (one, two or three primitives, unary); o < 24
+// The builder assigns slots so that slot i holds the child nearest to a ray whose direction has
+// sign bits i (bit k set: negative along axis k), which the traversal turns into near-first order.
+PN_STRUCT(WideNode) {
+    vec3 origin;        // 12: the node box's lower corner
+    uint exponentsMask; //  4: biased exponents x | y << 8 | z << 16, interior-slot mask << 24
+    uint childBase;     //  4: first interior child in the wide node array (they are contiguous)
+    uint primBase;      //  4: first primitive slot of the leaves (TriVerts index)
+    uint meta[2];       //  8: slot i in byte i % 4 of meta[i / 4]
+    uint loX[2];        //  8: quantized lower x plane of slot i, byte i % 4 of loX[i / 4]
+    uint hiX[2];        //  8
+    uint loY[2];        //  8
+    uint hiY[2];        //  8
+    uint loZ[2];        //  8
+    uint hiZ[2];        //  8
 };
 
 // One placement of a bottom-level BVH in a two-level scene, 112 bytes. Bottom levels live in the
@@ -525,6 +552,10 @@ PN_STRUCT(BsdfTestResult) {
 // Layout checks: every offset the shader relies on. A failure here means a field moved.
 static_assert(sizeof(BvhNode) == 32 && offsetof(BvhNode, firstOrRight) == 12 &&
               offsetof(BvhNode, boundsMax) == 16 && offsetof(BvhNode, triCount) == 28);
+static_assert(sizeof(WideNode) == 80 && offsetof(WideNode, exponentsMask) == 12 && offsetof(WideNode, childBase) == 16 &&
+              offsetof(WideNode, primBase) == 20 && offsetof(WideNode, meta) == 24 && offsetof(WideNode, loX) == 32 &&
+              offsetof(WideNode, hiX) == 40 && offsetof(WideNode, loY) == 48 && offsetof(WideNode, loZ) == 64 &&
+              offsetof(WideNode, hiZ) == 72);
 static_assert(sizeof(TriVerts) == 48 && offsetof(TriVerts, flags) == 12 && offsetof(TriVerts, e1) == 16 &&
               offsetof(TriVerts, e2) == 32);
 static_assert(sizeof(TriAttribs) == 80 && offsetof(TriAttribs, materialId) == 12 &&

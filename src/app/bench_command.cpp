@@ -152,17 +152,19 @@ void runBench(const BenchArgs& args) {
     Renderer renderer(*ctx, scene, settings);
     RayBenchResult r = runRayBench(*ctx, renderer, args.repeats);
     const SceneArrays& a = renderer.sceneArrays();
+    if (settings.accel == Accel::Wide && a.wideNodes.empty())
+        std::fprintf(stderr, "penumbra: warning: this scene has instances, which the wide BVH does not cover: the figures are the binary BVH's\n");
 
     if (args.json) {
         std::printf(
             "{\n  \"scene\": \"%s\",\n  \"device\": \"%s\",\n  \"accel\": \"%s\",\n  \"width\": %u,\n  \"height\": %u,\n"
-            "  \"bounces\": %u,\n  \"repeats\": %d,\n  \"triangles\": %zu,\n  \"bvh_nodes\": %zu,\n  \"bvh_sah_cost\": %.3f,\n"
+            "  \"bounces\": %u,\n  \"repeats\": %d,\n  \"triangles\": %zu,\n  \"bvh_nodes\": %zu,\n  \"wide_nodes\": %zu,\n  \"bvh_sah_cost\": %.3f,\n"
             "  \"bvh_build_ms\": %.3f,\n  \"bvh_from_cache\": %s,\n  \"primary_mrays_per_s\": %.1f,\n  \"shadow_mrays_per_s\": %.1f,\n"
             "  \"diffuse_mrays_per_s\": %.1f,\n  \"primary_ms\": %.4f,\n  \"shadow_ms\": %.4f,\n  \"diffuse_ms\": %.4f,\n"
             "  \"frame_ms\": %.4f,\n  \"frame_rays\": %llu,\n  \"frame_mrays_per_s\": %.1f\n}\n",
             scene.name.c_str(), ctx->info().name.c_str(), accelName(settings.accel), settings.width, settings.height,
-            settings.maxBounces, r.repeats, a.triVerts.size(), a.nodes.size(), a.stats.sahCost, a.buildMilliseconds,
-            a.bvhFromCache ? "true" : "false", mrays(r.primaryRays, r.primaryMs), mrays(r.shadowRays, r.shadowMs), mrays(r.diffuseRays, r.diffuseMs),
+            settings.maxBounces, r.repeats, a.triVerts.size(), a.nodes.size(), a.wideNodes.size(), a.stats.sahCost,
+            a.buildMilliseconds, a.bvhFromCache ? "true" : "false", mrays(r.primaryRays, r.primaryMs), mrays(r.shadowRays, r.shadowMs), mrays(r.diffuseRays, r.diffuseMs),
             r.primaryMs, r.shadowMs, r.diffuseMs, r.frameMs, static_cast<unsigned long long>(r.frameRays),
             mrays(r.frameRays, r.frameMs));
         return;
@@ -191,7 +193,7 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--height", args->height, "frame height (default 1080)");
     cmd->add_option("--bounces", args->bounces, "bounces of the timed frame (default 4)");
     cmd->add_option("--repeats", args->repeats, "timed runs per figure; medians are reported (default 20)");
-    cmd->add_option("--accel", args->accel, "bvh or brute");
+    cmd->add_option("--accel", args->accel, "bvh, wide (compressed 8-wide BVH) or brute");
     cmd->add_flag("--json", args->json, "print one JSON object instead of text");
     cmd->add_flag("--viewer", args->viewer,
                   "time the viewer's whole frame (trace, G-buffer, temporal, denoise, tonemap) instead of ray kernels");

@@ -40,6 +40,12 @@ void printScene(const std::string& name, const std::string& map, const Environme
     std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, %s in %.2f ms\n", s.nodes,
                 s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.bvhFromCache ? "read from the cache" : "built",
                 arrays.buildMilliseconds);
+    if (!arrays.wideNodes.empty())
+        std::printf("  wide bvh (--accel wide): %zu nodes of %zu bytes, depth %u, %.1f bytes per primitive, collapsed in "
+                    "%.2f ms\n",
+                    arrays.wideNodes.size(), sizeof(shader::WideNode), arrays.wideDepth,
+                    tris ? double(arrays.wideNodes.size() * sizeof(shader::WideNode)) / double(tris) : 0.0,
+                    arrays.wideMilliseconds);
     std::printf("  %zu textures, %zu punctual lights, %u spheres and %zu sprites (in the triangle count), %zu sphere lights\n",
                 scene.textures.size(), arrays.punctual.size(), arrays.sphereCount, scene.sprites.size(),
                 arrays.sphereLights.size());
@@ -62,6 +68,17 @@ void printScene(const std::string& name, const std::string& map, const Environme
     std::printf("  cpu memory (scene model): %zu bytes (%.1f per triangle)\n", cpuBytes,
                 tris ? double(cpuBytes) / double(tris) : 0.0);
     std::printf("  gpu memory: %zu bytes (%.1f per triangle)\n", gpuBytes, tris ? double(gpuBytes) / double(tris) : 0.0);
+    // What each walk reads per primitive: its nodes and the hot triangle array (TriVerts).
+    const double binaryBytes = double(arrays.nodes.size() * sizeof(shader::BvhNode));
+    const double wideBytes = double(arrays.wideNodes.size() * sizeof(shader::WideNode));
+    const double hotBytes = double(arrays.triVerts.size() * sizeof(shader::TriVerts));
+    const double coldBytes = double(arrays.triAttribs.size() * sizeof(shader::TriAttribs));
+    if (tris)
+        std::printf("  gpu memory per triangle: binary nodes %.1f, wide nodes %.1f, triangle positions %.1f, attributes "
+                    "%.1f; without the other walk's nodes: bvh %.1f, wide %.1f\n",
+                    binaryBytes / double(tris), wideBytes / double(tris), hotBytes / double(tris),
+                    coldBytes / double(tris), (double(gpuBytes) - wideBytes) / double(tris),
+                    (double(gpuBytes) - binaryBytes) / double(tris));
 }
 
 void runInfo(const InfoArgs& args) {

@@ -54,7 +54,7 @@ void addRenderOptions(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--width", a.settings.width, "image width in pixels");
     cmd.add_option("--height", a.settings.height, "image height in pixels");
     cmd.add_option("--seed", a.settings.seed, "random seed (same seed, same device: same image)");
-    cmd.add_option("--accel", a.accel, "bvh, or brute (every triangle per ray: the oracle)");
+    cmd.add_option("--accel", a.accel, "bvh, wide (the compressed 8-wide BVH; scenes with instances keep bvh), or brute (every triangle per ray: the oracle)");
     cmd.add_option("--mis", a.mis,
                    "direct light estimators: both (MIS, default), light (light sampling only) or bsdf (BSDF sampling only)");
     cmd.add_option("--exposure", a.exposure, "exposure in stops for PNG output");

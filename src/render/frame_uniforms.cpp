@@ -26,7 +26,7 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.lightNodeCount = lightNodeCount;
     f.triCount = triCount;
     f.nodeCount = nodeCount;
-    f.accel = settings.accel == Accel::Brute ? PN_ACCEL_BRUTE : PN_ACCEL_BVH;
+    f.accel = settings.accel == Accel::Brute ? PN_ACCEL_BRUTE : (settings.accel == Accel::Wide ? PN_ACCEL_WIDE : PN_ACCEL_BVH);
     f.seed = settings.seed;
     f.samplesPerPass = settings.samplesPerPass;
     f.background = background;
@@ -57,6 +57,7 @@ shader::FrameUniforms makeSceneFrameUniforms(const Camera& camera, Vec3 backgrou
     f.sphereLightCount = scene.sphereLightCount;
     f.instanceCount = scene.instanceCount;
     f.topRoot = scene.topRoot;
+    if (f.accel == PN_ACCEL_WIDE && scene.wideNodeCount == 0) f.accel = PN_ACCEL_BVH;  // two-level scenes
     setEnvironmentUniforms(f, env, scene.envWidth, scene.envHeight);
     return f;
 }

@@ -13,6 +13,7 @@
 #include "bvh/sphere.h"
 #include "bvh/sprite.h"
 #include "bvh/triangle.h"
+#include "bvh/wide.h"
 #include "core/error.h"
 #include "render/env_table.h"
 #include "render/instance_arrays.h"
@@ -85,6 +86,17 @@ shader::Material toGpuMaterial(const Material& m) {
 }
 
 namespace {
+
+// The node buffer: the binary nodes, then the wide ones (lib/wide_bvh.glsl finds them at word
+// nodeCount * 2). A WideNode is 80 bytes, two and a half binary nodes; the tail is padded.
+std::vector<shader::BvhNode> nodeBufferContents(const SceneArrays& a) {
+    if (a.wideNodes.empty()) return a.nodes;
+    const std::size_t wideBytes = a.wideNodes.size() * sizeof(shader::WideNode);
+    std::vector<shader::BvhNode> out(a.nodes.size() + (wideBytes + sizeof(shader::BvhNode) - 1) / sizeof(shader::BvhNode));
+    std::memcpy(out.data(), a.nodes.data(), a.nodes.size() * sizeof(shader::BvhNode));
+    std::memcpy(reinterpret_cast<char*>(out.data() + a.nodes.size()), a.wideNodes.data(), wideBytes);
+    return out;
+}
 
 // Converts the scene's punctual lights (those without power are left out); moves[i] says whether
 // out[i] moves every frame.
@@ -182,6 +194,15 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
     bvh::Bvh tree = std::move(built.bvh);
     out.bvhFromCache = built.fromCache;
     out.buildMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (scene.instances.empty()) {
+        // The wide tree reorders the primitives, so it comes before anything indexes them.
+        const auto wideStart = std::chrono::steady_clock::now();
+        bvh::WideBvh wide = bvh::collapseToWide(tree);
+        out.wideNodes = std::move(wide.nodes);
+        out.wideDepth = wide.maxDepth;
+        out.wideMilliseconds =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wideStart).count();
+    }
     out.stats = bvh::computeStats(tree, options);
     out.nodes = std::move(tree.nodes);
 
@@ -277,14 +298,14 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
 
 std::size_t deviceBytes(const SceneArrays& a) {
     auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
-    return bytes(a.nodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.materials) + bytes(a.lightRefs) +
+    return bytes(a.nodes) + bytes(a.wideNodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.materials) + bytes(a.lightRefs) +
            bytes(a.lightNodes) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
            bytes(a.env.alias) + bytes(a.env.radiance) + bytes(a.instances);
 }
 
 GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& a)
     // The device's limits are checked before the first buffer is made (render/scene_limits.h).
-    : nodes((checkSceneFitsDevice(ctx, a), gpu::uploadStorageBuffer<shader::BvhNode>(ctx, commands, a.nodes))),
+    : nodes((checkSceneFitsDevice(ctx, a), gpu::uploadStorageBuffer<shader::BvhNode>(ctx, commands, nodeBufferContents(a)))),
       triVerts(gpu::uploadStorageBuffer<shader::TriVerts>(ctx, commands, a.triVerts)),
       triAttribs(gpu::uploadStorageBuffer<shader::TriAttribs>(ctx, commands, a.triAttribs)),
       materials(gpu::uploadStorageBuffer<shader::Material>(ctx, commands, a.materials)),
@@ -300,6 +321,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       instanceCount(static_cast<std::uint32_t>(a.instances.size())),
       topRoot(a.topRoot),
       nodeCount(static_cast<std::uint32_t>(a.nodes.size())),
+      wideNodeCount(static_cast<std::uint32_t>(a.wideNodes.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
       lightNodeCount(static_cast<std::uint32_t>(a.lightNodes.size())),
       topLightCount(a.topLightCount),

@@ -16,6 +16,11 @@ namespace penumbra {
 // The host-side arrays, kept separate from the upload so tests and tools can use them on the CPU.
 struct SceneArrays {
     std::vector<shader::BvhNode> nodes;
+    // The compressed wide BVH over the same primitive order (bvh/wide.h), uploaded after `nodes`
+    // in the same buffer; empty for two-level scenes, which --accel wide walks as binary.
+    std::vector<shader::WideNode> wideNodes;
+    std::uint32_t wideDepth = 0;
+    double wideMilliseconds = 0;  // collapsing the binary tree
     std::vector<shader::TriVerts> triVerts;      // leaf order; triangles and spheres (PN_TRI_SPHERE)
     std::vector<shader::TriAttribs> triAttribs;  // leaf order
     std::vector<shader::Material> materials;

@@ -25,10 +25,13 @@ void validateSettings(const RenderSettings& s) {
 Accel parseAccel(const std::string& name) {
     if (name == "bvh") return Accel::Bvh;
     if (name == "brute") return Accel::Brute;
-    throw UsageError("unknown --accel '" + name + "'; use bvh or brute");
+    if (name == "wide") return Accel::Wide;
+    throw UsageError("unknown --accel '" + name + "'; use bvh, wide or brute");
 }
 
-const char* accelName(Accel accel) { return accel == Accel::Bvh ? "bvh" : "brute"; }
+const char* accelName(Accel accel) {
+    return accel == Accel::Bvh ? "bvh" : (accel == Accel::Wide ? "wide" : "brute");
+}
 
 MisMode parseMisMode(const std::string& name) {
     if (name == "both") return MisMode::Both;

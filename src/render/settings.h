@@ -6,7 +6,7 @@
 
 namespace penumbra {
 
-enum class Accel { Bvh, Brute };
+enum class Accel { Bvh, Brute, Wide };  // Wide: the compressed 8-wide BVH (flat scenes)
 
 // Which estimators of direct light the integrator combines (shaders/lib/mis.glsl): both with the
 // power heuristic, light sampling only, or BSDF sampling only. All converge to the same image.
@@ -46,7 +46,7 @@ inline float textureTime(double sceneSeconds) {
 // Throws UsageError naming the bad value and the allowed range.
 void validateSettings(const RenderSettings& settings);
 
-Accel parseAccel(const std::string& name);  // "bvh" | "brute"; UsageError otherwise
+Accel parseAccel(const std::string& name);  // "bvh" | "brute" | "wide"; UsageError otherwise
 const char* accelName(Accel accel);
 
 MisMode parseMisMode(const std::string& name);  // "both" | "light" | "bsdf"; UsageError otherwise

@@ -43,6 +43,22 @@ TEST_F(BenchCliTest, ViewerCameraMotionsRunAndBadOnesAreUsageErrors) {
     expectOneLineError(run(std::string(kTinyViewer) + " --denoise 9"), 2, "--denoise");
 }
 
+// The ray benchmark through the wide BVH (what the lead times on the GPU), and `info` reporting
+// its size and the memory per triangle.
+TEST_F(BenchCliTest, RayBenchRunsTheWideBvhAndInfoReportsIt) {
+    RunResult r = run("bench cornell --width 32 --height 20 --repeats 1 --accel wide --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("accel").get<std::string>(), "wide");
+    EXPECT_GT(j.at("wide_nodes").get<int>(), 0);
+    EXPECT_GT(j.at("primary_mrays_per_s").get<double>(), 0.0);
+    EXPECT_GT(j.at("diffuse_mrays_per_s").get<double>(), 0.0);
+    RunResult info = run("info cornell");
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    EXPECT_NE(info.out.find("wide bvh (--accel wide): "), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find("gpu memory per triangle: "), std::string::npos) << info.out;
+}
+
 // Russian roulette starts where the viewer starts it: bounce 3, bounce 2 on Doom levels (the scene
 // asks for it), or where --roulette-start says.
 TEST_F(BenchCliTest, ViewerRouletteStartFollowsTheSceneUnlessGiven) {

@@ -2,6 +2,7 @@
 #include <random>
 
 #include "bvh/traverse_cpu.h"
+#include "bvh/traverse_wide_cpu.h"
 #include "gpu_fixture.h"
 #include "ray_query.h"
 
@@ -52,6 +53,8 @@ void expectAgreement(const gpu::Context& ctx, const Scene& scene, std::size_t ra
     auto rays = makeRays(rng, rayCount, box.lo, box.hi);
     GpuHits bvh = traceOnGpu(ctx, arrays, rays, Accel::Bvh);
     GpuHits brute = traceOnGpu(ctx, arrays, rays, Accel::Brute);
+    GpuHits wide = traceOnGpu(ctx, arrays, rays, Accel::Wide);
+    ASSERT_FALSE(arrays.wideNodes.empty());
     int hits = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
         Ray ray{rays[i].origin, rays[i].direction, rays[i].tMax};
@@ -59,18 +62,24 @@ void expectAgreement(const gpu::Context& ctx, const Scene& scene, std::size_t ra
         const auto& g = bvh.closest[i];
         ASSERT_EQ(g.triangle == PN_NO_HIT, ref.triangle == PN_NO_HIT) << "ray " << i;
         ASSERT_EQ(brute.closest[i].triangle == PN_NO_HIT, ref.triangle == PN_NO_HIT) << "ray " << i;
+        ASSERT_EQ(wide.closest[i].triangle == PN_NO_HIT, ref.triangle == PN_NO_HIT) << "wide, ray " << i;
+        const bvh::Hit cpuWide = bvh::closestHitWide(arrays.wideNodes, arrays.triVerts, ray);
+        ASSERT_EQ(cpuWide.triangle == PN_NO_HIT, ref.triangle == PN_NO_HIT) << "CPU wide, ray " << i;
         EXPECT_EQ(bvh.occluded[i], ref.triangle != PN_NO_HIT) << "any-hit disagrees with closest hit, ray " << i;
         EXPECT_EQ(brute.occluded[i], ref.triangle != PN_NO_HIT) << "ray " << i;
+        EXPECT_EQ(wide.occluded[i], ref.triangle != PN_NO_HIT) << "wide, ray " << i;
         if (ref.triangle == PN_NO_HIT) continue;
         ++hits;
-        EXPECT_NEAR(g.t, ref.t, 1e-5f * std::max(1.0f, ref.t)) << "ray " << i;
-        EXPECT_NEAR(brute.closest[i].t, ref.t, 1e-5f * std::max(1.0f, ref.t)) << "ray " << i;
-        // Same triangle, unless two triangles tie at this distance (coplanar duplicates).
-        if (g.triangle != ref.triangle) {
-            float t, u, v;
-            EXPECT_TRUE(bvh::intersectTriangle(arrays.triVerts[g.triangle], ray, ray.tMax, t, u, v) &&
-                        std::abs(t - ref.t) <= 1e-5f * std::max(1.0f, ref.t))
-                << "ray " << i << ": GPU triangle " << g.triangle << ", CPU " << ref.triangle;
+        EXPECT_EQ(cpuWide.t, ref.t) << "CPU wide, ray " << i;
+        for (const shader::HitRecord* gh : std::initializer_list<const shader::HitRecord*>{&g, &brute.closest[i], &wide.closest[i]}) {
+            EXPECT_NEAR(gh->t, ref.t, 1e-5f * std::max(1.0f, ref.t)) << "ray " << i;
+            // Same triangle, unless two triangles tie at this distance (coplanar duplicates).
+            if (gh->triangle != ref.triangle) {
+                float t, u, v;
+                EXPECT_TRUE(bvh::intersectTriangle(arrays.triVerts[gh->triangle], ray, ray.tMax, t, u, v) &&
+                            std::abs(t - ref.t) <= 1e-5f * std::max(1.0f, ref.t))
+                    << "ray " << i << ": GPU triangle " << gh->triangle << ", CPU " << ref.triangle;
+            }
         }
     }
     EXPECT_GT(hits, int(rayCount / 10)) << "too few rays hit anything for the test to mean much";

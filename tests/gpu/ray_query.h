@@ -25,6 +25,7 @@ inline GpuHits traceOnGpu(const gpu::Context& ctx, const SceneArrays& arrays, co
     shader::FrameUniforms frame = makeFrameUniforms(Camera{}, Vec3{0}, settings, scene.lightNodeCount, scene.triCount, scene.nodeCount);
     frame.instanceCount = scene.instanceCount;  // two-level scenes (0: the flat BVH)
     frame.topRoot = scene.topRoot;
+    if (frame.accel == PN_ACCEL_WIDE && scene.wideNodeCount == 0) frame.accel = PN_ACCEL_BVH;  // as the renderer does
     gpu::Buffer frameBuffer(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryKind::HostVisible);
     std::memcpy(frameBuffer.mapped(), &frame, sizeof(frame));
     gpu::Buffer rayBuffer = gpu::uploadStorageBuffer<shader::RayDesc>(ctx, commands, rays);

@@ -4,6 +4,7 @@
 
 #include "bvh/sphere.h"
 #include "bvh/traverse_cpu.h"
+#include "bvh/traverse_wide_cpu.h"
 #include "gpu_fixture.h"
 #include "ray_query.h"
 
@@ -86,6 +87,7 @@ void expectAgreement(const gpu::Context& ctx, const Scene& scene, std::size_t ra
     auto rays = mixedRays(scene, rayCount, seed);
     GpuHits bvh = traceOnGpu(ctx, arrays, rays, Accel::Bvh);
     GpuHits brute = traceOnGpu(ctx, arrays, rays, Accel::Brute);
+    GpuHits wide = traceOnGpu(ctx, arrays, rays, Accel::Wide);
     int hits = 0, sphereHits = 0, insideExits = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
         Ray ray{rays[i].origin, rays[i].direction, rays[i].tMax};
@@ -95,6 +97,10 @@ void expectAgreement(const gpu::Context& ctx, const Scene& scene, std::size_t ra
         ASSERT_EQ(cpu.triangle != PN_NO_HIT, refHit) << "CPU BVH, ray " << i;
         ASSERT_EQ(bvh.closest[i].triangle != PN_NO_HIT, refHit) << "GPU BVH, ray " << i;
         ASSERT_EQ(brute.closest[i].triangle != PN_NO_HIT, refHit) << "GPU brute force, ray " << i;
+        ASSERT_EQ(wide.closest[i].triangle != PN_NO_HIT, refHit) << "GPU wide, ray " << i;
+        const bvh::Hit cpuWide = bvh::closestHitWide(arrays.wideNodes, arrays.triVerts, ray);
+        ASSERT_EQ(cpuWide.triangle != PN_NO_HIT, refHit) << "CPU wide, ray " << i;
+        EXPECT_EQ(wide.occluded[i], refHit) << "GPU wide any-hit, ray " << i;
         EXPECT_EQ(bvh::anyHit(arrays.nodes, arrays.triVerts, ray), refHit) << "CPU any-hit, ray " << i;
         EXPECT_EQ(bvh.occluded[i], refHit) << "GPU any-hit, ray " << i;
         EXPECT_EQ(brute.occluded[i], refHit) << "GPU brute any-hit, ray " << i;
@@ -107,7 +113,8 @@ void expectAgreement(const gpu::Context& ctx, const Scene& scene, std::size_t ra
         // GPU division and square root may round differently from the CPU's in the last bit.
         const float tol = 1e-5f * std::max(1.0f, ref.t);
         EXPECT_EQ(cpu.t, ref.t) << "ray " << i;
-        for (const shader::HitRecord* g : {&bvh.closest[i], &brute.closest[i]}) {
+        EXPECT_EQ(cpuWide.t, ref.t) << "CPU wide, ray " << i;
+        for (const shader::HitRecord* g : {&bvh.closest[i], &brute.closest[i], &wide.closest[i]}) {
             EXPECT_NEAR(g->t, ref.t, tol) << "ray " << i;
             if (g->triangle != ref.triangle) {  // only where two primitives tie at this distance
                 float t, u, v;

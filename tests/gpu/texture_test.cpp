@@ -39,8 +39,10 @@ Scene texturedQuad(float alphaCutoff) {
     return scene;
 }
 
-ImageRgb renderQuad(const gpu::Context& ctx, float alphaCutoff) {
-    Renderer r(ctx, texturedQuad(alphaCutoff), testSettings(32, 32, 16, 2));
+ImageRgb renderQuad(const gpu::Context& ctx, float alphaCutoff, Accel accel = Accel::Bvh) {
+    RenderSettings settings = testSettings(32, 32, 16, 2);
+    settings.accel = accel;
+    Renderer r(ctx, texturedQuad(alphaCutoff), settings);
     r.render();
     return r.image();
 }
@@ -61,9 +63,12 @@ TEST_F(GpuTest, TexturedQuadShowsEachTexelUnderAUniformSky) {
 }
 
 TEST_F(GpuTest, AlphaTestedTexelsAreHoles) {
-    ImageRgb img = renderQuad(*ctx, 0.5f);
-    expectColor(img, 12, 20, {1, 1, 1});  // the transparent blue block shows the sky
-    expectColor(img, 12, 12, {1, 0, 0});
+    for (Accel accel : {Accel::Bvh, Accel::Wide}) {
+        SCOPED_TRACE(accelName(accel));
+        ImageRgb img = renderQuad(*ctx, 0.5f, accel);
+        expectColor(img, 12, 20, {1, 1, 1});  // the transparent blue block shows the sky
+        expectColor(img, 12, 12, {1, 0, 0});
+    }
 }
 
 }  // namespace
