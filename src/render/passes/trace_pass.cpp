@@ -13,42 +13,71 @@ namespace penumbra {
 
 TraceKernel traceKernelFromEnvironment() {
     const char* value = std::getenv("PENUMBRA_TRACE_KERNEL");
-    if (!value || !*value) return TraceKernel::Wavefront;
+    if (!value || !*value) return TraceKernel::Auto;
     const std::string name = value;
+    if (name == "auto") return TraceKernel::Auto;
     if (name == "mega") return TraceKernel::Megakernel;
     if (name == "wavefront") return TraceKernel::Wavefront;
-    throw UsageError("PENUMBRA_TRACE_KERNEL must be 'mega' or 'wavefront' (got '" + name + "')");
+    throw UsageError("PENUMBRA_TRACE_KERNEL must be 'auto', 'mega' or 'wavefront' (got '" + name + "')");
 }
 
 TracePass::TracePass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
                      const gpu::Buffer& accumulation, const gpu::Buffer& counters, std::uint32_t features,
                      const gpu::Buffer* activeMask, TraceKernel kernel)
-    : hasMask_(activeMask != nullptr), defaultBudget_(defaultPathBudget(ctx.info().type)), pathBudget_(defaultBudget_) {
-    if (!activeMask) {
+    : ctx_(ctx),
+      scene_(scene),
+      frameUniforms_(frameUniforms),
+      accumulation_(accumulation),
+      counters_(counters),
+      activeMask_(activeMask),
+      features_(features),
+      kernel_(kernel),
+      hasMask_(activeMask != nullptr),
+      maxBudget_(WavefrontPass::maxSlots(ctx)) {
+    defaultBudget_ = pathBudget_ = std::min(defaultPathBudget(ctx.info().type), maxBudget_);
+    if (!activeMask_) {
         // The shaders declare the mask, so something valid must be bound even when it is unused.
         placeholderMask_ = gpu::Buffer(ctx, sizeof(std::uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                        gpu::MemoryKind::DeviceLocal);
-        activeMask = &placeholderMask_;
+        activeMask_ = &placeholderMask_;
     }
-    if (kernel == TraceKernel::Wavefront) {
-        wave_ = std::make_unique<WavefrontPass>(ctx, scene, frameUniforms, accumulation, counters, *activeMask, features);
-        maxBudget_ = WavefrontPass::maxSlots(ctx);
-        defaultBudget_ = pathBudget_ = std::min(defaultBudget_, maxBudget_);
-        return;
+}
+
+const gpu::ComputePipeline& TracePass::megakernel() {
+    if (!pipeline_) {
+        pipeline_ = makeScenePipeline(ctx_, "trace", scene_, frameUniforms_,
+                                      {PN_BINDING_ACCUM, PN_BINDING_COUNTERS, PN_BINDING_ACTIVE_MASK}, features_);
+        pipeline_->bind(PN_BINDING_ACCUM, accumulation_);
+        pipeline_->bind(PN_BINDING_COUNTERS, counters_);
+        pipeline_->bind(PN_BINDING_ACTIVE_MASK, *activeMask_);
     }
-    pipeline_ = makeScenePipeline(ctx, "trace", scene, frameUniforms,
-                                  {PN_BINDING_ACCUM, PN_BINDING_COUNTERS, PN_BINDING_ACTIVE_MASK}, features);
-    pipeline_->bind(PN_BINDING_ACCUM, accumulation);
-    pipeline_->bind(PN_BINDING_COUNTERS, counters);
-    pipeline_->bind(PN_BINDING_ACTIVE_MASK, *activeMask);
+    return *pipeline_;
+}
+
+WavefrontPass& TracePass::wavefront() {
+    if (!wave_)
+        wave_ = std::make_unique<WavefrontPass>(ctx_, scene_, frameUniforms_, accumulation_, counters_, *activeMask_,
+                                                features_);
+    return *wave_;
+}
+
+TraceKernel TracePass::kernelFor(std::uint32_t width, std::uint32_t height, std::uint32_t samplesPerPass) const {
+    if (kernel_ != TraceKernel::Auto) return kernel_;
+    const std::uint64_t paths = std::uint64_t(width) * height * samplesPerPass;
+    return paths >= kWavefrontMinPaths ? TraceKernel::Wavefront : TraceKernel::Megakernel;
 }
 
 void TracePass::setPathBudget(std::uint64_t paths) { pathBudget_ = paths > 0 ? std::min(paths, maxBudget_) : defaultBudget_; }
 
 std::vector<gpu::PipelineStatistic> TracePass::statistics() const {
-    if (wave_) return wave_->statistics();
-    std::vector<gpu::PipelineStatistic> out = pipeline_->statistics();
-    for (gpu::PipelineStatistic& s : out) s.executable = pipeline_->name() + ": " + s.executable;
+    std::vector<gpu::PipelineStatistic> out;
+    if (pipeline_)
+        for (gpu::PipelineStatistic s : pipeline_->statistics()) {
+            s.executable = pipeline_->name() + ": " + s.executable;
+            out.push_back(std::move(s));
+        }
+    if (wave_)
+        for (gpu::PipelineStatistic& s : wave_->statistics()) out.push_back(std::move(s));
     return out;
 }
 
@@ -57,31 +86,36 @@ std::map<std::string, double> TracePass::stageMilliseconds() const {
 }
 
 void TracePass::reserve(std::uint32_t width, std::uint32_t height, std::uint32_t samplesPerPass) {
-    if (!wave_) return;
+    if (kernelFor(width, height, samplesPerPass) != TraceKernel::Wavefront) {
+        megakernel();
+        return;
+    }
     std::uint64_t most = 0;
     for (const TraceTile& tile : traceTiles(width, height, samplesPerPass, pathBudget_))
         most = std::max<std::uint64_t>(most, std::uint64_t(std::min(tile.width, width - tile.x)) *
                                                  std::min(tile.height, height - tile.y) * samplesPerPass);
-    wave_->reserve(most);
+    wavefront().reserve(most);
 }
 
 void TracePass::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, std::uint32_t samplesPerPass,
                        std::uint32_t passIndex, std::uint32_t maxBounces, bool countRays, bool masked) {
     PN_CHECK(!masked || hasMask_);
-    // Tiles write disjoint pixels, so megakernel tiles need no barrier between them; wavefront
-    // tiles share the working buffers and follow one another.
-    bool first = true;
-    if (wave_) wave_->beginPass(cmd);
-    for (const TraceTile& tile : traceTiles(width, height, samplesPerPass, pathBudget_)) {
-        if (wave_) {
-            if (!first) gpu::computeBarrier(cmd);
-            wave_->record(cmd, tile, width, height, samplesPerPass, passIndex, maxBounces, countRays, masked);
-            first = false;
-            continue;
+    const std::vector<TraceTile> tiles = traceTiles(width, height, samplesPerPass, pathBudget_);
+    if (kernelFor(width, height, samplesPerPass) == TraceKernel::Wavefront) {
+        WavefrontPass& wave = wavefront();
+        wave.beginPass(cmd);
+        // The tiles share the working buffers, so each waits for the one before.
+        for (std::size_t i = 0; i < tiles.size(); ++i) {
+            if (i > 0) gpu::computeBarrier(cmd);
+            wave.record(cmd, tiles[i], width, height, samplesPerPass, passIndex, maxBounces, countRays, masked);
         }
+        return;
+    }
+    const gpu::ComputePipeline& mega = megakernel();
+    for (const TraceTile& tile : tiles) {  // disjoint pixels: no barrier between tiles
         shader::PassPush push{passIndex, masked ? PN_TRACE_MASKED : 0u, 0, countRays ? 1u : 0u, tile.x, tile.y};
-        pipeline_->dispatch(cmd, (tile.width + PN_TRACE_GROUP_X - 1) / PN_TRACE_GROUP_X,
-                            (tile.height + PN_TRACE_GROUP_Y - 1) / PN_TRACE_GROUP_Y, 1, &push);
+        mega.dispatch(cmd, (tile.width + PN_TRACE_GROUP_X - 1) / PN_TRACE_GROUP_X,
+                      (tile.height + PN_TRACE_GROUP_Y - 1) / PN_TRACE_GROUP_Y, 1, &push);
     }
 }
 

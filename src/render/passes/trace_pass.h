@@ -15,10 +15,14 @@
 
 namespace penumbra {
 
-enum class TraceKernel { Megakernel, Wavefront };
+// Auto: the wavefront for passes of at least kWavefrontMinPaths paths, where it is faster on the
+// H200 (1.8x on DOOM1 at 1280x800 x 4 spp), the megakernel below, where the wavefront's fixed
+// cost per bounce (a dozen dispatches and barriers) outweighs what it saves (docs/PERFORMANCE.md).
+enum class TraceKernel { Auto, Megakernel, Wavefront };
+constexpr std::uint64_t kWavefrontMinPaths = std::uint64_t(1) << 20;
 
-// The kernel design: PENUMBRA_TRACE_KERNEL=mega or =wavefront (the A/B switch of
-// docs/PERFORMANCE.md), else the default.
+// The kernel design: PENUMBRA_TRACE_KERNEL=mega, =wavefront or =auto (the A/B switch of
+// docs/PERFORMANCE.md); auto when unset.
 TraceKernel traceKernelFromEnvironment();
 
 class TracePass {
@@ -30,8 +34,10 @@ public:
               const gpu::Buffer& accumulation, const gpu::Buffer& counters, std::uint32_t features,
               const gpu::Buffer* activeMask = nullptr, TraceKernel kernel = traceKernelFromEnvironment());
 
-    TraceKernel kernel() const { return wave_ ? TraceKernel::Wavefront : TraceKernel::Megakernel; }
-    // What the driver says of the tracing kernels (registers, spills...); names prefixed by kernel.
+    // The design a pass of width x height x samplesPerPass paths runs with (never Auto).
+    TraceKernel kernelFor(std::uint32_t width, std::uint32_t height, std::uint32_t samplesPerPass) const;
+    // What the driver says of the tracing kernels made so far (registers, spills...); names
+    // prefixed by kernel.
     std::vector<gpu::PipelineStatistic> statistics() const;
     // The wavefront's stage times (WavefrontPass::stageMilliseconds); empty for the megakernel.
     std::map<std::string, double> stageMilliseconds() const;
@@ -52,11 +58,21 @@ public:
     void setPathBudget(std::uint64_t paths);
 
 private:
+    // The kernels are made on first use: a renderer of one size compiles only one design.
+    const gpu::ComputePipeline& megakernel();
+    WavefrontPass& wavefront();
+
+    const gpu::Context& ctx_;
+    const GpuScene& scene_;
+    const gpu::Buffer &frameUniforms_, &accumulation_, &counters_;
+    const gpu::Buffer* activeMask_;
+    std::uint32_t features_;
+    TraceKernel kernel_;
     gpu::Buffer placeholderMask_;
     bool hasMask_;
     std::uint64_t defaultBudget_, pathBudget_;
-    std::uint64_t maxBudget_ = ~std::uint64_t(0);  // the wavefront's working buffers bound it
-    std::unique_ptr<gpu::ComputePipeline> pipeline_;  // the megakernel, or
+    std::uint64_t maxBudget_;  // the wavefront's working buffers bound it
+    std::unique_ptr<gpu::ComputePipeline> pipeline_;  // the megakernel
     std::unique_ptr<WavefrontPass> wave_;              // the wavefront kernels
 };
 
