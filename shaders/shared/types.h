@@ -53,6 +53,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
 #define PN_BINDING_ACTIVE_MASK 29    // uint per pixel: 0 skips the pixel in trace.comp when PN_TRACE_MASKED is set
 #define PN_BINDING_INSTANCES 30      // Instance per placed bottom level (two-level scenes; see FrameUniforms.instanceCount)
+#define PN_BINDING_INSTANCES_PREV 31 // the viewer's Instance entries as they were in the previous frame (gbuffer.comp's object motion)
 
 // ---- kernel features: specialization constant 0 of the tracing kernels, a bit set. A pipeline
 // made for a scene leaves out what the scene does not use (render/kernel_features.h); the
@@ -377,8 +378,8 @@ PN_STRUCT(GBufferTexel) {
     float depth;     // linear depth (distance along cameraForward); 0 where the ray missed
     vec3 albedo;     // textured base colour at the hit, what the denoiser divides out
     uint surfaceId;  // material + 1 (0: miss); a change at a pixel means a different surface
-    vec2 motion;     // pixels from here to where the same point was in the previous frame
-    float pad0;
+    vec2 motion;     // pixels from here to where the same point was in the previous frame (camera and object motion)
+    float prevDepth; // the point's linear depth in the previous frame's camera, where it was then (0: miss)
     float pad1;
 };
 
