@@ -325,7 +325,9 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         const bool automationDone = options.frames && framesRendered >= *options.frames;
         const bool advancing = panel.playing && !automationDone;
         if (script && advancing) script->playFrame(input, step);
+        const bool resetAsked = input.resetCamera || panel.resetCamera;
         handlePresses(input, w, pointer, controller, panel);
+        if (grid && resetAsked) grid.emplace(*scene.tileGrid, scene.camera);  // R: back to the start tile
         if (input.gridToggled) {
             if (grid) {
                 controller = CameraController(grid->camera(), cameraSpeedFor(scene), scene.walkMap);
