@@ -87,6 +87,33 @@ TEST(ObjectMotion, BackAndForthAndOnce) {
     expectNear(cornerAt(once, 100.0), {5, 2, 0});  // stays at the end
 }
 
+// Each entry of "instances" may move on its own; the others stay put.
+TEST(ObjectMotion, InstancesMoveOneByOne) {
+    const auto dir = std::filesystem::temp_directory_path() / ("penumbra-motion-i-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "quad.json") << R"({"materials": [{"name": "m"}],
+        "quads": [{"material": "m", "corners": [[1, 0, 0], [0, 0, 0], [0, 0, 1], [1, 0, 1]]}]})";
+    std::ofstream(dir / "scene.json") << R"({"assets": [{"file": "quad.json", "instances": [
+        {"translate": [0, 0, 0], "motion": {"path": [[0, 0, 0], [0, 0, 10]], "speed": 2, "repeat": "once"}},
+        {"translate": [5, 0, 0]}]}]})";
+    std::ofstream(dir / "both.json") << R"({"assets": [{"file": "quad.json", "motion": {"spin":
+        {"degrees_per_second": 1}}, "instances": [{}]}]})";
+    const Scene s = loadSceneJson(dir / "scene.json");
+    std::string bothError;
+    try {
+        loadSceneJson(dir / "both.json");
+    } catch (const Error& e) {
+        bothError = e.what();
+    }
+    std::filesystem::remove_all(dir);
+    ASSERT_EQ(s.instances.size(), 2u);
+    ASSERT_EQ(s.instanceAnimations.size(), 1u);
+    const Scene later = sceneAtTime(s, 2.0);
+    expectNear(later.instances[0].transform.point(Vec3{0}), {0, 0, 4});
+    expectNear(later.instances[1].transform.point(Vec3{0}), {5, 0, 0});
+    EXPECT_NE(bothError.find("assets[0].motion"), std::string::npos) << bothError;
+}
+
 TEST(ObjectMotion, BadMotionsNameTheProblem) {
     auto error = [](const std::string& motion) {
         try {

@@ -236,14 +236,17 @@ void placeInstances(const Reader& r, const Json& a, const Json& list, const std:
     if (!list.is_array() || list.empty() || list.size() > 10'000'000)
         r.fail(listWhere, "expected an array of 1 to 10,000,000 placements ({\"scale\", \"rotate\", \"translate\"})");
     if (!part.spheres.empty() || !part.sprites.empty() || !part.lights.empty())
-        r.fail(listWhere, "instances place meshes only, and this asset also has spheres, sprites or lights; "
-                          "place it with one asset per copy instead");
+        r.fail(listWhere, "instances and motions place meshes only, and this asset also has spheres, sprites or "
+                          "lights; place it with one asset per copy instead, or move only its meshes");
     const auto materialBase = static_cast<std::uint32_t>(scene.materials.size());
     const auto prototypeBase = static_cast<std::uint32_t>(scene.prototypes.size());
     std::vector<Prototype> prototypes = std::move(part.prototypes);
     std::vector<Instance> inner = std::move(part.instances);
     std::vector<InstanceAnimation> innerAnimations = std::move(part.instanceAnimations);
     part.instanceAnimations.clear();
+    std::vector<bool> innerAnimated(inner.size(), false);
+    for (const InstanceAnimation& moving : innerAnimations)
+        if (moving.instance < inner.size()) innerAnimated[moving.instance] = true;
     const auto own = static_cast<std::uint32_t>(prototypes.size());
     if (!part.meshes.empty())
         prototypes.push_back({a.contains("file") ? a["file"].get<std::string>() : a["preset"].get<std::string>(),
@@ -272,7 +275,7 @@ void placeInstances(const Reader& r, const Json& a, const Json& list, const std:
         }
         const auto innerBase = static_cast<std::uint32_t>(scene.instances.size());
         for (std::size_t k = 0; k < inner.size(); ++k) {
-            if (moves) {
+            if (moves && !innerAnimated[k]) {  // an animated one gets the motion on top of its chain below
                 NodeMotion local;
                 local.fixed = inner[k].transform;
                 scene.instanceAnimations.push_back({innerBase + std::uint32_t(k), {placement, local}});
@@ -282,8 +285,6 @@ void placeInstances(const Reader& r, const Json& a, const Json& list, const std:
         for (InstanceAnimation moving : innerAnimations) {  // each copy keeps moving, under its placement
             moving.instance += innerBase;
             moving.chain.insert(moving.chain.begin(), placement);
-            // An inner instance both moved by its own chain and by the motion: the chain wins.
-            std::erase_if(scene.instanceAnimations, [&](const InstanceAnimation& x) { return x.instance == moving.instance; });
             scene.instanceAnimations.push_back(std::move(moving));
         }
     }
