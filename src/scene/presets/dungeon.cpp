@@ -157,7 +157,7 @@ Scene makeDungeon() {
     const std::uint32_t bodyMat = addMaterial(scene, "shroud", {0.78f, 0.82f, 0.86f});
     // The eyes glow but light nothing else (lightSampled off): a light sampler entry would pin
     // them to the world, and two tiny emitters add nothing the torches do not.
-    const std::uint32_t eyeMat = addMaterial(scene, "phantom eyes", Vec3{0.0f}, {12.0f, 2.5f, 0.6f});
+    const std::uint32_t eyeMat = addMaterial(scene, "phantom eyes", Vec3{0.0f}, {3.0f, 0.6f, 0.15f});
     scene.materials[eyeMat].lightSampled = false;
     scene.materials[eyeMat].roughness = 1.0f;
     addMap(scene, floorMat, ceilingMat, wallMat);
