@@ -6,11 +6,11 @@
 #include <utility>
 
 #include "bvh/depth_boxes.h"
+#include "bvh/two_level.h"
 #include "core/error.h"
 #include "gpu/check.h"
 #include "render/frame_uniforms.h"
 #include "render/instance_arrays.h"
-#include "bvh/two_level.h"
 #include "render/kernel_features.h"
 #include "render/passes/gbuffer_pass.h"
 #include "shared/animation.h"
@@ -169,8 +169,8 @@ void InteractiveRenderer::uploadInstances(VkCommandBuffer cmd, bool moved) {
     const VkDeviceSize instanceBytes = now.size() * sizeof(shader::Instance);
     auto* staging = static_cast<std::uint8_t*>(instanceStaging_.mapped());
     std::memcpy(staging, prev.data(), instanceBytes);
-    std::vector<VkBufferCopy> toPrev{{0, 0, instanceBytes}};
-    vkCmdCopyBuffer(cmd, instanceStaging_.get(), instancesPrev_.get(), 1, toPrev.data());
+    const VkBufferCopy toPrev{0, 0, instanceBytes};
+    vkCmdCopyBuffer(cmd, instanceStaging_.get(), instancesPrev_.get(), 1, &toPrev);
     if (moved) {
         const VkDeviceSize topOffset = VkDeviceSize(arrays_.bottomNodeCount) * sizeof(shader::BvhNode);
         const VkDeviceSize topBytes = (arrays_.nodes.size() - arrays_.bottomNodeCount) * sizeof(shader::BvhNode);
