@@ -269,6 +269,11 @@ void placeInstances(const Reader& r, const Json& a, const Json& list, const std:
         placement.scripted = assetMotion;
         if (list[i].contains("motion")) placement.scripted = readMotion(r, list[i]["motion"], at + ".motion");
         const bool moves = placement.scripted.has_value();
+        // Every instance the entry places keeps its own copy of the path: bound what a short
+        // file can make us hold.
+        if (moves && placement.scripted->path.size() * (inner.size() + 1) > 10'000'000)
+            r.fail(at + ".motion.path", "too long for an asset that places " + std::to_string(inner.size() + 1) +
+                                           " instances (at most 10,000,000 path points in all)");
         if (own < prototypes.size()) {
             if (moves) scene.instanceAnimations.push_back({std::uint32_t(scene.instances.size()), {placement}});
             scene.instances.push_back({prototypeBase + own, placed});
