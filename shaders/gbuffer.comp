@@ -18,6 +18,23 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 #include "lib/surface.glsl"
 
 layout(std430, set = 0, binding = PN_BINDING_GBUFFER) writeonly buffer GBufferOut { GBufferTexel gbuffer[]; };
+// The instances as the previous frame placed them (the current ones where nothing moved), so a
+// moving object's motion vector points to where its point was.
+layout(std430, set = 0, binding = PN_BINDING_INSTANCES_PREV) readonly buffer InstancesPrev { Instance instancesPrev[]; };
+
+// Where world point p (on instance `instance`, or PN_NO_HIT) was in the previous frame. An
+// instance that did not move gives p itself, exactly, so still scenes keep their still pixels.
+vec3 previousPosition(uint instance, vec3 p) {
+    if (!PN_HAS(PN_FEATURE_INSTANCES) || instance == PN_NO_HIT) return p;
+    Instance before = instancesPrev[instance];
+    Instance now = instances[instance];
+    if (before.objectToWorld[0] == now.objectToWorld[0] && before.objectToWorld[1] == now.objectToWorld[1] &&
+        before.objectToWorld[2] == now.objectToWorld[2])
+        return p;
+    vec4 local = vec4(toInstancePoint(instance, p), 1.0);
+    return vec3(dot(before.objectToWorld[0], local), dot(before.objectToWorld[1], local),
+                dot(before.objectToWorld[2], local));
+}
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -28,7 +45,7 @@ void main() {
     vec3 direction = viewDirection(centre);
     Hit hit = traceClosest(frame.cameraPosition, direction, PN_INFINITY);
     GBufferTexel g;
-    g.pad0 = 0.0;
+    g.prevDepth = 0.0;
     g.pad1 = 0.0;
     if (hit.triangle == PN_NO_HIT) {
         g.normal = vec3(0.0);
@@ -44,7 +61,9 @@ void main() {
         g.depth = hit.t * dot(direction, frame.cameraForward);
         g.albedo = materialBaseColor(m, s.uv).rgb;
         g.surfaceId = s.material + 1u;
-        g.motion = projectPointPrev(s.position) - centre;
+        vec3 previous = previousPosition(hit.instance, s.position);
+        g.motion = projectPointPrev(previous) - centre;
+        g.prevDepth = dot(previous - viewer.prevCameraPosition, viewer.prevCameraForward);
     }
     gbuffer[pixelIndex(p)] = g;
 }

@@ -69,11 +69,10 @@ void main() {
                 haveHistory = true;
             }
         } else {
-            // Where this surface point was; its depth in the previous camera for the tap test.
+            // Where this surface point was (it and the camera may both have moved), and its depth
+            // in the previous camera then, for the tap test.
             vec2 centre = vec2(p) + 0.5;
-            vec3 dir = viewDirection(centre);
-            vec3 world = frame.cameraPosition + dir * (g.depth / max(dot(dir, frame.cameraForward), 1e-6));
-            float expectedDepth = dot(world - viewer.prevCameraPosition, viewer.prevCameraForward);
+            float expectedDepth = g.prevDepth;
             vec2 prevPos = centre + g.motion - 0.5;  // in texel-centre coordinates
             ivec2 base = ivec2(floor(prevPos));
             vec2 f = prevPos - vec2(base);

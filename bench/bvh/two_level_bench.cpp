@@ -6,6 +6,8 @@
 #include <random>
 #include <vector>
 
+#include "bvh/morton_build.h"
+#include "bvh/stats.h"
 #include "bvh/two_level.h"
 #include "core/transform.h"
 
@@ -34,6 +36,31 @@ void BM_TopLevelRebuild(benchmark::State& state) {
     state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(count));
 }
 BENCHMARK(BM_TopLevelRebuild)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+
+// The two builders alone on the same boxes (the rebuild above picks one by count); the counter
+// is the tree's SAH cost, one instance per leaf.
+template <bool kMorton>
+void BM_TopLevelBuilder(benchmark::State& state) {
+    const auto count = std::size_t(state.range(0));
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> where(-100.0f, 100.0f), size(0.5f, 2.0f);
+    std::vector<Aabb> boxes(count);
+    for (Aabb& b : boxes) {
+        const Vec3 c{where(rng), where(rng) * 0.1f, where(rng)};
+        b.grow(c - Vec3{size(rng)});
+        b.grow(c + Vec3{size(rng)});
+    }
+    BuildOptions one;
+    one.maxLeafSize = 1;
+    Bvh tree;
+    for (auto _ : state) {
+        tree = kMorton ? buildMorton(boxes) : build(boxes, one);
+        benchmark::DoNotOptimize(tree.nodes.data());
+    }
+    state.counters["sah_cost"] = computeStats(tree, one).sahCost;
+}
+BENCHMARK(BM_TopLevelBuilder<false>)->Name("BM_TopLevelBinnedSah")->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TopLevelBuilder<true>)->Name("BM_TopLevelMorton")->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace penumbra::bvh

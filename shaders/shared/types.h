@@ -54,6 +54,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_OVERLAY_BOXES 25  // BvhNode per box the viewer's box overlay outlines (bounds only)
 #define PN_BINDING_LIGHT_NODES 26    // LightNode per node of the light BVH (depth-first, root first)
 #define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
+#define PN_BINDING_INSTANCES_PREV 28  // the viewer's Instance entries as the previous frame placed them (gbuffer.comp's object motion)
 #define PN_BINDING_ACTIVE_MASK 29    // uint per pixel: 0 skips the pixel in trace.comp when PN_TRACE_MASKED is set
 #define PN_BINDING_INSTANCES 30      // Instance per placed bottom level (two-level scenes; see FrameUniforms.instanceCount)
 // The wavefront trace pass's working buffers (render/passes/wavefront_pass.h, shaders/wave_*.comp).
@@ -413,8 +414,8 @@ PN_STRUCT(GBufferTexel) {
     float depth;     // linear depth (distance along cameraForward); 0 where the ray missed
     vec3 albedo;     // textured base colour at the hit, what the denoiser divides out
     uint surfaceId;  // material + 1 (0: miss); a change at a pixel means a different surface
-    vec2 motion;     // pixels from here to where the same point was in the previous frame
-    float pad0;
+    vec2 motion;     // pixels from here to where the same point was in the previous frame (camera and object motion)
+    float prevDepth; // the point's linear depth in the previous frame's camera, where it was then (0: miss)
     float pad1;
 };
 

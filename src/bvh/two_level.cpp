@@ -1,5 +1,6 @@
 #include "bvh/two_level.h"
 
+#include "bvh/morton_build.h"
 #include "core/error.h"
 
 namespace penumbra::bvh {
@@ -56,7 +57,9 @@ std::vector<shader::BvhNode> buildTopLevel(std::span<const Aabb> instanceBounds,
     if (instanceBounds.empty()) return {};
     BuildOptions options;
     options.maxLeafSize = 1;  // a leaf is one instance, so traversal enters it directly
-    Bvh top = build(instanceBounds, options);
+    // Many instances: the Morton build, several times faster than binned SAH for a somewhat
+    // worse tree, keeps a per-frame rebuild within budget (docs/PERFORMANCE.md "Top-level rebuild").
+    Bvh top = instanceBounds.size() > kMortonTopLevelAbove ? buildMorton(instanceBounds) : build(instanceBounds, options);
     for (shader::BvhNode& n : top.nodes) {
         if (n.triCount > 0) {
             PN_CHECK(n.triCount == 1);

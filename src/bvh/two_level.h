@@ -29,7 +29,8 @@ std::uint32_t appendBottomLevel(std::vector<shader::BvhNode>& nodes, const Bvh& 
 
 // The top level over instances with these world bounds, its node indices starting at nodeBase;
 // each leaf holds one instance (firstOrRight = its index in instanceBounds, triCount = 1). Empty
-// for no instances.
+// for no instances. Binned SAH up to kMortonTopLevelAbove instances, the Morton build above.
+inline constexpr std::size_t kMortonTopLevelAbove = 2048;
 std::vector<shader::BvhNode> buildTopLevel(std::span<const Aabb> instanceBounds, std::uint32_t nodeBase);
 
 // A two-level scene as the GPU sees it: every level's nodes, the primitive slots, the instances

@@ -160,6 +160,7 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
     input.validate();
     // Emitters stay world-space triangles in the light BVH: instances of emissive meshes are baked.
     std::optional<Scene> baked;
+    std::vector<std::uint32_t> keptFrom;  // the input's number of each instance left after baking
     if (const char* force = std::getenv("PENUMBRA_FORCE_INSTANCES"); force && std::string_view(force) == "1") {
         baked = input;  // measuring the two-level traversal on any scene: its meshes as one instance
         instanceWorldMeshes(*baked);
@@ -168,7 +169,7 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
             return prototypeIsEmissive(input, input.prototypes[i.prototype]);
         })) {
         baked = input;
-        bakeEmissiveInstances(*baked);
+        bakeEmissiveInstances(*baked, &keptFrom);
     }
     const Scene& scene = baked ? *baked : input;
     std::vector<SceneTriangle> tris = flattenTriangles(scene);
@@ -288,6 +289,10 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
     }
     for (const Material& m : materials) out.materials.push_back(toGpuMaterial(m));
     appendInstanceLevels(scene, out, options);
+    // Instances keep the input scene's numbers (what the viewer moves them by).
+    if (!keptFrom.empty())
+        for (shader::Instance& i : out.instances)
+            if (i.id != PN_NO_HIT) i.id = keptFrom.at(i.id);
     // Traversal checks alpha only where the flag says so, keeping the common path cheap.
     for (std::size_t i = 0; i < out.triVerts.size(); ++i)
         if (!bvh::isSphere(out.triVerts[i]) && !bvh::isSprite(out.triVerts[i]) &&

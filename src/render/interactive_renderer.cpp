@@ -6,9 +6,11 @@
 #include <utility>
 
 #include "bvh/depth_boxes.h"
+#include "bvh/two_level.h"
 #include "core/error.h"
 #include "gpu/check.h"
 #include "render/frame_uniforms.h"
+#include "render/instance_arrays.h"
 #include "render/kernel_features.h"
 #include "render/passes/gbuffer_pass.h"
 #include "shared/animation.h"
@@ -109,6 +111,13 @@ void InteractiveRenderer::loadScene(const Scene& scene, SceneArrays arrays, bool
     environment_ = Environment{std::nullopt, std::nullopt, scene.environment.intensity,
                                scene.environment.rotationDegrees};
     gpuScene_ = std::make_unique<GpuScene>(ctx_, commands_, arrays_);
+    instancesPrev_ = gpu::uploadStorageBuffer<shader::Instance>(ctx_, commands_, arrays_.instances);
+    const std::size_t topNodes = arrays_.nodes.size() - std::min<std::size_t>(arrays_.bottomNodeCount, arrays_.nodes.size());
+    instanceStaging_ = gpu::Buffer(ctx_, 2 * arrays_.instances.size() * sizeof(shader::Instance) +
+                                             topNodes * sizeof(shader::BvhNode),
+                                   VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryKind::HostVisible);
+    lastFrameInstances_ = arrays_.instances;
+    prevMatchesCurrent_ = true;
     // Lights without power are dropped on conversion, but the torch has power, so it stays last.
     torchLight_.reset();
     if (torchIsLastLight && !arrays_.punctual.empty() && !scene.lights.empty() && scene.lights.back().intensity > 0)
@@ -136,6 +145,46 @@ void InteractiveRenderer::setMaterial(std::uint32_t index, const Material& mater
         vkCmdUpdateBuffer(cmd, gpuScene_->materials.get(), VkDeviceSize(index) * sizeof(gm), sizeof(gm), &gm);
     });
     historyValid_ = false;
+}
+
+void InteractiveRenderer::setInstanceTransforms(const Scene& scene) {
+    bool changed = false;
+    for (shader::Instance& i : arrays_.instances) {
+        if (i.id == PN_NO_HIT || i.id >= scene.instances.size()) continue;  // the world, or baked
+        const shader::Instance moved =
+            bvh::makeInstance(scene.instances[i.id].transform, i.rootNode, i.firstPrimitive, i.primitiveCount, i.id);
+        if (std::memcmp(&moved, &i, sizeof(moved)) == 0) continue;
+        i = moved;
+        changed = true;
+    }
+    if (changed) rebuildTopLevel(arrays_);  // the same node count: one leaf per instance
+}
+
+void InteractiveRenderer::uploadInstances(VkCommandBuffer cmd, bool moved) {
+    const std::vector<shader::Instance>& now = arrays_.instances;
+    if (now.empty() || (!moved && prevMatchesCurrent_)) return;
+    // The previous frame's placement while it moved; once it stops, the current one again.
+    const bool objectMotion = moved && objectMotionVectors_ && historyValid_;
+    const std::vector<shader::Instance>& prev = objectMotion ? lastFrameInstances_ : now;
+    const VkDeviceSize instanceBytes = now.size() * sizeof(shader::Instance);
+    auto* staging = static_cast<std::uint8_t*>(instanceStaging_.mapped());
+    std::memcpy(staging, prev.data(), instanceBytes);
+    const VkBufferCopy toPrev{0, 0, instanceBytes};
+    vkCmdCopyBuffer(cmd, instanceStaging_.get(), instancesPrev_.get(), 1, &toPrev);
+    if (moved) {
+        const VkDeviceSize topOffset = VkDeviceSize(arrays_.bottomNodeCount) * sizeof(shader::BvhNode);
+        const VkDeviceSize topBytes = (arrays_.nodes.size() - arrays_.bottomNodeCount) * sizeof(shader::BvhNode);
+        PN_CHECK(2 * instanceBytes + topBytes <= instanceStaging_.size() && topOffset + topBytes <= gpuScene_->nodes.size());
+        std::memcpy(staging + instanceBytes, now.data(), instanceBytes);
+        std::memcpy(staging + 2 * instanceBytes, arrays_.nodes.data() + arrays_.bottomNodeCount, topBytes);
+        VkBufferCopy toInstances{instanceBytes, 0, instanceBytes};
+        vkCmdCopyBuffer(cmd, instanceStaging_.get(), gpuScene_->instances.get(), 1, &toInstances);
+        VkBufferCopy toNodes{2 * instanceBytes, topOffset, topBytes};
+        if (topBytes > 0) vkCmdCopyBuffer(cmd, instanceStaging_.get(), gpuScene_->nodes.get(), 1, &toNodes);
+        lastFrameInstances_ = now;
+        boxesDepth_.reset();  // the overlay's boxes include the top level
+    }
+    prevMatchesCurrent_ = !objectMotion;
 }
 
 void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
@@ -175,7 +224,8 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
 void InteractiveRenderer::createPasses() {
     features_ = penumbra::kernelFeatures(arrays_, Accel::Bvh);
     trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, features_);
-    gbufferPass_ = std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, gbuffer_, features_);
+    gbufferPass_ = std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, gbuffer_, features_,
+                                                 &instancesPrev_);
     auto temporal = [&](const gpu::Buffer& in, const gpu::Buffer& out) {
         return std::make_unique<TemporalPass>(
             ctx_, TemporalBuffers{&frameUniforms_, &viewerUniforms_, &accumulation_, &gbuffer_, &gbufferPrev_, &in,
@@ -221,7 +271,11 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     // An animated texture that turned to its next frame changed the image: blend history as for a
     // moving camera. Between its ticks the image holds still and the mean keeps converging.
     const bool animating = previousFrame_ && animationTicked(arrays_.textures, previousFrame_->time, f.time);
-    const bool moved = previousFrame_ && (!sameCamera(*previousFrame_, f) || animating);
+    // Moved instances change the image too (and their light and shadows move with them).
+    const bool instancesMoved =
+        !arrays_.instances.empty() && std::memcmp(lastFrameInstances_.data(), arrays_.instances.data(),
+                                                  arrays_.instances.size() * sizeof(shader::Instance)) != 0;
+    const bool moved = previousFrame_ && (!sameCamera(*previousFrame_, f) || animating || instancesMoved);
     const shader::FrameUniforms& prev = previousFrame_ ? *previousFrame_ : f;
 
     shader::ViewerUniforms v{};
@@ -266,6 +320,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
         vkCmdUpdateBuffer(cmd, gpuScene_->punctual.get(), VkDeviceSize(*torchLight_) * sizeof(light), sizeof(light),
                           &light);
     }
+    uploadInstances(cmd, instancesMoved);
     vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0);
     if (heat) vkCmdFillBuffer(cmd, heatCounters_.get(), 0, VK_WHOLE_SIZE, 0);
     transferToComputeBarrier(cmd);

@@ -48,6 +48,15 @@ public:
     // light tables weigh emitters by power (an emission edit needs rebuildScene).
     void setMaterial(std::uint32_t index, const Material& material);
 
+    // Moves the instances to where `scene` (the scene loaded, its instances moved: an animation,
+    // an edited object) now places them: the top level is rebuilt on the CPU and goes to the GPU
+    // with the next frame, no bottom level is rebuilt. That frame's motion vectors carry each
+    // instance's move since the frame before (its previous transform is kept).
+    void setInstanceTransforms(const Scene& scene);
+    // Off: the G-buffer sees every instance as still (no object motion in the motion vectors); the
+    // comparison the ghost test makes. On by default.
+    void setObjectMotionVectors(bool on) { objectMotionVectors_ = on; }
+
     // Sets the render resolution; a change reallocates the per-pixel buffers and drops history.
     void resize(std::uint32_t width, std::uint32_t height);
     // The next frame starts a new running mean (use after the scene or lighting changed).
@@ -82,6 +91,9 @@ public:
 private:
     void loadScene(const Scene& scene, SceneArrays arrays, bool torchIsLastLight);
     void createPasses();
+    // Sends moved instances, the rebuilt top level and the previous frame's instances up before
+    // this frame's passes; `moved`: the instances differ from the last frame's.
+    void uploadInstances(VkCommandBuffer cmd, bool moved);
 
     const gpu::Context& ctx_;
     SceneArrays arrays_;
@@ -93,6 +105,12 @@ private:
     std::uint32_t seed_;
     gpu::Buffer frameUniforms_, viewerUniforms_, counters_, heatCounters_;
     gpu::Buffer accumulation_, gbuffer_, gbufferPrev_, historyA_, historyB_, filterA_, filterB_, guide_, display_;
+    // The instances as the previous frame placed them (gbuffer.comp's object motion), and the
+    // staging buffer that carries moved instances and the top level up.
+    gpu::Buffer instancesPrev_, instanceStaging_;
+    std::vector<shader::Instance> lastFrameInstances_;  // as the last recorded frame placed them
+    bool prevMatchesCurrent_ = true;  // instancesPrev_ holds the current instances
+    bool objectMotionVectors_ = true;
     gpu::Buffer* historyIn_ = nullptr;  // last frame's history; the two swap every frame
     gpu::Buffer* historyOut_ = nullptr;
     std::unique_ptr<TracePass> trace_;

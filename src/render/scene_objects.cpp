@@ -32,6 +32,7 @@ Pick pickPixel(const SceneArrays& arrays, const Camera& camera, std::uint32_t wi
     pick.material = arrays.triAttribs[hit.triangle].materialId;
     pick.object = hit.triangle < arrays.primitiveObject.size() ? arrays.primitiveObject[hit.triangle] : kNoObject;
     pick.depth = hit.t * dot(direction, f.cameraForward);
+    if (hit.instance < arrays.instances.size()) pick.instance = arrays.instances[hit.instance].id;  // PN_NO_HIT: the world
     return pick;
 }
 

@@ -17,6 +17,7 @@ struct Pick {
     std::uint32_t primitive = PN_NO_HIT;   // leaf-order index into the arrays
     std::uint32_t material = 0;            // the hit primitive's material (valid when primitive is)
     float depth = 0;                       // linear depth along the view direction (0: miss)
+    std::uint32_t instance = kNoObject;    // the scene's instance hit (Scene::instances), if any
 };
 // x, y: pixel coordinates of a width x height image, row 0 at the top (fractions allowed; the
 // ray goes through the centre of the pixel that contains the point). Alpha-tested holes are

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "core/error.h"
 #include "gpu/buffer.h"
 #include "render/kernel_features.h"
+#include "scene/animation.h"
 
 namespace penumbra {
 namespace {
@@ -119,8 +121,16 @@ ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bo
     InteractiveRenderer renderer(ctx, scene, torchIsLastLight);
     renderer.resize(o.width, o.height);
     double scriptTime = 0;
+    // Animated instances (the dungeon's phantom, glTF animations) move on the same clock, so the
+    // timed frames include their top-level upload and object motion.
+    std::optional<Scene> moving;
+    if (animatesGeometry(scene)) moving = scene;
     auto nextCamera = [&] {
         Camera c = cameraInMotion(scene.camera, o.motion, scriptTime);
+        if (moving) {
+            applyInstanceAnimations(*moving, scriptTime);
+            renderer.setInstanceTransforms(*moving);
+        }
         scriptTime += o.frameSeconds;
         return c;
     };

@@ -87,10 +87,14 @@ bool isAnimated(const Scene& scene) { return !scene.cameraPath.keys.empty() || a
 
 bool animatesGeometry(const Scene& scene) { return !scene.instanceAnimations.empty(); }
 
-void applySceneTime(Scene& scene, double seconds) {
-    // Animated nodes (glTF animations) move their instances.
+void applyInstanceAnimations(Scene& scene, double seconds) {
     for (const InstanceAnimation& a : scene.instanceAnimations)
         if (a.instance < scene.instances.size()) scene.instances[a.instance].transform = chainTransform(a.chain, seconds);
+}
+
+void applySceneTime(Scene& scene, double seconds) {
+    // Animated nodes (glTF animations) and scene-file motions move their instances.
+    applyInstanceAnimations(scene, seconds);
     if (scene.cameraPath.keys.empty()) return;
     const Camera before = scene.camera;
     scene.camera = cameraOnPath(scene.cameraPath, scene.camera, seconds);

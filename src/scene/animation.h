@@ -13,6 +13,10 @@ namespace penumbra {
 // and focus stay), and a torch attached to the camera along with it.
 void applySceneTime(Scene& scene, double seconds);
 
+// Only the instances: each animated instance (glTF animations, scene-file motions) to its
+// transform at `seconds`. The viewer's clock uses it; its camera is the user's.
+void applyInstanceAnimations(Scene& scene, double seconds);
+
 // A copy of `scene` at `seconds` (applySceneTime on a copy).
 Scene sceneAtTime(const Scene& scene, double seconds);
 

@@ -27,7 +27,9 @@ std::size_t instancedTriangleCount(const Scene& scene) {
 
 bool prototypeIsEmissive(const Scene& scene, const Prototype& prototype) {
     for (const Mesh& m : prototype.meshes)
-        if (m.material < scene.materials.size() && scene.materials[m.material].isEmissive()) return true;
+        if (m.material < scene.materials.size() && scene.materials[m.material].isEmissive() &&
+            scene.materials[m.material].lightSampled)
+            return true;
     return false;
 }
 
@@ -44,7 +46,8 @@ void bakeAllInstances(Scene& scene) {
     scene.instanceAnimations.clear();  // baked where they stand now
 }
 
-std::size_t bakeEmissiveInstances(Scene& scene) {
+std::size_t bakeEmissiveInstances(Scene& scene, std::vector<std::uint32_t>* keptFrom) {
+    if (keptFrom) keptFrom->clear();
     std::vector<Instance> kept;
     std::vector<std::uint32_t> newIndex(scene.instances.size(), UINT32_MAX);
     std::size_t baked = 0;
@@ -56,6 +59,7 @@ std::size_t bakeEmissiveInstances(Scene& scene) {
         } else {
             newIndex[i] = static_cast<std::uint32_t>(kept.size());
             kept.push_back(inst);
+            if (keptFrom) keptFrom->push_back(static_cast<std::uint32_t>(i));
         }
     }
     scene.instances = std::move(kept);

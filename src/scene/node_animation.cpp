@@ -91,6 +91,10 @@ Affine trsTransform(Vec3 translation, const KeyValue& rotation, Vec3 scale) {
 Affine chainTransform(const std::vector<NodeMotion>& chain, double seconds) {
     Affine world;
     for (const NodeMotion& node : chain) {
+        if (node.scripted) {
+            world = world * motionTransform(*node.scripted, node.fixed, seconds);
+            continue;
+        }
         if (!node.trs) {
             world = world * node.fixed;
             continue;

@@ -5,11 +5,13 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/transform.h"
 #include "core/vec.h"
+#include "scene/object_motion.h"
 
 namespace penumbra {
 
@@ -28,10 +30,12 @@ struct Track {
 };
 
 // A node on the way from a root to an animated instance: a fixed local transform, or one made of
-// translation, rotation and scale (glTF's TRS), each at rest or following its track.
+// translation, rotation and scale (glTF's TRS), each at rest or following its track, or a scene
+// file's motion moving the fixed transform (motionTransform).
 struct NodeMotion {
     bool trs = false;
-    Affine fixed;  // !trs
+    Affine fixed;  // !trs (with `scripted`: the placement it moves)
+    std::optional<ScriptedMotion> scripted;  // !trs
     Vec3 translation{0};
     KeyValue rotation{0, 0, 0, 1};  // unit quaternion xyzw
     Vec3 scale{1};
@@ -54,7 +58,8 @@ Affine trsTransform(Vec3 translation, const KeyValue& rotation, Vec3 scale);
 // The chain's transform at `seconds`.
 Affine chainTransform(const std::vector<NodeMotion>& chain, double seconds);
 
-// The last key's time over every track of the chain (0 when nothing is keyed).
+// The last key's time over every track of the chain (0 when nothing is keyed; scene-file motions
+// have no end and do not count).
 double chainDuration(const std::vector<NodeMotion>& chain);
 
 // Throws Error naming `where` when a track's times are not finite and strictly increasing or its

@@ -37,4 +37,20 @@ void translateObject(Scene& scene, std::uint32_t object, Vec3 offset) {
     }
 }
 
+std::string instanceName(const Scene& scene, std::uint32_t instance) {
+    PN_CHECK(instance < scene.instances.size());
+    const std::uint32_t prototype = scene.instances[instance].prototype;
+    const std::string name = prototype < scene.prototypes.size() ? scene.prototypes[prototype].name : "";
+    return "instance " + std::to_string(instance) + (name.empty() ? "" : " (" + name + ")");
+}
+
+void moveInstance(Scene& scene, std::uint32_t instance, Vec3 offset, float yawDegrees) {
+    PN_CHECK(instance < scene.instances.size());
+    Affine& t = scene.instances[instance].transform;
+    const Vec3 origin = t.point(Vec3{0});
+    const Affine turn = Affine::translation(origin) * Affine::eulerDegrees({0, yawDegrees, 0}) *
+                        Affine::translation(Vec3{0} - origin);
+    t = Affine::translation(offset) * turn * t;
+}
+
 }  // namespace penumbra

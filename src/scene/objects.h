@@ -19,4 +19,11 @@ std::uint32_t objectMaterial(const Scene& scene, std::uint32_t object);
 // Moves a mesh's vertices or a sphere's centre by offset (the caller rebuilds the GPU scene).
 void translateObject(Scene& scene, std::uint32_t object, Vec3 offset);
 
+// Instances are edited by their transform alone (the renderer then rebuilds only its top level).
+// The instance's name: its prototype's, with its number ("instance 3 (bunny.obj)").
+std::string instanceName(const Scene& scene, std::uint32_t instance);
+// Turns instance `instance` by yawDegrees about the vertical through its origin, then moves it by
+// offset (world space). Its animation, if it has one, keeps setting its transform while it plays.
+void moveInstance(Scene& scene, std::uint32_t instance, Vec3 offset, float yawDegrees);
+
 }  // namespace penumbra

@@ -108,8 +108,10 @@ void Scene::validate() const {
         const InstanceAnimation& a = instanceAnimations[i];
         const std::string where = "animation " + std::to_string(i) + " in scene '" + name + "'";
         if (a.instance >= instances.size()) throw Error(where + ": it moves an instance that does not exist");
-        for (const NodeMotion& m : a.chain)
+        for (const NodeMotion& m : a.chain) {
+            if (m.scripted) validateMotion(*m.scripted, where);
             for (const Track* t : {&m.translationTrack, &m.rotationTrack, &m.scaleTrack}) validateTrack(*t, where);
+        }
     }
     for (std::size_t i = 0; i < spheres.size(); ++i) {
         const Sphere& s = spheres[i];

@@ -218,6 +218,20 @@ struct Instance {
     Affine transform;  // object to world; invertible
 };
 
+// A level made of square tiles, walked one tile at a time (the dungeon preset; the viewer's grid
+// movement, app/viewer/grid_walk.h). Tile (x, z) covers [origin + (x, z) * tileSize, + tileSize).
+struct TileGrid {
+    float tileSize = 2.0f;  // metres
+    Vec3 origin{0};         // the corner of tile (0, 0) with the least x and z, at floor height
+    int width = 0, depth = 0;            // tiles along +x and +z
+    std::vector<std::uint8_t> walkable;  // width * depth, index z * width + x: 1 where one can stand
+    float eyeHeight = 1.6f;              // metres above the floor
+
+    bool canStand(int x, int z) const {
+        return x >= 0 && z >= 0 && x < width && z < depth && walkable[std::size_t(z) * std::size_t(width) + std::size_t(x)] != 0;
+    }
+};
+
 struct Scene {
     std::string name;
     std::vector<Material> materials;
@@ -240,6 +254,8 @@ struct Scene {
     std::optional<std::uint32_t> viewerRouletteStart;
     // Doom levels: the lines walking collides with (map units); none where a format has no levels.
     std::optional<walk::WalkMap> walkMap;
+    // Tile-map levels: the grid the viewer's grid movement steps on.
+    std::optional<TileGrid> tileGrid;
 
     std::size_t triangleCount() const;
     Aabb bounds() const;  // meshes, instances, spheres and sprites

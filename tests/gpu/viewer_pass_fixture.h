@@ -88,6 +88,7 @@ inline shader::GBufferTexel surfaceTexel(float depth, Vec3 normal = {0, 0, -1}, 
     shader::GBufferTexel g{};
     g.normal = normal;
     g.depth = depth;
+    g.prevDepth = depth;  // a still point: as deep in the previous camera (motion vectors zero)
     g.albedo = albedo;
     g.surfaceId = id;
     return g;

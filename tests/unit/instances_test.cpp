@@ -100,6 +100,32 @@ TEST(Instances, EmissivePrototypesAreBakedIntoWorldLights) {
     EXPECT_EQ(a.triVerts.size(), flat.triVerts.size());
 }
 
+// An emitter light sampling does not aim at (glowing eyes) may stay an instance; instances keep
+// the scene's own numbers when emissive ones before them were baked (the viewer moves them by it).
+TEST(Instances, UnsampledEmittersStayInstancesAndNumbersSurviveBaking) {
+    Scene scene = test::instancedRoom(3);
+    const std::uint32_t sphereMaterial = scene.prototypes[0].meshes[0].material;
+    Material glow = scene.materials[sphereMaterial];
+    glow.emission = Vec3{2.0f};
+    glow.lightSampled = false;
+    scene.materials.push_back(glow);
+    scene.prototypes.push_back(scene.prototypes[0]);
+    scene.prototypes[1].meshes[0].material = std::uint32_t(scene.materials.size() - 1);
+    scene.instances[2].prototype = 1;
+    EXPECT_EQ(buildSceneArrays(scene).instances.size(), 4u);  // the world and three instances
+    // Now a sampled emitter as instance 0: baked; instances 1 and 2 keep their numbers.
+    Material lamp = glow;
+    lamp.lightSampled = true;
+    scene.materials.push_back(lamp);
+    scene.prototypes.push_back(scene.prototypes[0]);
+    scene.prototypes[2].meshes[0].material = std::uint32_t(scene.materials.size() - 1);
+    scene.instances[0].prototype = 2;
+    const SceneArrays a = buildSceneArrays(scene);
+    std::vector<std::uint32_t> ids;
+    for (const shader::Instance& i : a.instances) ids.push_back(i.id);
+    EXPECT_EQ(ids, (std::vector<std::uint32_t>{PN_NO_HIT, 1u, 2u}));
+}
+
 TEST(Instances, ASceneWithoutInstancesKeepsItsFlatArrays) {
     const SceneArrays a = buildSceneArrays(test::baked(test::instancedRoom()));
     EXPECT_TRUE(a.instances.empty());

@@ -17,6 +17,8 @@ void applyKey(InputState& in, int key, bool pressed) {
         case GLFW_KEY_TAB: in.panelToggled = true; break;
         case GLFW_KEY_F12: in.screenshot = true; break;
         case GLFW_KEY_ESCAPE: in.escape = true; break;
+        case GLFW_KEY_N: in.nextInstance = true; break;
+        case GLFW_KEY_G: in.gridToggled = true; break;
         default: break;
     }
 }
@@ -41,10 +43,21 @@ CameraInput cameraInputFrom(const InputState& in) {
     return move;
 }
 
+ObjectInput objectInputFrom(const InputState& in) {
+    auto key = [&](int k) { return in.held[std::size_t(k)] ? 1.0f : 0.0f; };
+    ObjectInput o;
+    o.forward = key(GLFW_KEY_I) - key(GLFW_KEY_K);
+    o.right = key(GLFW_KEY_L) - key(GLFW_KEY_J);
+    o.up = key(GLFW_KEY_O) - key(GLFW_KEY_U);
+    o.turn = key(GLFW_KEY_COMMA) - key(GLFW_KEY_PERIOD);
+    return o;
+}
+
 void endInputFrame(InputState& in) {
     in.lookX = in.lookY = in.scroll = 0;
     in.pauseToggled = in.resetCamera = in.screenshot = false;
     in.walkToggled = in.panelToggled = in.escape = false;
+    in.nextInstance = in.gridToggled = false;
 }
 
 }  // namespace penumbra::viewer

@@ -16,7 +16,16 @@ struct InputState {
     // Presses not yet handled by the frame loop.
     bool pauseToggled = false, resetCamera = false, screenshot = false;
     bool walkToggled = false, panelToggled = false, escape = false;
+    bool nextInstance = false, gridToggled = false;
 };
+
+// What the held keys ask of the selected instance: I/K forward/back, J/L left/right (along the
+// camera's horizontal directions), O/U up/down, comma/period turn left/right. Each in [-1, 1].
+struct ObjectInput {
+    float forward = 0, right = 0, up = 0, turn = 0;
+    bool any() const { return forward != 0 || right != 0 || up != 0 || turn != 0; }
+};
+ObjectInput objectInputFrom(const InputState& input);
 
 // A key went down (pressed) or up. Unknown or out-of-range codes are ignored.
 void applyKey(InputState& input, int key, bool pressed);

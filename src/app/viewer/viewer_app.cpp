@@ -15,6 +15,7 @@
 #include "app/viewer/camera_controller.h"
 #include "app/viewer/controls.h"
 #include "app/viewer/edit_panel.h"
+#include "app/viewer/grid_walk.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/screenshot.h"
 #include "app/viewer/ui_panel.h"
@@ -23,6 +24,7 @@
 #include "core/error.h"
 #include "render/interactive_renderer.h"
 #include "render/scene_objects.h"
+#include "scene/animation.h"
 
 namespace penumbra::viewer {
 namespace {
@@ -154,8 +156,8 @@ std::optional<Click> trackPointer(GLFWwindow* w, PointerState& p, InputState& in
 
 // A click sets the focus (when asked), captures the pointer while walking, or selects.
 void handleClick(GLFWwindow* w, const Click& click, PointerState& pointer, const Scene& scene,
-                 const InteractiveRenderer& renderer, const CameraController& controller, ViewSettings& settings,
-                 EditState& edit) {
+                 const InteractiveRenderer& renderer, const CameraController& controller, const Camera& camera,
+                 ViewSettings& settings, EditState& edit, std::uint32_t& selectedInstance, PanelState& panel) {
     if (controller.walking() && !edit.focusOnClick) {
         setCaptured(w, pointer, true);
         return;
@@ -164,14 +166,31 @@ void handleClick(GLFWwindow* w, const Click& click, PointerState& pointer, const
     int ww = 0, wh = 0;
     glfwGetWindowSize(w, &ww, &wh);
     if (ww <= 0 || wh <= 0) return;
-    const Pick pick = pickPixel(renderer.sceneArrays(), controller.camera(), std::uint32_t(ww), std::uint32_t(wh),
+    const Pick pick = pickPixel(renderer.sceneArrays(), camera, std::uint32_t(ww), std::uint32_t(wh),
                                 float(click.x), float(click.y));
     if (edit.focusOnClick) {
         if (pick.depth > 0) settings.focusDistance = pick.depth;
         edit.focusOnClick = false;
     } else {
         select(scene, pick.object, edit);
+        selectedInstance = pick.instance;
+        if (pick.instance < scene.instances.size())
+            panel.message = instanceName(scene, pick.instance) + ": I/K J/L O/U move it, comma/period turn it";
     }
+}
+
+// Moves the selected instance as the held keys ask, along the camera's horizontal directions;
+// true when it moved.
+bool moveSelectedInstance(Scene& scene, std::uint32_t instance, const ObjectInput& in, const Camera& camera,
+                          float speed, float seconds) {
+    if (instance >= scene.instances.size() || !in.any() || !(seconds > 0)) return false;
+    Vec3 forward = camera.lookAt - camera.position;
+    forward.y = 0;
+    forward = length(forward) > 0 ? normalize(forward) : Vec3{0, 0, -1};
+    const Vec3 right{-forward.z, 0, forward.x};
+    const Vec3 offset = (forward * in.forward + right * in.right + Vec3{0, in.up, 0}) * (speed * seconds);
+    moveInstance(scene, instance, offset, in.turn * 90.0f * seconds);  // a quarter turn per second
+    return true;
 }
 
 void toggleWalking(CameraController& controller, PanelState& panel) {
@@ -264,6 +283,10 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     UiLayer ui(ctx, window.get(), presenter);
 
     CameraController controller = makeController(scene, options.fly);
+    // Tile-map levels start in grid movement (G switches to free flight and back).
+    std::optional<GridWalker> grid;
+    if (scene.tileGrid && !options.fly) grid.emplace(*scene.tileGrid, scene.camera);
+    std::uint32_t selectedInstance = kNoObject;  // N cycles through the instances; a click picks one
     InputState input;
     installCallbacks(window.get(), input);
     PointerState pointer;
@@ -302,16 +325,47 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         const bool automationDone = options.frames && framesRendered >= *options.frames;
         const bool advancing = panel.playing && !automationDone;
         if (script && advancing) script->playFrame(input, step);
+        const bool resetAsked = input.resetCamera || panel.resetCamera;
         handlePresses(input, w, pointer, controller, panel);
+        if (grid && resetAsked) grid.emplace(*scene.tileGrid, scene.camera);  // R: back to the start tile
+        if (input.gridToggled) {
+            if (grid) {
+                controller = CameraController(grid->camera(), cameraSpeedFor(scene), scene.walkMap);
+                controller.setWalking(false);
+                grid.reset();
+                panel.message = "free flight (G: grid movement)";
+            } else if (scene.tileGrid) {
+                grid.emplace(*scene.tileGrid, controller.camera());
+                panel.message = "grid movement (G: free flight)";
+            } else {
+                panel.message = "grid movement needs a tile-map level (the dungeon)";
+            }
+        }
+        if (input.nextInstance && !scene.instances.empty()) {
+            selectedInstance = selectedInstance + 1 < scene.instances.size() ? selectedInstance + 1 : 0;
+            panel.message = instanceName(scene, selectedInstance) + ": I/K J/L O/U move it, comma/period turn it";
+        }
         if (std::optional<Click> click = trackPointer(w, pointer, input, ui.wantsMouse()))
-            handleClick(w, *click, pointer, scene, renderer, controller, settings, edit);
+            handleClick(w, *click, pointer, scene, renderer, controller, grid ? grid->camera() : controller.camera(),
+                        settings, edit, selectedInstance, panel);
+        // The selected instance moves with its keys, paused or playing; only the top level changes.
+        bool instancesMoved = !automationDone && moveSelectedInstance(scene, selectedInstance, objectInputFrom(input),
+                                                                      grid ? grid->camera() : controller.camera(),
+                                                                      controller.speed(), step);
         // Paused, the camera stays where the shown frame was taken, and animated textures hold
         // their frame; playing, they run at the game's rate in simulated time (--fixed-dt too).
         if (advancing) {
-            controller.update(cameraInputFrom(input), step);
+            if (grid) grid->update(cameraInputFrom(input), step);
+            else controller.update(cameraInputFrom(input), step);
             animationClock += step;
             settings.time = float(animationClock);
+            // Animated instances (glTF animations, scene-file motions) follow the clock.
+            if (animatesGeometry(scene)) {
+                applyInstanceAnimations(scene, animationClock);
+                instancesMoved = true;
+            }
         }
+        if (instancesMoved) renderer.setInstanceTransforms(scene);
         endInputFrame(input);
 
         ui.newFrame();
@@ -324,7 +378,12 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         EditRequests requests;
         if (panel.visible) ui.drawPanel(settings, panel, renderer.stats(), edit, requests);
         applyEdits(scene, renderer, settings, edit, requests, controller, panel);
-        if (requests.materialChanged || requests.moveObject || requests.openScene) shown.valid = false;
+        if (requests.openScene) {  // the new scene's own movement mode, nothing selected
+            grid.reset();
+            if (scene.tileGrid) grid.emplace(*scene.tileGrid, scene.camera);
+            selectedInstance = kNoObject;
+        }
+        if (requests.materialChanged || requests.moveObject || requests.openScene || instancesMoved) shown.valid = false;
         presenter.setVsync(panel.vsync);
 
         if (!presenter.beginFrame()) {
@@ -355,7 +414,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
             return std::max(1u, std::uint32_t(float(side) * std::clamp(settings.resolutionScale, 0.1f, 1.0f)));
         };
         const std::uint32_t rw = scaled(fb.width), rh = scaled(fb.height);
-        const Camera camera = controller.camera();
+        const Camera camera = grid ? grid->camera() : controller.camera();
         // Playing renders every frame; paused renders one preview frame, again only when the
         // camera, a setting or the size changed (or for a screenshot), and shows it meanwhile.
         if (!automationDone && (panel.playing || panel.screenshotRequested || !shown.matches(camera, settings, rw, rh))) {
@@ -380,7 +439,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     }
     presenter.waitIdle();
     if (options.printCamera) {
-        std::printf("%s\n", cameraLine(controller.camera()).c_str());
+        std::printf("%s\n", cameraLine(grid ? grid->camera() : controller.camera()).c_str());
         std::fflush(stdout);
     }
 }

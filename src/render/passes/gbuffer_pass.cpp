@@ -7,10 +7,13 @@
 namespace penumbra {
 
 GBufferPass::GBufferPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                         const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer, std::uint32_t features)
-    : pipeline_(makeScenePipeline(ctx, "gbuffer", scene, frameUniforms, {PN_BINDING_VIEWER, PN_BINDING_GBUFFER}, features)) {
+                         const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer, std::uint32_t features,
+                         const gpu::Buffer* previousInstances)
+    : pipeline_(makeScenePipeline(ctx, "gbuffer", scene, frameUniforms,
+                                  {PN_BINDING_VIEWER, PN_BINDING_GBUFFER, PN_BINDING_INSTANCES_PREV}, features)) {
     pipeline_->bind(PN_BINDING_VIEWER, viewerUniforms);
     pipeline_->bind(PN_BINDING_GBUFFER, gbuffer);
+    pipeline_->bind(PN_BINDING_INSTANCES_PREV, previousInstances ? *previousInstances : scene.instances);
 }
 
 void GBufferPass::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, int subpixel) const {

@@ -11,8 +11,11 @@ namespace penumbra {
 
 class GBufferPass {
 public:
+    // previousInstances: the scene's Instance entries as the previous frame placed them, for the
+    // motion of moving objects; null: the current ones (nothing moves).
     GBufferPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer, std::uint32_t features);
+                const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer, std::uint32_t features,
+                const gpu::Buffer* previousInstances = nullptr);
     // subpixel < 0: the pixel centre; 0..15: that cell of a 4x4 grid in the pixel (row-major).
     void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, int subpixel = -1) const;
 

@@ -195,26 +195,62 @@ Scene loadAsset(const Reader& r, const Json& a, const std::string& where, const 
     return loadSceneFile(file, options);
 }
 
+// "motion": {"path": [[x,y,z], ...], "speed": m/s, "repeat": "loop" | "back_and_forth" | "once",
+// "spin": {"axis": [x,y,z], "degrees_per_second": d}} (docs/SCENES.md "Motions").
+ScriptedMotion readMotion(const Reader& r, const Json& j, const std::string& where) {
+    if (!j.is_object()) r.fail(where, "expected an object with \"path\" and \"speed\", or \"spin\"");
+    for (const auto& [key, value] : j.items())
+        if (key != "path" && key != "speed" && key != "repeat" && key != "spin")
+            r.fail(where + "." + key, "unknown key (a motion has path, speed, repeat and spin)");
+    ScriptedMotion m;
+    if (j.contains("path")) {
+        const Json& path = j["path"];
+        if (!path.is_array() || path.size() > 100'000) r.fail(where + ".path", "expected an array of up to 100,000 [x,y,z] offsets");
+        for (std::size_t i = 0; i < path.size(); ++i)
+            m.path.push_back(r.vec3(path[i], where + ".path[" + std::to_string(i) + "]", -1e9f, 1e9f));
+        if (m.path.size() >= 2) m.speed = r.number(r.member(j, "speed", where), where + ".speed", 1e-6f, 1e9f);
+    }
+    if (j.contains("repeat")) {
+        const std::string repeat = r.string(j["repeat"], where + ".repeat");
+        if (repeat == "loop") m.repeat = MotionRepeat::Loop;
+        else if (repeat == "back_and_forth") m.repeat = MotionRepeat::BackAndForth;
+        else if (repeat == "once") m.repeat = MotionRepeat::Once;
+        else r.fail(where + ".repeat", "must be \"loop\", \"back_and_forth\" or \"once\" (got \"" + repeat + "\")");
+    }
+    if (j.contains("spin")) {
+        const Json& spin = j["spin"];
+        const std::string at = where + ".spin";
+        m.spinDegreesPerSecond = r.number(r.member(spin, "degrees_per_second", at), at + ".degrees_per_second", -1e6f, 1e6f);
+        if (spin.contains("axis")) m.spinAxis = r.vec3(spin["axis"], at + ".axis", -1e9f, 1e9f);
+        if (!(length(m.spinAxis) > 1e-6f)) r.fail(at + ".axis", "must not be zero");
+        m.spinAxis = normalize(m.spinAxis);
+    }
+    return m;
+}
+
 // An asset with "instances": its meshes become one prototype (stored once, one bottom-level BVH)
 // placed by each entry's transform after the asset's own; instances the asset already has (a
 // scene file's, a glTF's shared meshes) are placed with it.
-void placeInstances(const Reader& r, const Json& a, const std::string& where, Scene part, const Affine& transform,
-                    Scene& scene) {
-    const Json& list = a["instances"];
-    const std::string listWhere = where + ".instances";
+void placeInstances(const Reader& r, const Json& a, const Json& list, const std::string& listWhere, Scene part,
+                    const Affine& transform, Scene& scene, const std::optional<ScriptedMotion>& assetMotion = {}) {
     if (!list.is_array() || list.empty() || list.size() > 10'000'000)
         r.fail(listWhere, "expected an array of 1 to 10,000,000 placements ({\"scale\", \"rotate\", \"translate\"})");
     if (!part.spheres.empty() || !part.sprites.empty() || !part.lights.empty())
-        r.fail(listWhere, "instances place meshes only, and this asset also has spheres, sprites or lights; "
-                          "place it with one asset per copy instead");
+        r.fail(listWhere, "instances and motions place meshes only, and this asset also has spheres, sprites or "
+                          "lights; place it with one asset per copy instead, or move only its meshes");
     const auto materialBase = static_cast<std::uint32_t>(scene.materials.size());
     const auto prototypeBase = static_cast<std::uint32_t>(scene.prototypes.size());
     std::vector<Prototype> prototypes = std::move(part.prototypes);
     std::vector<Instance> inner = std::move(part.instances);
     std::vector<InstanceAnimation> innerAnimations = std::move(part.instanceAnimations);
     part.instanceAnimations.clear();
+    std::vector<bool> innerAnimated(inner.size(), false);
+    for (const InstanceAnimation& moving : innerAnimations)
+        if (moving.instance < inner.size()) innerAnimated[moving.instance] = true;
     const auto own = static_cast<std::uint32_t>(prototypes.size());
-    if (!part.meshes.empty()) prototypes.push_back({r.string(a["file"], where + ".file"), std::move(part.meshes)});
+    if (!part.meshes.empty())
+        prototypes.push_back({a.contains("file") ? a["file"].get<std::string>() : a["preset"].get<std::string>(),
+                              std::move(part.meshes)});
     part.prototypes.clear();
     part.instances.clear();
     part.meshes.clear();
@@ -227,13 +263,32 @@ void placeInstances(const Reader& r, const Json& a, const std::string& where, Sc
         const std::string at = listWhere + "[" + std::to_string(i) + "]";
         if (!list[i].is_object()) r.fail(at, "expected an object");
         const Affine placed = readTransform(r, list[i], at) * transform;
-        if (own < prototypes.size()) scene.instances.push_back({prototypeBase + own, placed});
+        // The placement, moved by the entry's "motion" when it has one: the top of every chain.
+        NodeMotion placement;
+        placement.fixed = placed;
+        placement.scripted = assetMotion;
+        if (list[i].contains("motion")) placement.scripted = readMotion(r, list[i]["motion"], at + ".motion");
+        const bool moves = placement.scripted.has_value();
+        // Every instance the entry places keeps its own copy of the path: bound what a short
+        // file can make us hold.
+        if (moves && placement.scripted->path.size() * (inner.size() + 1) > 10'000'000)
+            r.fail(at + ".motion.path", "too long for an asset that places " + std::to_string(inner.size() + 1) +
+                                           " instances (at most 10,000,000 path points in all)");
+        if (own < prototypes.size()) {
+            if (moves) scene.instanceAnimations.push_back({std::uint32_t(scene.instances.size()), {placement}});
+            scene.instances.push_back({prototypeBase + own, placed});
+        }
         const auto innerBase = static_cast<std::uint32_t>(scene.instances.size());
-        for (const Instance& k : inner) scene.instances.push_back({prototypeBase + k.prototype, placed * k.transform});
+        for (std::size_t k = 0; k < inner.size(); ++k) {
+            if (moves && !innerAnimated[k]) {  // an animated one gets the motion on top of its chain below
+                NodeMotion local;
+                local.fixed = inner[k].transform;
+                scene.instanceAnimations.push_back({innerBase + std::uint32_t(k), {placement, local}});
+            }
+            scene.instances.push_back({prototypeBase + inner[k].prototype, placed * inner[k].transform});
+        }
         for (InstanceAnimation moving : innerAnimations) {  // each copy keeps moving, under its placement
             moving.instance += innerBase;
-            NodeMotion placement;
-            placement.fixed = placed;
             moving.chain.insert(moving.chain.begin(), placement);
             scene.instanceAnimations.push_back(std::move(moving));
         }
@@ -262,7 +317,13 @@ std::vector<AssetMaterial> readAssets(const Reader& r, const Json& doc, const st
         AssetMaterial am{"", where, scene.meshes.size(), 0, scene.spheres.size(), 0, scene.prototypes.size(), 0};
         if (a.contains("instances")) {
             if (a.contains("preset")) r.fail(where + ".instances", "instances place a \"file\" asset, not a preset");
-            placeInstances(r, a, where, std::move(part), transform, scene);
+            if (a.contains("motion"))
+                r.fail(where + ".motion", "an asset with \"instances\" moves per instance: give each entry its \"motion\"");
+            placeInstances(r, a, a["instances"], where + ".instances", std::move(part), transform, scene);
+        } else if (a.contains("motion")) {
+            // A moving asset is one instance (its meshes stored once, moved by the top level).
+            placeInstances(r, a, Json::array({Json::object()}), where, std::move(part), transform, scene,
+                           readMotion(r, a["motion"], where + ".motion"));
         } else {
             appendScene(scene, std::move(part), transform);
         }

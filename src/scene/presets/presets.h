@@ -31,6 +31,10 @@ Scene makeMaterialSpheres();
 // the other, and a slab laid diagonally across (bvh_lesson.cpp).
 Scene makeBvhLesson();
 
+// A 16 x 16 tile dungeon lit by wall torches and the player's torch, with a phantom patrolling a
+// corridor (an instance with a scene motion) and a tile grid for the viewer's grid movement.
+Scene makeDungeon();
+
 std::vector<std::string> presetNames();
 // The names, comma-separated, for messages and help.
 std::string presetList();
