@@ -284,8 +284,8 @@ void runViewer(Scene scene, const ViewerOptions& options) {
 
     CameraController controller = makeController(scene, options.fly);
     // Tile-map levels start in grid movement (G switches to free flight and back).
-    std::optional<GridWalker> grid;
-    if (scene.tileGrid && !options.fly) grid.emplace(*scene.tileGrid, scene.camera);
+    std::unique_ptr<GridWalker> grid;  // not std::optional: GCC 12 warns of it being maybe uninitialized
+    if (scene.tileGrid && !options.fly) grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
     std::uint32_t selectedInstance = kNoObject;  // N cycles through the instances; a click picks one
     InputState input;
     installCallbacks(window.get(), input);
@@ -327,7 +327,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         if (script && advancing) script->playFrame(input, step);
         const bool resetAsked = input.resetCamera || panel.resetCamera;
         handlePresses(input, w, pointer, controller, panel);
-        if (grid && resetAsked) grid.emplace(*scene.tileGrid, scene.camera);  // R: back to the start tile
+        if (grid && resetAsked) grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);  // R: back to the start tile
         if (input.gridToggled) {
             if (grid) {
                 controller = CameraController(grid->camera(), cameraSpeedFor(scene), scene.walkMap);
@@ -335,7 +335,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
                 grid.reset();
                 panel.message = "free flight (G: grid movement)";
             } else if (scene.tileGrid) {
-                grid.emplace(*scene.tileGrid, controller.camera());
+                grid = std::make_unique<GridWalker>(*scene.tileGrid, controller.camera());
                 panel.message = "grid movement (G: free flight)";
             } else {
                 panel.message = "grid movement needs a tile-map level (the dungeon)";
@@ -380,7 +380,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         applyEdits(scene, renderer, settings, edit, requests, controller, panel);
         if (requests.openScene) {  // the new scene's own movement mode, nothing selected
             grid.reset();
-            if (scene.tileGrid) grid.emplace(*scene.tileGrid, scene.camera);
+            if (scene.tileGrid) grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
             selectedInstance = kNoObject;
         }
         if (requests.materialChanged || requests.moveObject || requests.openScene || instancesMoved) shown.valid = false;
