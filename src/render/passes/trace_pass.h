@@ -16,10 +16,11 @@
 namespace penumbra {
 
 // Auto: the wavefront for passes of at least kWavefrontMinPaths paths, where it is faster on the
-// H200 (1.8x on DOOM1 at 1280x800 x 4 spp), the megakernel below, where the wavefront's fixed
-// cost per bounce (a dozen dispatches and barriers) outweighs what it saves (docs/PERFORMANCE.md).
+// H200 (1.9x on DOOM1 at 1280x800 x 4 spp, 1.3x at 960x540, even on Cornell), the megakernel
+// below, where the wavefront's fixed cost per bounce (a dozen dispatches and barriers) outweighs
+// what it saves (480x270: 25% slower on DOOM1). docs/PERFORMANCE.md has the crossover runs.
 enum class TraceKernel { Auto, Megakernel, Wavefront };
-constexpr std::uint64_t kWavefrontMinPaths = std::uint64_t(1) << 20;
+constexpr std::uint64_t kWavefrontMinPaths = std::uint64_t(1) << 18;
 
 // The kernel design: PENUMBRA_TRACE_KERNEL=mega, =wavefront or =auto (the A/B switch of
 // docs/PERFORMANCE.md); auto when unset.
