@@ -44,9 +44,9 @@ TEST_F(CliTest, ADeviceLostWithoutCheckpointsIsOneLineAndNoImage) {
 }
 
 // The same at points spread over a render, from the first checked call (the device is being made)
-// through the scene upload and the pipelines to the passes (a render of this size makes about
-// 300 checked calls before its passes), for each result the hook fakes: always one line, exit 1, no crash (the
-// exit code of a signal is -1 here), no validation message and no image.
+// through the scene upload and the pipelines to the passes (this render makes about 300 checked
+// calls before its passes), for each result the hook fakes: always one line, exit 1, no crash (a
+// signal's exit code is -1 here), no validation message and no image.
 TEST_F(CliTest, ALostDeviceOrExhaustedMemoryAtAnyPointIsOneLineAndNoImage) {
     const std::pair<const char*, const char*> results[] = {
         {"VK_ERROR_DEVICE_LOST", "the GPU was lost"},
