@@ -25,14 +25,7 @@ Commands::Commands(const Context& ctx) : ctx_(ctx) {
     fence_ = Fence(device, fence);
 }
 
-Commands::~Commands() {
-    // A submission abandoned by an exception (a failed wait) may still run: wait before the pool
-    // and fence go. A lost device answers at once; the result changes nothing here.
-    if (inFlight_) {
-        VkFence fence = fence_.get();
-        vkWaitForFences(ctx_.device(), 1, &fence, VK_TRUE, UINT64_MAX);
-    }
-}  // the pool frees its command buffer
+Commands::~Commands() = default;  // run() never leaves a submission behind; the pool frees its buffer
 
 void Commands::run(const std::function<void(VkCommandBuffer)>& record) {
     PN_VK(vkResetCommandBuffer(cmd_, 0));
@@ -48,9 +41,16 @@ void Commands::run(const std::function<void(VkCommandBuffer)>& record) {
     VkFence fence = fence_.get();
     PN_VK(vkResetFences(ctx_.device(), 1, &fence));
     PN_VK(vkQueueSubmit(ctx_.queue(), 1, &submit, fence));
-    inFlight_ = true;
-    PN_VK(vkWaitForFences(ctx_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
-    inFlight_ = false;
+    try {
+        PN_VK(vkWaitForFences(ctx_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+    } catch (...) {
+        // The submission may still be running, and the exception is about to unwind the objects
+        // it reads (a Renderer's buffers go before its Commands): wait for it before they go.
+        // Waiting here, not in ~Commands, is what makes the order of an owner's members not
+        // matter. A lost device answers at once; the result changes nothing.
+        vkWaitForFences(ctx_.device(), 1, &fence, VK_TRUE, UINT64_MAX);
+        throw;
+    }
 }
 
 void computeBarrier(VkCommandBuffer cmd) {

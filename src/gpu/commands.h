@@ -15,7 +15,8 @@ public:
     Commands(const Commands&) = delete;
     Commands& operator=(const Commands&) = delete;
 
-    // Records `record` into a fresh command buffer, submits it and waits until the GPU is done.
+    // Records `record` into a fresh command buffer, submits it and waits until the GPU is done,
+    // also when it throws: nothing it submitted is still running when it returns or throws.
     void run(const std::function<void(VkCommandBuffer)>& record);
 
 private:
@@ -23,7 +24,6 @@ private:
     CommandPool pool_;
     Fence fence_;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
-    bool inFlight_ = false;  // submitted, not yet waited for
 };
 
 // Makes compute-shader and transfer writes visible to later compute shaders and transfers.

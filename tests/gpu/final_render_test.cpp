@@ -163,9 +163,6 @@ TEST_F(GpuTest, AdaptiveSamplingSkipsConvergedTilesAndLeavesTheOthersAlone) {
 std::uint8_t checkerValue(int tx, int ty, int square) { return ((tx / square + ty / square) % 2) ? 220 : 40; }
 
 Scene checkerQuad(int square) {
-    Scene scene;
-    scene.name = "checker";
-    scene.background = Vec3{1.0f};
     Texture tex;
     tex.name = "checker";
     tex.width = 16;
@@ -175,19 +172,7 @@ Scene checkerQuad(int square) {
             const std::uint8_t v = checkerValue(x, y, square);
             tex.rgba.insert(tex.rgba.end(), {v, std::uint8_t(v / 2), v, 255});
         }
-    scene.textures.push_back(tex);
-    const std::uint32_t mat = addMaterial(scene, "checker", Vec3{1.0f});
-    scene.materials[mat].albedoTexture.texture = 0;
-    Mesh quad;
-    quad.name = "quad";
-    quad.material = mat;
-    addQuad(quad, {-1, 1, 0}, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0});
-    quad.uvs = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
-    scene.meshes.push_back(quad);
-    scene.camera.position = {0, 0, 2};
-    scene.camera.lookAt = {0, 0, 0};
-    scene.camera.fovYDegrees = 90;  // the quad fills the middle half of the view
-    return scene;
+    return texturedQuadScene("checker", std::move(tex));
 }
 
 TEST_F(GpuTest, GuidesShowTheTextureTheFacingNormalAndTheDepth) {

@@ -21,11 +21,7 @@ Scene misScene() {
     std::uint32_t small = addMaterial(scene, "small-light", Vec3{0.0f}, Vec3{300.0f, 250.0f, 200.0f});
     std::uint32_t large = addMaterial(scene, "large-light", Vec3{0.0f}, Vec3{1.0f, 1.2f, 1.5f});
     auto quad = [&](std::uint32_t material, Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-        Mesh m;
-        m.name = scene.materials[material].name;
-        m.material = material;
-        addQuad(m, a, b, c, d);
-        scene.meshes.push_back(m);
+        addQuadMesh(scene, scene.materials[material].name, material, a, b, c, d);
     };
     // Floor at y = 0, facing up: glossy on the left half, diffuse on the right.
     quad(glossy, {-2, 0, 1}, {0, 0, 1}, {0, 0, -3}, {-2, 0, -3});

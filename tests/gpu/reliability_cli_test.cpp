@@ -43,5 +43,26 @@ TEST_F(CliTest, ADeviceLostWithoutCheckpointsIsOneLineAndNoImage) {
     EXPECT_FALSE(fs::exists(dir / "a.png.state"));
 }
 
+// The same at points spread over a render, from the first checked call (the device is being made)
+// through the scene upload and the pipelines to the passes (this render makes about 300 checked
+// calls before its passes), for each result the hook fakes: always one line, exit 1, no crash (a
+// signal's exit code is -1 here), no validation message and no image.
+TEST_F(CliTest, ALostDeviceOrExhaustedMemoryAtAnyPointIsOneLineAndNoImage) {
+    const std::pair<const char*, const char*> results[] = {
+        {"VK_ERROR_DEVICE_LOST", "the GPU was lost"},
+        {"VK_ERROR_OUT_OF_DEVICE_MEMORY", "the GPU is out of memory"},
+        {"VK_ERROR_OUT_OF_HOST_MEMORY", "the driver ran out of system memory"},
+    };
+    int at = 0;
+    for (std::uint64_t calls : {0, 10, 40, 120, 200, 260, 330}) {
+        const auto& [result, says] = results[at++ % 3];
+        SCOPED_TRACE(std::string(result) + " after " + std::to_string(calls) + " calls");
+        const RunResult r = run("render cornell --width 8 --height 8 --spp 64 -o a.png",
+                                std::string("PENUMBRA_TEST_VK_FAILURE=") + result + ":" + std::to_string(calls));
+        expectOneLineError(r, 1, says);
+        EXPECT_FALSE(fs::exists(dir / "a.png"));
+    }
+}
+
 }  // namespace
 }  // namespace penumbra::test

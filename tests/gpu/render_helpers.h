@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/vec.h"
@@ -35,6 +36,28 @@ inline Scene diffuseFloorScene(float albedo, Vec3 eye, Vec3 up, float fovDegrees
     s.camera.up = up;
     s.camera.fovYDegrees = fovDegrees;
     return s;
+}
+
+// A quad from (-1,-1) to (1,1) at z = 0, its material's albedo the texture `tex` (texture 0, uv
+// (0,0) top left), under a uniform white sky, seen from z = 2 with a 90-degree view: the quad fills
+// the middle half of the image. A diffuse surface under a unit sky shows exactly its albedo.
+inline Scene texturedQuadScene(const std::string& name, Texture tex) {
+    Scene scene;
+    scene.name = name;
+    scene.background = Vec3{1.0f};
+    scene.textures.push_back(std::move(tex));
+    const std::uint32_t mat = addMaterial(scene, name, Vec3{1.0f});
+    scene.materials[mat].albedoTexture.texture = 0;
+    Mesh quad;
+    quad.name = "quad";
+    quad.material = mat;
+    addQuad(quad, {-1, 1, 0}, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0});
+    quad.uvs = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
+    scene.meshes.push_back(quad);
+    scene.camera.position = {0, 0, 2};
+    scene.camera.lookAt = {0, 0, 0};
+    scene.camera.fovYDegrees = 90;
+    return scene;
 }
 
 // A small test render: width x height, `spp` samples per pixel in passes of up to 16.

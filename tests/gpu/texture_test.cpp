@@ -10,9 +10,6 @@ namespace penumbra::test {
 namespace {
 
 Scene texturedQuad(float alphaCutoff) {
-    Scene scene;
-    scene.name = "textured quad";
-    scene.background = Vec3{1.0f};
     // 8x8 texels in four 4x4 blocks, so bilinear filtering inside a block returns the block's
     // colour exactly: top-left red, top-right green, bottom-left blue (transparent), bottom-right grey.
     Texture tex;
@@ -23,19 +20,8 @@ Scene texturedQuad(float alphaCutoff) {
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 8; ++x)
             tex.rgba.insert(tex.rgba.end(), blocks[(y / 4) * 2 + x / 4], blocks[(y / 4) * 2 + x / 4] + 4);
-    scene.textures.push_back(tex);
-    std::uint32_t mat = addMaterial(scene, "textured", Vec3{1.0f});
-    scene.materials[mat].albedoTexture.texture = 0;
-    scene.materials[mat].alphaCutoff = alphaCutoff;
-    Mesh quad;
-    quad.name = "quad";
-    quad.material = mat;
-    addQuad(quad, {-1, 1, 0}, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0});
-    quad.uvs = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
-    scene.meshes.push_back(quad);
-    scene.camera.position = {0, 0, 2};
-    scene.camera.lookAt = {0, 0, 0};
-    scene.camera.fovYDegrees = 90;  // the quad fills the middle half of the view
+    Scene scene = texturedQuadScene("textured quad", std::move(tex));
+    scene.materials[0].alphaCutoff = alphaCutoff;
     return scene;
 }
 

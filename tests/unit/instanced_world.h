@@ -31,11 +31,7 @@ inline Scene instancedRoom(int instances = 5, int rings = 6, int segments = 9) {
     s.materials[metal].roughness = 0.35f;
     const std::uint32_t panel = addMaterial(s, "panel", Vec3{0}, {5.0f, 5.0f, 4.5f});
     auto quad = [&](const char* name, std::uint32_t material, Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-        Mesh m;
-        m.name = name;
-        m.material = material;
-        addQuad(m, a, b, c, d);
-        s.meshes.push_back(std::move(m));
+        addQuadMesh(s, name, material, a, b, c, d);
     };
     quad("floor", floor, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2});
     quad("back", red, {-2, 0, -2}, {2, 0, -2}, {2, 2.5f, -2}, {-2, 2.5f, -2});

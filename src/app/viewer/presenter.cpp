@@ -182,7 +182,6 @@ bool Presenter::beginFrame() {
         return false;
     }
     if (r != VK_SUBOPTIMAL_KHR) PN_VK(r);
-    PN_VK(vkResetFences(device, 1, &fence));
     PN_VK(vkResetCommandBuffer(cmd_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -305,7 +304,11 @@ void Presenter::endFrame() {
     submit.pCommandBuffers = &cmd_;
     submit.signalSemaphoreCount = 1;
     submit.pSignalSemaphores = &signal;
-    PN_VK(vkQueueSubmit(ctx_.queue(), 1, &submit, frameFence_.get()));
+    // Reset only now, right before the submission that signals it: a frame abandoned by an
+    // exception anywhere before leaves the fence signalled, so no later wait can hang on it.
+    VkFence fence = frameFence_.get();
+    PN_VK(vkResetFences(ctx_.device(), 1, &fence));
+    PN_VK(vkQueueSubmit(ctx_.queue(), 1, &submit, fence));
     VkSwapchainKHR swapchain = swapchain_.get();
     VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     present.waitSemaphoreCount = 1;

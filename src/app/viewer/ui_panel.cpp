@@ -41,7 +41,7 @@ void heatLegend(const char* what, std::uint32_t maximum) {
 
 }  // namespace
 
-UiLayer::UiLayer(const gpu::Context& ctx, GLFWwindow* window, const Presenter& presenter) {
+UiLayer::UiLayer(const gpu::Context& ctx, GLFWwindow* window, const Presenter& presenter) : device_(ctx.device()) {
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
@@ -69,12 +69,25 @@ UiLayer::UiLayer(const gpu::Context& ctx, GLFWwindow* window, const Presenter& p
     info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
     info.CheckVkResultFn = checkImguiVk;
     ImGui_ImplVulkan_Init(&info, presenter.renderPass());
-    gpu::Commands commands(ctx);
-    commands.run([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
-    ImGui_ImplVulkan_DestroyFontUploadObjects();
+    try {
+        gpu::Commands commands(ctx);
+        commands.run([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+        ImGui_ImplVulkan_DestroyFontUploadObjects();
+    } catch (...) {  // a lost device or no memory: no destructor will run, so undo Init here
+        shutdown();
+        throw;
+    }
 }
 
 UiLayer::~UiLayer() {
+    // The presenter's last frame may still draw with ImGui's buffers (an exception in the frame
+    // loop skips the wait for it, and the presenter, made first, goes last): wait for it before
+    // they go. A lost device answers at once; the result changes nothing here.
+    vkDeviceWaitIdle(device_);
+    shutdown();
+}
+
+void UiLayer::shutdown() {
     ImGui_ImplVulkan_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();

@@ -51,6 +51,9 @@ public:
     bool wantsKeyboard() const;
 
 private:
+    void shutdown();  // ImGui's backends and context
+
+    VkDevice device_;
     gpu::DescriptorPool pool_;
 };
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <mutex>
 #include <vector>
 
@@ -56,12 +57,12 @@ VertexLayout vertexLayout(const Element& e, const std::string& name) {
     if (!claim({"x"}, kX) || !claim({"y"}, kY) || !claim({"z"}, kZ))
         throw Error(name + ":" + std::to_string(e.line) +
                     ": the vertex element needs properties x, y and z");
-    l.normals = claim({"nx"}, kNX) & claim({"ny"}, kNY) & claim({"nz"}, kNZ);
-    l.uvs = (claim({"u", "s", "texture_u", "texture_s"}, kU) &
-             claim({"v", "t", "texture_v", "texture_t"}, kV));
-    l.colours = claim({"red", "diffuse_red", "r"}, kRed) &
-                claim({"green", "diffuse_green", "g"}, kGreen) &
-                claim({"blue", "diffuse_blue", "b"}, kBlue);
+    // Each property of a group is claimed even when an earlier one is missing (no short-circuit).
+    auto all = [](std::initializer_list<bool> claimed) { return std::ranges::all_of(claimed, std::identity{}); };
+    l.normals = all({claim({"nx"}, kNX), claim({"ny"}, kNY), claim({"nz"}, kNZ)});
+    l.uvs = all({claim({"u", "s", "texture_u", "texture_s"}, kU), claim({"v", "t", "texture_v", "texture_t"}, kV)});
+    l.colours = all({claim({"red", "diffuse_red", "r"}, kRed), claim({"green", "diffuse_green", "g"}, kGreen),
+                     claim({"blue", "diffuse_blue", "b"}, kBlue)});
     if (l.colours) {
         const int r = e.find("red") >= 0
                           ? e.find("red")

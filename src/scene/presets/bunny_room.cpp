@@ -83,11 +83,7 @@ Scene makeBunnyRoom() {
 
     const float w = kHalfWidth, h = kHeight;
     auto wall = [&](const char* name, std::uint32_t material, Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-        Mesh m;
-        m.name = name;
-        m.material = material;
-        addQuad(m, a, b, c, d);
-        scene.meshes.push_back(std::move(m));
+        addQuadMesh(scene, name, material, a, b, c, d);
     };
     // Every wall faces into the room.
     wall("floor", floor, {-w, 0, -w}, {-w, 0, w}, {w, 0, w}, {w, 0, -w});

@@ -22,7 +22,10 @@ float bruteForceCost(const std::vector<PrimRef>& prims, const BuildOptions& o, c
     float best = std::numeric_limits<float>::infinity();
     for (int a = 0; a < 3; ++a) {
         std::vector<PrimRef> sorted = prims;
-        std::stable_sort(sorted.begin(), sorted.end(), [a](const PrimRef& p, const PrimRef& q) {
+        // std::sort, not stable_sort: libstdc++ 12's stable_sort buffer ignores PrimRef's 32-byte
+        // alignment (UBSan: misaligned reference), and ties are skipped below, so order among
+        // equal centroids changes no cost.
+        std::sort(sorted.begin(), sorted.end(), [a](const PrimRef& p, const PrimRef& q) {
             return p.centroid()[a] < q.centroid()[a];
         });
         for (std::size_t k = 1; k < sorted.size(); ++k) {
