@@ -3,21 +3,13 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/median.h"
 #include "gpu/commands.h"
 #include "gpu/timer.h"
 #include "render/kernel_features.h"
 #include "render/scene_pipeline.h"
 
 namespace penumbra {
-namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
-}  // namespace
 
 RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repeats) {
     if (!ctx.timestampsSupported())

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/median.h"
 #include "gpu/buffer.h"
 #include "render/kernel_features.h"
 #include "scene/animation.h"
@@ -20,13 +21,6 @@ constexpr double kPi = 3.14159265358979323846;
 Vec3 rotateAbout(Vec3 v, Vec3 axis, double radians) {
     const float c = float(std::cos(radians)), s = float(std::sin(radians));
     return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0f - c));
-}
-
-double median(std::vector<double> values) {
-    if (values.empty()) return 0;
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 void renderFrame(InteractiveRenderer& renderer, const Camera& camera, const ViewSettings& view) {

@@ -91,9 +91,10 @@ void TracePass::reserve(std::uint32_t width, std::uint32_t height, std::uint32_t
         return;
     }
     std::uint64_t most = 0;
-    for (const TraceTile& tile : traceTiles(width, height, samplesPerPass, pathBudget_))
-        most = std::max<std::uint64_t>(most, std::uint64_t(std::min(tile.width, width - tile.x)) *
-                                                 std::min(tile.height, height - tile.y) * samplesPerPass);
+    for (const TraceTile& tile : traceTiles(width, height, samplesPerPass, pathBudget_)) {
+        const TraceTile inside = clipTile(tile, width, height);
+        most = std::max<std::uint64_t>(most, std::uint64_t(inside.width) * inside.height * samplesPerPass);
+    }
     wavefront().reserve(most);
 }
 

@@ -26,6 +26,10 @@ std::vector<TraceTile> traceTiles(std::uint32_t width, std::uint32_t height, std
     return tiles;
 }
 
+TraceTile clipTile(const TraceTile& tile, std::uint32_t width, std::uint32_t height) {
+    return {tile.x, tile.y, std::min(tile.width, width - tile.x), std::min(tile.height, height - tile.y)};
+}
+
 std::uint64_t defaultPathBudget(VkPhysicalDeviceType type) {
     // lavapipe on the 2-core CI machine: see docs/RELIABILITY.md for the measured figure.
     if (type == VK_PHYSICAL_DEVICE_TYPE_CPU) return std::uint64_t(1) << 14;

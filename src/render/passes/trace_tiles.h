@@ -22,6 +22,9 @@ struct TraceTile {
 std::vector<TraceTile> traceTiles(std::uint32_t width, std::uint32_t height, std::uint32_t samplesPerPass,
                                   std::uint64_t pathBudget);
 
+// The part of `tile` inside width x height: a tile is whole workgroups, so the last ones overhang.
+TraceTile clipTile(const TraceTile& tile, std::uint32_t width, std::uint32_t height);
+
 // Paths per dispatch by device: a CPU implementation (lavapipe) traces well under a million paths a
 // second on two cores; a GPU, even integrated, far more.
 std::uint64_t defaultPathBudget(VkPhysicalDeviceType type);

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "core/median.h"
 #include "gpu/check.h"
 #include "gpu/commands.h"
 #include "gpu/limits.h"
@@ -22,11 +23,6 @@ std::uint32_t groupsFor(std::uint64_t items) { return std::uint32_t((items + PN_
 
 enum Stage : std::uint32_t { kStart, kExtend, kShade, kShadow, kFinish, kStageCount };
 constexpr const char* kStageNames[kStageCount] = {"start", "extend", "shade", "shadow", "finish"};
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 }  // namespace
 
@@ -132,8 +128,8 @@ void WavefrontPass::beginPass(VkCommandBuffer cmd) { collectStageTimes(cmd); }
 void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint32_t width, std::uint32_t height,
                            std::uint32_t samplesPerPass, std::uint32_t passIndex, std::uint32_t maxBounces,
                            bool countRays, bool masked) {
-    const std::uint32_t tileWidth = std::min(tile.width, width - tile.x);
-    const std::uint32_t tileHeight = std::min(tile.height, height - tile.y);
+    const TraceTile inside = clipTile(tile, width, height);
+    const std::uint32_t tileWidth = inside.width, tileHeight = inside.height;
     const std::uint64_t slots = std::uint64_t(tileWidth) * tileHeight * samplesPerPass;
     reserve(slots);
     shader::PassPush push{passIndex,        masked ? PN_TRACE_MASKED : 0u, std::uint32_t(slots),
