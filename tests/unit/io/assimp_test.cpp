@@ -18,17 +18,9 @@ namespace {
 
 using test::dataDir;
 using test::readBytes;
+using test::errorOf;
 
 const std::filesystem::path kModels = "/usr/share/assimp/models";
-
-std::string errorOf(auto&& fn) {
-    try {
-        fn();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "<no error>";
-}
 
 Vec3 faceNormal(const Mesh& m, std::size_t t) {
     const Vec3 p0 = m.positions[m.indices[3 * t]], p1 = m.positions[m.indices[3 * t + 1]],

@@ -9,6 +9,8 @@
 #include <iterator>
 #include <string>
 
+#include "core/error.h"
+
 namespace penumbra::test {
 
 inline std::filesystem::path dataDir() {
@@ -19,6 +21,16 @@ inline std::filesystem::path dataDir() {
 inline std::string readBytes(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The message of the Error that fn throws, or "<no error>".
+std::string errorOf(auto&& fn) {
+    try {
+        fn();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "<no error>";
 }
 
 // Debian test assets are optional locally but required in CI.

@@ -16,20 +16,12 @@ namespace penumbra {
 namespace {
 
 using test::dataDir;
+using test::errorOf;
 
 const Mesh* meshNamed(const Scene& s, const std::string& name) {
     for (const Mesh& m : s.meshes)
         if (m.name == name) return &m;
     return nullptr;
-}
-
-std::string errorOf(auto&& fn) {
-    try {
-        fn();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "<no error>";
 }
 
 TEST(ObjLoader, QuadAndNegativeIndexPolygonAreTriangulatedPerMaterial) {

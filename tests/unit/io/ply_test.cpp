@@ -16,15 +16,7 @@ namespace {
 
 using test::dataDir;
 using test::readBytes;
-
-std::string errorOf(auto&& fn) {
-    try {
-        fn();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "<no error>";
-}
+using test::errorOf;
 
 class PlyCube : public ::testing::TestWithParam<const char*> {};
 
