@@ -42,7 +42,12 @@ void main() {
                 variance += k * src[pixelIndex(q)].a;
                 kernelSum += k;
             }
-        float lumScale = viewer.sigmaLuminance * sqrt(max(variance / kernelSum, 0.0)) + 1e-6;
+        // The three edge-stopping weights, pow(max(cos, 0), sigmaNormal) * exp(-depthTerm) *
+        // exp(-lumTerm), are folded into one exp2 per tap: the filter is bound by special-function
+        // throughput (log, exp, reciprocal), not by its reads. A cosine <= 0 gives log2 of a tiny
+        // floor, so the weight rounds to 0 as pow(0, sigma) does, with no 0 * -inf.
+        const float kLog2e = 1.4426950409;
+        float invLumScale = kLog2e / (viewer.sigmaLuminance * sqrt(max(variance / kernelSum, 0.0)) + 1e-6);
         // Screen-space depth gradient, so slanted surfaces are not cut into strips.
         vec2 gradient = 0.5 * vec2(depthAt(p + ivec2(1, 0), depth) - depthAt(p - ivec2(1, 0), depth),
                                    depthAt(p + ivec2(0, 1), depth) - depthAt(p - ivec2(0, 1), depth));
@@ -60,11 +65,11 @@ void main() {
                 float tapDepth = uintBitsToFloat(tapGuide.y);
                 if (!(tapDepth > 0.0)) continue;
                 vec4 s = src[qi];
-                float wNormal = pow(max(dot(normal, octDecode(unpackSnorm2x16(tapGuide.x))), 0.0), viewer.sigmaNormal);
+                float cosNormal = max(dot(normal, octDecode(unpackSnorm2x16(tapGuide.x))), 1e-30);
                 float depthScale = viewer.sigmaDepth * abs(dot(gradient, vec2(offset))) + 1e-3 * depth;
-                float wDepth = exp(-abs(depth - tapDepth) / depthScale);
-                float wLum = exp(-abs(centreLum - luminance(s.rgb)) / lumScale);
-                float w = kB3[abs(dx)] * kB3[abs(dy)] * wNormal * wDepth * wLum;
+                float exponent = viewer.sigmaNormal * log2(cosNormal) - kLog2e * abs(depth - tapDepth) / depthScale -
+                                 abs(centreLum - luminance(s.rgb)) * invLumScale;
+                float w = kB3[abs(dx)] * kB3[abs(dy)] * exp2(exponent);
                 colorSum += w * s.rgb;
                 varianceSum += w * w * s.a;
                 weightSum += w;

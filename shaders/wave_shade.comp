@@ -19,10 +19,13 @@ void main() {
     PendingShadow shadow = noShadow();
     if (i < liveRays()) {
         slot = queueIn(i);
-        Path path = loadPath(slot);
+        Hit hit = loadHit(slot);
+        Path path = loadPathForShading(slot, hit);
         uvec3 p = slotPixel(slot);
-        alive = extendPath(path, loadHit(slot), p.y * frame.width + p.x, shadow);
-        storePath(slot, path);
+        alive = extendPath(path, hit, p.y * frame.width + p.x, shadow);
+        // The path's own light (emission, an escape) is rare: read-modify-write only then.
+        if (path.result != vec3(0.0)) addToPathResult(slot, path.result);
+        if (alive) storePath(slot, path);
     }
     uint next = appendIndex(alive, (push.waveBounce + 1u) & 1u);
     if (alive) queueNext(next, slot);

@@ -19,6 +19,7 @@ void main() {
         if (pixelSampled(p.xy)) {
             uint pixelIndex = p.y * frame.width + p.x;
             storePath(slot, startPath(p.xy, pixelIndex, push.passIndex * frame.samplesPerPass + p.z));
+            startPathResult(slot);
             started = true;
         }
     }

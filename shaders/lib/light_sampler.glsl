@@ -5,11 +5,13 @@
 // The lights are LightRef entries (render/light_list.h). The first frame.topLightCount are
 // weighed one by one at every point: the environment (pi times its mean luminance), directional
 // lights (illuminance times the cosine bound at the surface) and lights that move every frame
-// (their LightNode, rewritten per frame). Everything bounded in space sits in a light BVH whose
-// root competes with them; the pick descends it choosing children in proportion to their
-// importance (Conty Estevez & Kulla 2018; pbrt-v4's BVHLightSampler): power over squared
-// distance, times bounds on the emitter's and the surface's cosines. lightPickPmf retraces the
-// same choices along the light's bit trail, so MIS uses exactly the probability sampling had.
+// (their LightNode). Everything bounded in space sits in a light BVH whose root competes with
+// them; the pick descends it choosing children in proportion to their importance (Conty Estevez
+// & Kulla 2018; pbrt-v4's BVHLightSampler): power over squared distance, times bounds on the
+// emitter's and the surface's cosines. lightPickPmf retraces the same choices along the light's
+// bit trail, so MIS uses exactly the probability sampling had. The walk evaluates two bounds per
+// level, some twenty per pick on a Doom level: the tree's nodes (LightTreeNode) carry what the
+// bound needs precomputed, and the bound spends as few square roots and divisions as it can.
 #ifndef PN_LIGHT_SAMPLER_GLSL
 #define PN_LIGHT_SAMPLER_GLSL
 
@@ -30,38 +32,59 @@ float sinSubClamped(float sinA, float cosA, float sinB, float cosB) { return cos
 float sinFromCos(float c) { return sqrt(max(0.0, 1.0 - c * c)); }
 
 
-// How much the lights under `node` could bring to a surface at p with normal n (n = 0: no
+// Bounds of a set of lights: a sphere holding them, their power, and the cones of their normals
+// (thetaO about axis) and of their emission beyond a normal (thetaE).
+struct LightCluster {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float phi;
+    float cosThetaO, sinThetaO, cosThetaE;
+    bool twoSided;
+};
+
+// How much the lights of a cluster could bring to a surface at p with normal n (n = 0: no
 // surface): zero only where they cannot light p at all.
-float lightNodeImportance(LightNode node, vec3 p, vec3 n) {
-    vec3 halfDiagonal = 0.5 * (node.boundsMax - node.boundsMin);
-    vec3 toP = p - (node.boundsMin + halfDiagonal);
+float clusterImportance(LightCluster c, vec3 p, vec3 n) {
+    vec3 toP = p - c.center;
     float dist2 = dot(toP, toP);
-    // Within the bounds the squared distance says little; pbrt-v4 floors it at half the diagonal.
-    float d2 = max(dist2, node.minDistance2);
-    vec3 wi = dist2 > 0.0 ? toP * inversesqrt(dist2) : node.axis;
-    float cosW = dot(node.axis, wi);
-    if (node.twoSided != 0u) cosW = abs(cosW);
+    float invDist = inversesqrt(dist2);
+    vec3 wi = dist2 > 0.0 ? toP * invDist : c.axis;
+    float cosW = dot(c.axis, wi);
+    if (c.twoSided) cosW = abs(cosW);
     float sinW = sinFromCos(cosW);
-    // The cone from p that holds the box (through its bounding sphere); every direction from
-    // inside that sphere.
-    float r2 = dot(halfDiagonal, halfDiagonal);
-    float sin2B = dist2 > r2 ? r2 / dist2 : 1.0;
-    float cosB = dist2 > r2 ? sqrt(1.0 - sin2B) : -1.0;
-    float sinB = dist2 > r2 ? sqrt(sin2B) : 0.0;
+    // The cone from p that holds the sphere; every direction from inside it.
+    bool outside = dist2 > c.radius * c.radius;
+    float sinB = outside ? c.radius * invDist : 0.0;
+    float cosB = outside ? sqrt(max(0.0, 1.0 - sinB * sinB)) : -1.0;
     // The smallest angle between an emitting normal and a direction toward p, then the emission
     // spread beyond it.
-    float cosX = cosSubClamped(sinW, cosW, node.sinThetaO, node.cosThetaO);
-    float sinX = sinSubClamped(sinW, cosW, node.sinThetaO, node.cosThetaO);
+    float cosX = cosSubClamped(sinW, cosW, c.sinThetaO, c.cosThetaO);
+    float sinX = sinSubClamped(sinW, cosW, c.sinThetaO, c.cosThetaO);
     float cosP = cosSubClamped(sinX, cosX, sinB, cosB);
-    if (cosP <= node.cosThetaE) return 0.0;
-    float importance = node.phi * cosP / d2;
+    if (cosP <= c.cosThetaE) return 0.0;
+    // Within the bounds the squared distance says little; pbrt-v4 floors it at half the diagonal.
+    float importance = c.phi * cosP / max(dist2, c.radius);
     if (n != vec3(0.0)) {
-        // The cosine at the surface, either side (transmission), bounded over the box's cone.
+        // The cosine at the surface, either side (transmission), bounded over the sphere's cone.
         float cosI = abs(dot(wi, n));
         importance *= cosSubClamped(sinFromCos(cosI), cosI, sinB, cosB);
     }
     return max(importance, 0.0);
 }
+
+float lightNodeImportance(LightNode node, vec3 p, vec3 n) {
+    vec3 halfDiagonal = 0.5 * (node.boundsMax - node.boundsMin);
+    return clusterImportance(LightCluster(node.boundsMin + halfDiagonal, length(halfDiagonal), node.axis, node.phi,
+                                          node.cosThetaO, node.sinThetaO, node.cosThetaE, node.twoSided != 0u), p, n);
+}
+
+float treeNodeImportance(LightTreeNode node, vec3 p, vec3 n) {
+    return clusterImportance(LightCluster(node.center, node.radius, node.axis, node.phi, node.cosThetaO, node.sinThetaO,
+                                          node.cosThetaE, (node.childOrLight & PN_LIGHT_NODE_TWO_SIDED) != 0u), p, n);
+}
+
+bool hasLightTree() { return frame.lightNodeCount > 0u; }
 
 // A directional light's illuminance times the best cosine at the surface over its disk.
 float directionalImportance(PunctualLight l, vec3 n) {
@@ -79,21 +102,21 @@ float topLightImportance(uint k, vec3 p, vec3 n) {
     return lightNodeImportance(lightNodes[k], p, n);
 }
 
-float treeImportance(vec3 p, vec3 n) {
-    return frame.lightNodeCount > frame.topLightCount ? lightNodeImportance(lightNodes[frame.topLightCount], p, n) : 0.0;
-}
-
-float totalLightImportance(vec3 p, vec3 n) {
-    float total = treeImportance(p, n);
+// The tree's importance plus every top-level light's: the normaliser of every pick at p.
+float totalLightImportance(float tree, vec3 p, vec3 n) {
+    float total = tree;
     for (uint k = 0u; k < frame.topLightCount; ++k) total += topLightImportance(k, p, n);
     return total;
 }
 
-// Probability that a node's first child is chosen at p; -1 when neither child can light p.
-float firstChildProbability(uint node, vec3 p, vec3 n) {
-    float first = lightNodeImportance(lightNodes[node + 1u], p, n);
-    float second = lightNodeImportance(lightNodes[lightNodes[node].childOrLight], p, n);
-    return first + second > 0.0 ? first / (first + second) : -1.0;
+// One level of the walk: the children of `node` (an interior node) and the probability of the
+// first; -1 when neither can light p.
+float firstChildProbability(LightTreeNode node, vec3 p, vec3 n, out LightTreeNode first, out LightTreeNode second) {
+    uint record = node.childOrLight & PN_LIGHT_NODE_INDEX;
+    first = lightTree[record];
+    second = lightTree[record + 1u];
+    float a = treeNodeImportance(first, p, n), b = treeNodeImportance(second, p, n);
+    return a + b > 0.0 ? a / (a + b) : -1.0;
 }
 
 struct LightPick {
@@ -112,8 +135,13 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
         umulExtended(rngNextUint(rng), frame.lightRefCount, k, low);  // floor(bits * count / 2^32)
         return LightPick(k, 1.0 / float(frame.lightRefCount));
     }
-    float tree = treeImportance(p, n);
-    float total = totalLightImportance(p, n);
+    LightTreeNode node;
+    float tree = 0.0;
+    if (hasLightTree()) {
+        node = lightTree[0];
+        tree = treeNodeImportance(node, p, n);
+    }
+    float total = totalLightImportance(tree, p, n);
     if (!(total > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
     float x = u * total;
     LightPick pick = LightPick(PN_NO_LIGHT, 0.0);
@@ -126,18 +154,18 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
     }
     if (!(tree > 0.0)) return pick;  // rounding carried x past the last top-level light
     pick = LightPick(PN_NO_LIGHT, tree / total);
-    uint node = frame.topLightCount;
     for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
-        uint child = lightNodes[node].childOrLight;
-        if ((child & PN_LIGHT_NODE_LEAF) != 0u) return LightPick(child & ~PN_LIGHT_NODE_LEAF, pick.pmf);
-        float first = firstChildProbability(node, p, n);
-        if (first < 0.0) break;
-        if (rngNext(rng) < first) {
-            node = node + 1u;
-            pick.pmf *= first;
+        if ((node.childOrLight & PN_LIGHT_NODE_LEAF) != 0u)
+            return LightPick(node.childOrLight & PN_LIGHT_NODE_INDEX, pick.pmf);
+        LightTreeNode first, second;
+        float p1 = firstChildProbability(node, p, n, first, second);
+        if (p1 < 0.0) break;
+        if (rngNext(rng) < p1) {
+            node = first;
+            pick.pmf *= p1;
         } else {
-            node = child;
-            pick.pmf *= 1.0 - first;
+            node = second;
+            pick.pmf *= 1.0 - p1;
         }
     }
     return LightPick(PN_NO_LIGHT, 0.0);
@@ -146,24 +174,29 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
 // The probability that pickLight(p, n) returns `ref`.
 float lightPickPmf(uint ref, vec3 p, vec3 n) {
     if (frame.lightPickUniform != 0u) return 1.0 / float(frame.lightRefCount);
-    float total = totalLightImportance(p, n);
+    LightTreeNode node;
+    float tree = 0.0;
+    if (hasLightTree()) {
+        node = lightTree[0];
+        tree = treeNodeImportance(node, p, n);
+    }
+    float total = totalLightImportance(tree, p, n);
     if (!(total > 0.0)) return 0.0;
     if (ref < frame.topLightCount) return topLightImportance(ref, p, n) / total;
-    float pmf = treeImportance(p, n) / total;
+    float pmf = tree / total;
     LightRef r = lights[ref];
-    uint node = frame.topLightCount;
     for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
-        uint child = lightNodes[node].childOrLight;
-        if ((child & PN_LIGHT_NODE_LEAF) != 0u) return (child & ~PN_LIGHT_NODE_LEAF) == ref ? pmf : 0.0;
-        float first = firstChildProbability(node, p, n);
-        if (first < 0.0) return 0.0;
-        bool second = (depth < 32u ? (r.trailLo >> depth) : (r.trailHi >> (depth - 32u))) % 2u != 0u;
-        if (second) {
-            node = child;
-            pmf *= 1.0 - first;
+        if ((node.childOrLight & PN_LIGHT_NODE_LEAF) != 0u) return (node.childOrLight & PN_LIGHT_NODE_INDEX) == ref ? pmf : 0.0;
+        LightTreeNode first, second;
+        float p1 = firstChildProbability(node, p, n, first, second);
+        if (p1 < 0.0) return 0.0;
+        bool takeSecond = (depth < 32u ? (r.trailLo >> depth) : (r.trailHi >> (depth - 32u))) % 2u != 0u;
+        if (takeSecond) {
+            node = second;
+            pmf *= 1.0 - p1;
         } else {
-            node = node + 1u;
-            pmf *= first;
+            node = first;
+            pmf *= p1;
         }
     }
     return 0.0;

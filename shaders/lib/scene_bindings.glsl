@@ -8,6 +8,7 @@ layout(std430, set = 0, binding = PN_BINDING_TRI_ATTRIBS) readonly buffer TriAtt
 layout(std430, set = 0, binding = PN_BINDING_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
 layout(std430, set = 0, binding = PN_BINDING_LIGHTS) readonly buffer LightBuffer { LightRef lights[]; };
 layout(std430, set = 0, binding = PN_BINDING_LIGHT_NODES) readonly buffer LightNodeBuffer { LightNode lightNodes[]; };
+layout(std430, set = 0, binding = PN_BINDING_LIGHT_TREE) readonly buffer LightTreeBuffer { LightTreeNode lightTree[]; };
 layout(std140, set = 0, binding = PN_BINDING_FRAME) uniform FrameBuffer { FrameUniforms frame; };
 layout(std430, set = 0, binding = PN_BINDING_TEXTURES) readonly buffer TextureBuffer { TextureInfo textures[]; };
 layout(std430, set = 0, binding = PN_BINDING_TEXELS) readonly buffer TexelBuffer { uint texels[]; };

@@ -33,19 +33,25 @@ uint slotOf(uvec2 pixel, uint sampleInPass) {
 
 const uint PN_WAVE_AFTER_DELTA = 0x80000000u;
 
+// Field 3 holds the radiance gathered so far: only a vertex that adds light reads and writes it
+// (addToPathResult). Fields 5 and 6 (the previous vertex) are read only where MIS or an escape
+// needs them (loadPathForShading). The sample index is the slot's (slotPixel), never stored.
 void storePath(uint slot, Path p) {
     setPathField(0u, slot, packVec(p.origin, p.bsdfPdfPrev));
     setPathField(1u, slot, packVec(p.direction, p.depth | (p.afterDelta ? PN_WAVE_AFTER_DELTA : 0u)));
     setPathField(2u, slot, packVec(p.throughput, p.rng));
-    setPathField(3u, slot, packVec(p.result, p.sampleIndex));
     if (PN_HAS(PN_FEATURE_ABSORPTION)) setPathField(4u, slot, packVec(p.medium, 0u));
     setPathField(5u, slot, packVec(p.previousNormal, 0u));
     setPathField(6u, slot, packVec(p.previousPosition, 0u));
 }
 
-Path loadPath(uint slot) {
+void startPathResult(uint slot) { setPathField(3u, slot, uvec4(0u)); }
+
+// The path at its hit, with the previous vertex only where the vertex will need it: an escape,
+// or a hit on a light-sampled emitter after a non-delta bounce (MIS weights its emission).
+Path loadPathForShading(uint slot, Hit hit) {
     Path p;
-    uvec4 f0 = pathField(0u, slot), f1 = pathField(1u, slot), f2 = pathField(2u, slot), f3 = pathField(3u, slot);
+    uvec4 f0 = pathField(0u, slot), f1 = pathField(1u, slot), f2 = pathField(2u, slot);
     p.origin = unpackVec(f0);
     p.bsdfPdfPrev = uintBitsToFloat(f0.w);
     p.direction = unpackVec(f1);
@@ -53,11 +59,15 @@ Path loadPath(uint slot) {
     p.afterDelta = (f1.w & PN_WAVE_AFTER_DELTA) != 0u;
     p.throughput = unpackVec(f2);
     p.rng = f2.w;
-    p.result = unpackVec(f3);
-    p.sampleIndex = f3.w;
+    p.result = vec3(0.0);
+    p.sampleIndex = push.passIndex * frame.samplesPerPass + slotPixel(slot).z;
     p.medium = PN_HAS(PN_FEATURE_ABSORPTION) ? unpackVec(pathField(4u, slot)) : vec3(0.0);
-    p.previousNormal = unpackVec(pathField(5u, slot));
-    p.previousPosition = unpackVec(pathField(6u, slot));
+    p.previousNormal = vec3(0.0);
+    p.previousPosition = vec3(0.0);
+    if (!p.afterDelta && (hit.triangle == PN_NO_HIT || triAttribs[hit.triangle].lightIndex != PN_NO_LIGHT)) {
+        p.previousNormal = unpackVec(pathField(5u, slot));
+        p.previousPosition = unpackVec(pathField(6u, slot));
+    }
     return p;
 }
 

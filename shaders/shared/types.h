@@ -52,7 +52,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_DISPLAY 23       // uint per pixel: RGBA8 (r in the low byte), what the window shows
 #define PN_BINDING_ENV_TEXELS 24     // environment radiance, one vec4 (rgb, unused) per texel
 #define PN_BINDING_OVERLAY_BOXES 25  // BvhNode per box the viewer's box overlay outlines (bounds only)
-#define PN_BINDING_LIGHT_NODES 26    // LightNode per node of the light BVH (depth-first, root first)
+#define PN_BINDING_LIGHT_NODES 26    // LightNode per top-level light (the first FrameUniforms.topLightCount LightRefs)
 #define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
 #define PN_BINDING_INSTANCES_PREV 28  // the viewer's Instance entries as the previous frame placed them (gbuffer.comp's object motion)
 #define PN_BINDING_ACTIVE_MASK 29    // uint per pixel: 0 skips the pixel in trace.comp when PN_TRACE_MASKED is set
@@ -63,6 +63,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_WAVE_SHADOWS 33  // vec4 x PN_WAVE_SHADOW_VEC4S per queued shadow ray, field-major
 #define PN_BINDING_WAVE_QUEUES 34   // uint x 2 x waveStride: the live path slots, this bounce's and the next's
 #define PN_BINDING_WAVE_CONTROL 35  // WaveControl
+#define PN_BINDING_LIGHT_TREE 36    // LightTreeNode per node of the light BVH (root first, children side by side)
 
 // ---- kernel features: specialization constant 0 of the tracing kernels, a bit set. A pipeline
 // made for a scene leaves out what the scene does not use (render/kernel_features.h); the
@@ -144,7 +145,9 @@ using namespace penumbra::gpu_types;
 #define PN_LIGHTREF_ENVIRONMENT 3u  // the environment (map or constant background)
 #define PN_NO_LIGHT 0xffffffffu     // TriAttribs.lightIndex of a primitive that is no light
 #define PN_LIGHT_TREE_MAX_DEPTH 64u // the bit trail of a light has 64 bits (two uints)
-#define PN_LIGHT_NODE_LEAF 0x80000000u  // LightNode.childOrLight: a leaf; low bits are the LightRef
+#define PN_LIGHT_NODE_LEAF 0x80000000u       // LightNode / LightTreeNode.childOrLight: a leaf
+#define PN_LIGHT_NODE_TWO_SIDED 0x40000000u  // LightTreeNode.childOrLight: emits both ways
+#define PN_LIGHT_NODE_INDEX 0x3fffffffu      // LightTreeNode.childOrLight: the child record or the LightRef
 
 #define PN_NO_HIT 0xffffffffu
 
@@ -285,10 +288,9 @@ PN_STRUCT(LightRef) {
     uint trailHi;  // depths 32-63
 };
 
-// A node of the light BVH, 64 bytes: the bounds of the lights below it (Conty & Kulla 2018,
-// pbrt-v4's LightBounds): where they are, how much they emit and in which directions.
-//   childOrLight & PN_LIGHT_NODE_LEAF: a leaf holding LightRef (childOrLight & ~LEAF)
-//   otherwise: an interior node; its first child is the next node, its second childOrLight
+// The bounds of a top-level light that has a place (a moving point or spot light), 64 bytes, as
+// pbrt-v4's LightBounds (Conty & Kulla 2018): where it is, how much it emits and in which
+// directions. The light BVH itself is stored compactly (LightTreeNode).
 PN_STRUCT(LightNode) {
     vec3 boundsMin;
     float phi;          // emitted power bound: radiance x area (irradiance at unit distance)
@@ -300,6 +302,24 @@ PN_STRUCT(LightNode) {
     uint twoSided;      // nonzero: emits on both sides of its normals
     float sinThetaO;    // precomputed for the importance bound
     float minDistance2; // half the bounds' diagonal: pbrt-v4's floor on the squared distance
+};
+
+// A node of the light BVH as the shaders walk it, 48 bytes: what the importance bound needs,
+// precomputed (render/light_tree.h compactLightTree). The box becomes its bounding sphere (the
+// bound only ever used the box's centre and half diagonal), the cone's sine is stored beside its
+// cosine, and the two children of a node lie side by side. The root is record 0; an interior
+// node's children are records childOrLight and childOrLight + 1.
+//   childOrLight & PN_LIGHT_NODE_LEAF: a leaf holding LightRef (childOrLight & PN_LIGHT_NODE_INDEX)
+//   childOrLight & PN_LIGHT_NODE_TWO_SIDED: emits on both sides of its normals
+PN_STRUCT(LightTreeNode) {
+    vec3 center;        // of the lights' bounding box
+    float radius;       // half the box's diagonal
+    vec3 axis;          // unit
+    float phi;          // emitted power bound, as LightNode.phi
+    float cosThetaO;
+    float sinThetaO;
+    float cosThetaE;
+    uint childOrLight;
 };
 
 // A point, spot or directional light, 64 bytes. Delta lights: reached only by light sampling.
@@ -574,6 +594,9 @@ static_assert(sizeof(Material) == 96 && offsetof(Material, flags) == 12 &&
 static_assert(sizeof(TextureInfo) == 32 && offsetof(TextureInfo, flags) == 12 && offsetof(TextureInfo, frameCount) == 16 &&
               offsetof(TextureInfo, frame) == 20 && offsetof(TextureInfo, secondsPerFrame) == 24);
 static_assert(sizeof(LightRef) == 16 && offsetof(LightRef, index) == 4 && offsetof(LightRef, trailHi) == 12);
+static_assert(sizeof(LightTreeNode) == 48 && offsetof(LightTreeNode, radius) == 12 && offsetof(LightTreeNode, axis) == 16 &&
+              offsetof(LightTreeNode, phi) == 28 && offsetof(LightTreeNode, cosThetaO) == 32 &&
+              offsetof(LightTreeNode, childOrLight) == 44);
 static_assert(sizeof(LightNode) == 64 && offsetof(LightNode, phi) == 12 && offsetof(LightNode, boundsMax) == 16 &&
               offsetof(LightNode, cosThetaO) == 28 && offsetof(LightNode, axis) == 32 &&
               offsetof(LightNode, cosThetaE) == 44 && offsetof(LightNode, childOrLight) == 48 &&

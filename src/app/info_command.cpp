@@ -9,6 +9,7 @@
 #include "app/common_options.h"
 #include "app/info_ranks.h"
 #include "app/render_ranks.h"
+#include "render/light_tree.h"
 #include "render/gpu_scene.h"
 #include "scene/instances.h"
 
@@ -33,10 +34,11 @@ void printScene(const std::string& name, const std::string& map, const Environme
     const bvh::BvhStats& s = arrays.stats;
     const std::size_t tris = arrays.triVerts.size();
     const std::size_t gpuBytes = deviceBytes(arrays);
+    const LightTreeDepth lightDepth = lightTreeDepth(arrays.lightTree);
     std::printf("scene %s: %zu triangles, %zu materials, %zu lights (%u sampled one by one, the rest in a light BVH "
-                "of %zu nodes), loaded in %.0f ms\n",
+                "of %zu nodes, leaves at depth %.1f on average, %u at most), loaded in %.0f ms\n",
                 scene.name.c_str(), tris, scene.materials.size(), arrays.lightRefs.size(), arrays.topLightCount,
-                arrays.lightNodes.size() - arrays.topLightCount, loadMs);
+                arrays.lightTree.size(), lightDepth.mean, lightDepth.max, loadMs);
     std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, %s in %.2f ms\n", s.nodes,
                 s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.bvhFromCache ? "read from the cache" : "built",
                 arrays.buildMilliseconds);

@@ -75,6 +75,7 @@ RenderKey renderKey(const Renderer& renderer, const AdaptiveSettings& adaptive) 
     addVector(a.materials);
     addVector(a.lightRefs);
     addVector(a.lightNodes);
+    addVector(a.lightTree);
     addVector(a.textures);
     addVector(a.texels);
     addVector(a.punctual);

@@ -151,6 +151,7 @@ void addLightList(const Scene& scene, std::span<const EmissiveTriangle> emissive
     for (auto [slot, ref] : list.primitiveLights) out.triAttribs[slot].lightIndex = ref;
     out.lightRefs = std::move(list.refs);
     out.lightNodes = std::move(list.nodes);
+    out.lightTree = std::move(list.tree);
     out.topLightCount = list.topCount;
 }
 
@@ -304,7 +305,7 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
 std::size_t deviceBytes(const SceneArrays& a) {
     auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
     return bytes(a.nodes) + bytes(a.wideNodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.materials) + bytes(a.lightRefs) +
-           bytes(a.lightNodes) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
+           bytes(a.lightNodes) + bytes(a.lightTree) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
            bytes(a.env.alias) + bytes(a.env.radiance) + bytes(a.instances);
 }
 
@@ -316,6 +317,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       materials(gpu::uploadStorageBuffer<shader::Material>(ctx, commands, a.materials)),
       lightRefs(gpu::uploadStorageBuffer<shader::LightRef>(ctx, commands, a.lightRefs)),
       lightNodes(gpu::uploadStorageBuffer<shader::LightNode>(ctx, commands, a.lightNodes)),
+      lightTree(gpu::uploadStorageBuffer<shader::LightTreeNode>(ctx, commands, a.lightTree)),
       textures(gpu::uploadStorageBuffer<shader::TextureInfo>(ctx, commands, a.textures)),
       texels(gpu::uploadStorageBuffer<std::uint32_t>(ctx, commands, a.texels)),
       punctual(gpu::uploadStorageBuffer<shader::PunctualLight>(ctx, commands, a.punctual)),
@@ -328,7 +330,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       nodeCount(static_cast<std::uint32_t>(a.nodes.size())),
       wideNodeCount(static_cast<std::uint32_t>(a.wideNodes.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
-      lightNodeCount(static_cast<std::uint32_t>(a.lightNodes.size())),
+      lightNodeCount(static_cast<std::uint32_t>(a.lightTree.size())),
       topLightCount(a.topLightCount),
       lightRefCount(static_cast<std::uint32_t>(a.lightRefs.size())),
       punctualCount(static_cast<std::uint32_t>(a.punctual.size())),
@@ -340,7 +342,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
 
 std::size_t GpuScene::deviceBytes() const {
     return nodes.size() + triVerts.size() + triAttribs.size() + materials.size() + lightRefs.size() + lightNodes.size() +
-           textures.size() + texels.size() + punctual.size() + sphereLights.size() + envTable.size() + envTexels.size() +
+           lightTree.size() + textures.size() + texels.size() + punctual.size() + sphereLights.size() + envTable.size() + envTexels.size() +
            instances.size();
 }
 

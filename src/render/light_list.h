@@ -31,9 +31,10 @@ struct LightListInput {
 
 struct LightList {
     std::vector<shader::LightRef> refs;
-    // nodes[k] for k < topCount: the bounds of top-level entry k (unused for infinite lights);
-    // the light BVH's root follows at topCount.
+    // nodes[k]: the bounds of top-level entry k (unused for infinite lights).
     std::vector<shader::LightNode> nodes;
+    // The light BVH over the rest, compact (compactLightTree); empty when there is none.
+    std::vector<shader::LightTreeNode> tree;
     std::uint32_t topCount = 0;
     // LightRef of each emissive primitive (triangle or sphere), for TriAttribs::lightIndex.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> primitiveLights;  // (slot, ref)

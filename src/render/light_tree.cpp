@@ -203,4 +203,83 @@ LightTree buildLightTree(std::span<const LightBounds> lights, std::uint32_t firs
     return tree;
 }
 
+namespace {
+
+// Writes the binary tree's nodes as records of the shaders' layout, children side by side.
+class TreeCompactor {
+public:
+    explicit TreeCompactor(const LightTree& tree) : tree_(tree) { out_.resize(1); }
+
+    std::vector<shader::LightTreeNode> run() {
+        write(0, 0);
+        return std::move(out_);
+    }
+
+private:
+    void write(std::uint32_t node, std::uint32_t record) {
+        const shader::LightNode& n = tree_.nodes[node];
+        if (n.childOrLight & PN_LIGHT_NODE_LEAF) {
+            const std::uint32_t ref = n.childOrLight & ~PN_LIGHT_NODE_LEAF;
+            PN_CHECK(ref <= PN_LIGHT_NODE_INDEX);
+            out_[record] = compact(n, PN_LIGHT_NODE_LEAF | ref);
+            return;
+        }
+        const auto pair = static_cast<std::uint32_t>(out_.size());
+        PN_CHECK(pair < PN_LIGHT_NODE_INDEX);
+        out_.resize(out_.size() + 2);
+        out_[record] = compact(n, pair);
+        write(node + 1, pair);
+        write(n.childOrLight, pair + 1);
+    }
+
+    static shader::LightTreeNode compact(const shader::LightNode& n, std::uint32_t childOrLight) {
+        shader::LightTreeNode c{};
+        const Vec3 halfDiagonal = 0.5f * (n.boundsMax - n.boundsMin);
+        c.center = n.boundsMin + halfDiagonal;
+        c.radius = length(halfDiagonal);
+        c.axis = n.axis;
+        c.phi = n.phi;
+        c.cosThetaO = n.cosThetaO;
+        c.sinThetaO = n.sinThetaO;
+        c.cosThetaE = n.cosThetaE;
+        c.childOrLight = childOrLight | (n.twoSided ? PN_LIGHT_NODE_TWO_SIDED : 0u);
+        return c;
+    }
+
+    const LightTree& tree_;
+    std::vector<shader::LightTreeNode> out_;
+};
+
+}  // namespace
+
+std::vector<shader::LightTreeNode> compactLightTree(const LightTree& tree) {
+    if (tree.nodes.empty()) return {};
+    return TreeCompactor(tree).run();
+}
+
+LightTreeDepth lightTreeDepth(std::span<const shader::LightTreeNode> records) {
+    LightTreeDepth out;
+    if (records.empty()) return out;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0, 0}};  // (record, depth)
+    double sum = 0;
+    std::size_t leaves = 0;
+    while (!stack.empty()) {
+        const auto [record, depth] = stack.back();
+        stack.pop_back();
+        const std::uint32_t child = records[record].childOrLight;
+        if (child & PN_LIGHT_NODE_LEAF) {
+            out.max = std::max(out.max, depth);
+            sum += depth;
+            ++leaves;
+            continue;
+        }
+        const std::uint32_t pair = child & PN_LIGHT_NODE_INDEX;
+        PN_CHECK(pair + 1 < records.size());
+        stack.push_back({pair, depth + 1});
+        stack.push_back({pair + 1, depth + 1});
+    }
+    out.mean = sum / double(leaves);
+    return out;
+}
+
 }  // namespace penumbra

@@ -48,4 +48,16 @@ struct LightTree {
 // Splits minimise pbrt-v4's surface-area-orientation cost over 12 bins per axis.
 LightTree buildLightTree(std::span<const LightBounds> lights, std::uint32_t firstRef, std::uint32_t nodeBase);
 
+// The tree (built with nodeBase 0) as the shaders walk it (shared/types.h, LightTreeNode): the
+// root at record 0, each interior node's children side by side; same child order, so the trails
+// still lead to every light. Empty for an empty tree.
+std::vector<shader::LightTreeNode> compactLightTree(const LightTree& tree);
+
+// How deep a compact tree's leaves lie (root: depth 0): what a shading point's walk costs.
+struct LightTreeDepth {
+    std::uint32_t max = 0;
+    double mean = 0;  // over leaves
+};
+LightTreeDepth lightTreeDepth(std::span<const shader::LightTreeNode> records);
+
 }  // namespace penumbra

@@ -26,7 +26,8 @@ struct SceneArrays {
     std::vector<shader::Material> materials;
     // The unified light sampler's lights and light BVH (render/light_list.h).
     std::vector<shader::LightRef> lightRefs;
-    std::vector<shader::LightNode> lightNodes;
+    std::vector<shader::LightNode> lightNodes;    // the top-level lights' bounds
+    std::vector<shader::LightTreeNode> lightTree; // the light BVH (LightList::tree)
     std::uint32_t topLightCount = 0;
     float envLuminance = 0;  // mean luminance of the environment over directions (intensity 1)
     std::vector<shader::TextureInfo> textures;

@@ -15,7 +15,8 @@ std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx,
         {PN_BINDING_LIGHTS, storage},    {PN_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
         {PN_BINDING_TEXTURES, storage},  {PN_BINDING_TEXELS, storage},
         {PN_BINDING_PUNCTUAL, storage},  {PN_BINDING_SPHERE_LIGHTS, storage}, {PN_BINDING_ENV_TABLE, storage},
-        {PN_BINDING_ENV_TEXELS, storage}, {PN_BINDING_LIGHT_NODES, storage}, {PN_BINDING_INSTANCES, storage}};
+        {PN_BINDING_ENV_TEXELS, storage}, {PN_BINDING_LIGHT_NODES, storage}, {PN_BINDING_LIGHT_TREE, storage},
+        {PN_BINDING_INSTANCES, storage}};
     for (std::uint32_t b : extraStorageBindings) bindings.push_back({b, storage});
     const std::uint32_t specialization[] = {features};
     auto pipeline = std::make_unique<gpu::ComputePipeline>(ctx, shader, bindings, sizeof(shader::PassPush), specialization);
@@ -25,6 +26,7 @@ std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx,
     pipeline->bind(PN_BINDING_MATERIALS, scene.materials);
     pipeline->bind(PN_BINDING_LIGHTS, scene.lightRefs);
     pipeline->bind(PN_BINDING_LIGHT_NODES, scene.lightNodes);
+    pipeline->bind(PN_BINDING_LIGHT_TREE, scene.lightTree);
     pipeline->bind(PN_BINDING_FRAME, frameUniforms);
     pipeline->bind(PN_BINDING_TEXTURES, scene.textures);
     pipeline->bind(PN_BINDING_TEXELS, scene.texels);

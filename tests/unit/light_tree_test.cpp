@@ -107,6 +107,57 @@ TEST(LightTree, BoundsHoldChildrenAndTrailsLeadToEveryLight) {
     }
 }
 
+// Walks the binary tree and its records for the shaders side by side: each record must bound its
+// node (the box's sphere, the same cone and power) and keep the child order.
+void checkCompact(const LightTree& t, const std::vector<shader::LightTreeNode>& records, std::uint32_t node,
+                  std::uint32_t record, int& leaves) {
+    const shader::LightNode& n = t.nodes[node];
+    const shader::LightTreeNode& c = records.at(record);
+    for (Vec3 corner : {n.boundsMin, n.boundsMax, Vec3{n.boundsMin.x, n.boundsMax.y, n.boundsMin.z}})
+        EXPECT_LE(length(corner - c.center), c.radius * (1 + 1e-6f) + 1e-6f);
+    EXPECT_NEAR(c.radius, 0.5f * length(n.boundsMax - n.boundsMin), 1e-5f * (1 + c.radius));  // and tightly
+    EXPECT_EQ(c.axis, n.axis);
+    EXPECT_EQ(c.phi, n.phi);
+    EXPECT_EQ(c.cosThetaO, n.cosThetaO);
+    EXPECT_NEAR(c.sinThetaO, std::sqrt(std::max(0.0f, 1 - n.cosThetaO * n.cosThetaO)), 1e-6f);
+    EXPECT_EQ(c.cosThetaE, n.cosThetaE);
+    EXPECT_EQ((c.childOrLight & PN_LIGHT_NODE_TWO_SIDED) != 0, n.twoSided != 0);
+    if (n.childOrLight & PN_LIGHT_NODE_LEAF) {
+        EXPECT_EQ(c.childOrLight & (PN_LIGHT_NODE_LEAF | PN_LIGHT_NODE_INDEX), n.childOrLight);
+        ++leaves;
+        return;
+    }
+    const std::uint32_t pair = c.childOrLight & PN_LIGHT_NODE_INDEX;
+    checkCompact(t, records, node + 1, pair, leaves);
+    checkCompact(t, records, n.childOrLight, pair + 1, leaves);
+}
+
+TEST(LightTree, ShaderRecordsBoundTheirNodesAndKeepTheTrails) {
+    std::mt19937 rng(5);
+    std::vector<LightBounds> lights;
+    for (int i = 0; i < 2000; ++i) lights.push_back(randomTriangleLight(rng));
+    lights[7].twoSided = true;
+    lights.push_back(pointLightBounds({1, 2, 3}, 5.0f));
+    lights.push_back(spotLightBounds({0, 5, 0}, {0, -1, 0}, 50.0f, std::cos(0.3f), std::cos(0.5f)));
+    const std::uint32_t firstRef = 3;
+    const LightTree t = buildLightTree(lights, firstRef, 0);
+    const std::vector<shader::LightTreeNode> records = compactLightTree(t);
+    ASSERT_EQ(records.size(), t.nodes.size());
+    int leaves = 0;
+    checkCompact(t, records, 0, 0, leaves);
+    EXPECT_EQ(leaves, int(lights.size()));
+    for (std::uint32_t i = 0; i < lights.size(); ++i) {
+        std::uint32_t record = 0;
+        for (std::uint32_t depth = 0; !(records[record].childOrLight & PN_LIGHT_NODE_LEAF); ++depth)
+            record = (records[record].childOrLight & PN_LIGHT_NODE_INDEX) + ((t.trails[i] >> depth) & 1);
+        ASSERT_EQ(records[record].childOrLight & PN_LIGHT_NODE_INDEX, firstRef + i) << "light " << i;
+    }
+    const LightTreeDepth depth = lightTreeDepth(records);
+    EXPECT_GE(depth.mean, std::log2(double(lights.size())) - 1e-9);  // no binary tree is shallower
+    EXPECT_LT(depth.max, 40u);
+    EXPECT_TRUE(compactLightTree(LightTree{}).empty());
+}
+
 TEST(LightTree, CoincidentLightsStillSplitAndStayShallow) {
     std::vector<LightBounds> lights(5000, pointLightBounds({1, 1, 1}, 1.0f));
     const LightTree t = buildLightTree(lights, 0, 0);
@@ -144,7 +195,9 @@ TEST(LightList, TopLevelHoldsTheEnvironmentDirectionalAndMovingLights) {
     ASSERT_EQ(list.primitiveLights.size(), 1u);
     EXPECT_EQ(list.primitiveLights[0].first, 9u);
     EXPECT_EQ(list.refs[list.primitiveLights[0].second].type, PN_LIGHTREF_TRIANGLE);
-    EXPECT_FLOAT_EQ(list.nodes[list.topCount].phi, 1.0f + 2.0f * 0.5f);  // point I + radiance x area
+    ASSERT_EQ(list.nodes.size(), list.topCount);
+    ASSERT_EQ(list.tree.size(), 3u);  // the root and its two leaves
+    EXPECT_FLOAT_EQ(list.tree[0].phi, 1.0f + 2.0f * 0.5f);  // point I + radiance x area
 }
 
 }  // namespace
