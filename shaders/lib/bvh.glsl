@@ -70,17 +70,24 @@ Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
     uint depth = 0u;
     uint instance = PN_NO_HIT;  // the instance whose bottom level is being walked
     uint instanceDepth = 0u;    // the stack depth when it was entered
+    bool moved = false;         // o, d and invD are in the instance's space (not the identity)
     while (true) {
         BvhNode node = nodes[current];
         PN_COUNT_NODE();
         if (node.triCount > 0u) {
             if (twoLevel && instance == PN_NO_HIT) {
                 instance = node.firstOrRight;
-                o = toInstancePoint(instance, worldO);
-                d = toInstanceVector(instance, worldD);
-                invD = safeInverse(d);
+                uint root = instances[instance].rootNode;
+                // An identity instance (the world's own geometry, a mesh left where it was
+                // modelled) is walked with the world ray: no transform in, none back out.
+                moved = (root & PN_INSTANCE_IDENTITY) == 0u;
+                if (moved) {
+                    o = toInstancePoint(instance, worldO);
+                    d = toInstanceVector(instance, worldD);
+                    invD = safeInverse(d);
+                }
                 instanceDepth = depth;
-                current = instances[instance].rootNode;
+                current = root & ~PN_INSTANCE_IDENTITY;
                 continue;
             }
             for (uint i = node.firstOrRight; i < node.firstOrRight + node.triCount; ++i) {
@@ -109,9 +116,12 @@ Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
         }
         if (PN_HAS(PN_FEATURE_INSTANCES) && instance != PN_NO_HIT && depth == instanceDepth) {
             instance = PN_NO_HIT;
-            o = worldO;
-            d = worldD;
-            invD = safeInverse(d);
+            if (moved) {
+                o = worldO;
+                d = worldD;
+                invD = safeInverse(d);
+                moved = false;
+            }
         }
         if (depth == 0u) break;
         current = stack[--depth];

@@ -197,11 +197,14 @@ PN_STRUCT(WideNode) {
 PN_STRUCT(Instance) {
     vec4 objectToWorld[3];  // 48: rows of the 3x4 affine transform (row i: xyz = linear part, w = translation)
     vec4 worldToObject[3];  // 48: its inverse; normals go to world space by its transpose
-    uint rootNode;          //  4: root of the bottom level in the node array
+    uint rootNode;          //  4: root of the bottom level in the node array, | PN_INSTANCE_IDENTITY
     uint firstPrimitive;    //  4: the bottom level's slots are [firstPrimitive, firstPrimitive + primitiveCount)
     uint primitiveCount;    //  4: (what --accel brute loops over)
     uint id;                //  4: the scene's instance number (stable across top-level rebuilds)
 };
+// Set in Instance.rootNode when the transform is exactly the identity (the world's own geometry,
+// a mesh placed where it was modelled): the walk enters it keeping the world ray, no transform.
+#define PN_INSTANCE_IDENTITY 0x80000000u
 
 // Hot triangle data, read on every traversal step: 48 bytes. Edges are precomputed for
 // Moller-Trumbore (e1 = v1 - v0, e2 = v2 - v0).

@@ -195,11 +195,6 @@ private:
 
 }  // namespace
 
-Aabb sanitizedBounds(const Aabb& box) {
-    if (box.empty() || !isFinite(box.lo) || !isFinite(box.hi)) return Aabb{Vec3(0.0f), Vec3(0.0f)};
-    return box;
-}
-
 namespace {
 
 // sanitizedBounds(bounds(tri)) in vector form: a triangle with any coordinate that is not

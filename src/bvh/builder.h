@@ -33,7 +33,10 @@ struct Bvh {
 // coordinates) become a point at the origin: such a primitive is kept (so primOrder stays a
 // permutation and triangle counts match), but it cannot inflate the tree or poison the SAH, and
 // the triangle test never reports a hit on non-finite vertices anyway.
-Aabb sanitizedBounds(const Aabb& box);
+inline Aabb sanitizedBounds(const Aabb& box) {
+    if (box.empty() || !isFinite(box.lo) || !isFinite(box.hi)) return Aabb{Vec3(0.0f), Vec3(0.0f)};
+    return box;
+}
 
 // Leaves never exceed maxLeafSize and no leaf is deeper than PN_BVH_MAX_DEPTH (root = depth 1):
 // where SAH splits would go too deep, the builder switches to balanced median splits.

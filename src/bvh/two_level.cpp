@@ -1,6 +1,5 @@
 #include "bvh/two_level.h"
 
-#include "bvh/morton_build.h"
 #include "core/error.h"
 
 namespace penumbra::bvh {
@@ -33,7 +32,12 @@ shader::Instance makeInstance(const Affine& objectToWorld, std::uint32_t rootNod
     shader::Instance out{};
     toRows(objectToWorld, out.objectToWorld);
     toRows(objectToWorld.inverse(), out.worldToObject);
-    out.rootNode = rootNode;
+    out.rootNode = rootNode & ~PN_INSTANCE_IDENTITY;
+    const Affine identity;
+    bool isIdentity = true;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 4; ++j) isIdentity = isIdentity && objectToWorld.m[i][j] == identity.m[i][j];
+    if (isIdentity) out.rootNode |= PN_INSTANCE_IDENTITY;
     out.firstPrimitive = firstPrimitive;
     out.primitiveCount = primitiveCount;
     out.id = id;
@@ -53,22 +57,48 @@ std::uint32_t appendBottomLevel(std::vector<shader::BvhNode>& nodes, const Bvh& 
     return base;
 }
 
-std::vector<shader::BvhNode> buildTopLevel(std::span<const Aabb> instanceBounds, std::uint32_t nodeBase) {
-    if (instanceBounds.empty()) return {};
-    BuildOptions options;
-    options.maxLeafSize = 1;  // a leaf is one instance, so traversal enters it directly
+void appendTopLevel(std::span<const Aabb> instanceBounds, std::vector<shader::BvhNode>& nodes,
+                    TopLevelScratch& scratch) {
+    if (instanceBounds.empty()) return;
     // Many instances: the Morton build, several times faster than binned SAH for a somewhat
     // worse tree, keeps a per-frame rebuild within budget (docs/PERFORMANCE.md "Top-level rebuild").
-    Bvh top = instanceBounds.size() > kMortonTopLevelAbove ? buildMorton(instanceBounds) : build(instanceBounds, options);
-    for (shader::BvhNode& n : top.nodes) {
+    if (instanceBounds.size() > kMortonTopLevelAbove) {
+        appendMorton(instanceBounds, nodes, scratch.morton);
+        return;
+    }
+    BuildOptions options;
+    options.maxLeafSize = 1;  // a leaf is one instance, so traversal enters it directly
+    const Bvh top = build(instanceBounds, options);
+    const auto base = static_cast<std::uint32_t>(nodes.size());
+    for (shader::BvhNode n : top.nodes) {
         if (n.triCount > 0) {
             PN_CHECK(n.triCount == 1);
             n.firstOrRight = top.primOrder[n.firstOrRight];
         } else {
-            n.firstOrRight += nodeBase;
+            n.firstOrRight += base;
         }
+        nodes.push_back(n);
     }
-    return std::move(top.nodes);
+}
+
+std::vector<shader::BvhNode> buildTopLevel(std::span<const Aabb> instanceBounds, std::uint32_t nodeBase) {
+    std::vector<shader::BvhNode> nodes;
+    TopLevelScratch scratch;
+    appendTopLevel(instanceBounds, nodes, scratch);
+    for (shader::BvhNode& n : nodes)
+        if (n.triCount == 0) n.firstOrRight += nodeBase;
+    return nodes;
+}
+
+void replaceTopLevel(std::vector<shader::BvhNode>& nodes, std::uint32_t nodeBase,
+                     std::span<const shader::Instance> instances, std::span<const Aabb> objectBounds,
+                     TopLevelScratch& scratch) {
+    PN_CHECK(instances.size() == objectBounds.size() && nodeBase <= nodes.size());
+    scratch.worldBounds.resize(instances.size());
+    for (std::size_t i = 0; i < instances.size(); ++i)
+        scratch.worldBounds[i] = transformBounds(objectBounds[i], objectToWorld(instances[i]));
+    nodes.resize(nodeBase);
+    appendTopLevel(scratch.worldBounds, nodes, scratch);
 }
 
 Hit closestHit(const TwoLevelView& scene, const Ray& ray) {
@@ -79,7 +109,7 @@ Hit closestHit(const TwoLevelView& scene, const Ray& ray) {
         const shader::Instance& instance = scene.instances[first];
         Ray local = toObject(instance, ray);
         local.tMax = hit.t;
-        const Hit h = closestHitBelow(scene.nodes, scene.tris, instance.rootNode, local);
+        const Hit h = closestHitBelow(scene.nodes, scene.tris, instanceRoot(instance), local);
         if (h.triangle != PN_NO_HIT) {
             hit = h;
             hit.instance = first;
@@ -95,7 +125,7 @@ bool anyHit(const TwoLevelView& scene, const Ray& ray) {
     forEachLeaf(scene.nodes, scene.topRoot, ray, tMax, [&](std::uint32_t first, std::uint32_t count) {
         PN_CHECK(count == 1 && first < scene.instances.size());
         const shader::Instance& instance = scene.instances[first];
-        return found = anyHitBelow(scene.nodes, scene.tris, instance.rootNode, toObject(instance, ray));
+        return found = anyHitBelow(scene.nodes, scene.tris, instanceRoot(instance), toObject(instance, ray));
     });
     return found;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bvh/builder.h"
+#include "bvh/morton_build.h"
 #include "bvh/traverse_cpu.h"
 #include "core/aabb.h"
 #include "core/transform.h"
@@ -17,9 +18,12 @@
 
 namespace penumbra::bvh {
 
-// objectToWorld must be invertible (Scene::validate checks instances).
+// objectToWorld must be invertible (Scene::validate checks instances). rootNode's
+// PN_INSTANCE_IDENTITY flag is set here from the transform (a flag passed in is ignored).
 shader::Instance makeInstance(const Affine& objectToWorld, std::uint32_t rootNode, std::uint32_t firstPrimitive,
                               std::uint32_t primitiveCount, std::uint32_t id);
+// The bottom level's root (rootNode without its PN_INSTANCE_IDENTITY flag).
+inline std::uint32_t instanceRoot(const shader::Instance& instance) { return instance.rootNode & ~PN_INSTANCE_IDENTITY; }
 Affine objectToWorld(const shader::Instance& instance);
 Affine worldToObject(const shader::Instance& instance);
 
@@ -32,6 +36,23 @@ std::uint32_t appendBottomLevel(std::vector<shader::BvhNode>& nodes, const Bvh& 
 // for no instances. Binned SAH up to kMortonTopLevelAbove instances, the Morton build above.
 inline constexpr std::size_t kMortonTopLevelAbove = 2048;
 std::vector<shader::BvhNode> buildTopLevel(std::span<const Aabb> instanceBounds, std::uint32_t nodeBase);
+
+// What a per-frame top-level rebuild keeps between frames, so a warm rebuild allocates nothing.
+struct TopLevelScratch {
+    std::vector<Aabb> worldBounds;
+    MortonScratch morton;
+};
+
+// The same top level appended to `nodes` (its root at the old nodes.size()).
+void appendTopLevel(std::span<const Aabb> instanceBounds, std::vector<shader::BvhNode>& nodes,
+                    TopLevelScratch& scratch);
+
+// The per-frame rebuild: nodes from nodeBase on are replaced by the top level over `instances`,
+// instance i's box being objectBounds[i] (its bottom level's, object space) through its
+// objectToWorld. The root is nodeBase (when there are instances).
+void replaceTopLevel(std::vector<shader::BvhNode>& nodes, std::uint32_t nodeBase,
+                     std::span<const shader::Instance> instances, std::span<const Aabb> objectBounds,
+                     TopLevelScratch& scratch);
 
 // A two-level scene as the GPU sees it: every level's nodes, the primitive slots, the instances
 // and the top level's root.

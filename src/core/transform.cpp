@@ -72,17 +72,6 @@ Affine Affine::eulerDegrees(Vec3 d) {
     return rot(2, d.z * k) * rot(1, d.y * k) * rot(0, d.x * k);
 }
 
-Aabb transformBounds(const Aabb& box, const Affine& transform) {
-    Aabb out;
-    if (box.empty()) return out;
-    for (int corner = 0; corner < 8; ++corner) {
-        const Vec3 p{(corner & 1) ? box.hi.x : box.lo.x, (corner & 2) ? box.hi.y : box.lo.y,
-                     (corner & 4) ? box.hi.z : box.lo.z};
-        out.grow(transform.point(p));
-    }
-    return out;
-}
-
 Affine operator*(const Affine& a, const Affine& b) {
     Affine r;
     for (int i = 0; i < 3; ++i)

@@ -80,12 +80,8 @@ void appendInstanceLevels(const Scene& scene, SceneArrays& out, const bvh::Build
 
 void rebuildTopLevel(SceneArrays& arrays) {
     PN_CHECK(arrays.instanceBounds.size() == arrays.instances.size() && arrays.bottomNodeCount <= arrays.nodes.size());
-    arrays.nodes.resize(arrays.bottomNodeCount);
-    std::vector<Aabb> world(arrays.instances.size());
-    for (std::size_t i = 0; i < world.size(); ++i)
-        world[i] = transformBounds(arrays.instanceBounds[i], bvh::objectToWorld(arrays.instances[i]));
-    const std::vector<shader::BvhNode> top = bvh::buildTopLevel(world, arrays.bottomNodeCount);
-    arrays.nodes.insert(arrays.nodes.end(), top.begin(), top.end());
+    bvh::replaceTopLevel(arrays.nodes, arrays.bottomNodeCount, arrays.instances, arrays.instanceBounds,
+                         arrays.topLevelScratch);
     arrays.topRoot = arrays.bottomNodeCount;
 }
 

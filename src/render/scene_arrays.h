@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bvh/stats.h"
+#include "bvh/two_level.h"
 #include "core/aabb.h"
 #include "render/env_table.h"
 #include "shared/types.h"
@@ -42,6 +43,7 @@ struct SceneArrays {
     std::uint32_t bottomNodeCount = 0;  // nodes before the top level
     std::uint32_t topRoot = 0;
     std::uint32_t uniqueMeshes = 0;     // bottom levels built for prototypes
+    bvh::TopLevelScratch topLevelScratch;  // host only: reused by every top-level rebuild
     // Host only (never uploaded, so traversal stays lean): for each primitive in leaf order, the
     // scene object it came from, numbered as sceneObjectOf/objectPrimitive in scene_objects.h.
     std::vector<std::uint32_t> primitiveObject;

@@ -9,17 +9,25 @@
 
 namespace penumbra {
 
+Vec3 pixelRayDirection(const Camera& camera, std::uint32_t width, std::uint32_t height, float x, float y) {
+    RenderSettings rs;
+    rs.width = width;
+    rs.height = height;
+    const shader::FrameUniforms f = makeFrameUniforms(camera, Vec3{0}, rs, 0, 0, 0);
+    // cameraRayDirection in shaders/lib/camera.glsl.
+    const float ndcX = 2.0f * x / float(width) - 1.0f, ndcY = 1.0f - 2.0f * y / float(height);
+    return normalize(f.cameraForward + f.cameraRight * (ndcX * f.aspect * f.tanHalfFovY) +
+                     f.cameraUp * (ndcY * f.tanHalfFovY));
+}
+
 Pick pickPixel(const SceneArrays& arrays, const Camera& camera, std::uint32_t width, std::uint32_t height, float x,
                float y) {
     RenderSettings rs;
     rs.width = width;
     rs.height = height;
     const shader::FrameUniforms f = makeFrameUniforms(camera, Vec3{0}, rs, 0, 0, 0);
-    // cameraRayDirection in shaders/lib/camera.glsl at the pixel's centre.
-    const float px = std::floor(x) + 0.5f, py = std::floor(y) + 0.5f;
-    const float ndcX = 2.0f * px / float(width) - 1.0f, ndcY = 1.0f - 2.0f * py / float(height);
-    const Vec3 direction = normalize(f.cameraForward + f.cameraRight * (ndcX * f.aspect * f.tanHalfFovY) +
-                                     f.cameraUp * (ndcY * f.tanHalfFovY));
+    // The ray through the pixel's centre, as the G-buffer traces it.
+    const Vec3 direction = pixelRayDirection(camera, width, height, std::floor(x) + 0.5f, std::floor(y) + 0.5f);
     Ray ray{f.cameraPosition, direction};
     const bvh::Hit hit = arrays.instances.empty()
                              ? bvh::closestHit(arrays.nodes, arrays.triVerts, ray)

@@ -19,6 +19,10 @@ struct Pick {
     float depth = 0;                       // linear depth along the view direction (0: miss)
     std::uint32_t instance = kNoObject;    // the scene's instance hit (Scene::instances), if any
 };
+// The unit direction of the primary ray through window position (x, y) of a width x height image
+// (row 0 at the top; no rounding to the pixel centre): cameraRayDirection in shaders/lib/camera.glsl.
+Vec3 pixelRayDirection(const Camera& camera, std::uint32_t width, std::uint32_t height, float x, float y);
+
 // x, y: pixel coordinates of a width x height image, row 0 at the top (fractions allowed; the
 // ray goes through the centre of the pixel that contains the point). Alpha-tested holes are
 // ignored: a click on a cut-out picks the surface it cuts.

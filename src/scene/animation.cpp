@@ -89,7 +89,8 @@ bool animatesGeometry(const Scene& scene) { return !scene.instanceAnimations.emp
 
 void applyInstanceAnimations(Scene& scene, double seconds) {
     for (const InstanceAnimation& a : scene.instanceAnimations)
-        if (a.instance < scene.instances.size()) scene.instances[a.instance].transform = chainTransform(a.chain, seconds);
+        if (a.instance < scene.instances.size())
+            scene.instances[a.instance].transform = editedTransform(a.userEdit, chainTransform(a.chain, seconds));
 }
 
 void applySceneTime(Scene& scene, double seconds) {

@@ -108,6 +108,15 @@ Affine chainTransform(const std::vector<NodeMotion>& chain, double seconds) {
     return world;
 }
 
+// Both: the linear parts multiply (later's applied last), the translations add.
+Affine composeEdits(const Affine& later, const Affine& earlier) {
+    Affine out = later * earlier;
+    for (int i = 0; i < 3; ++i) out.m[i][3] = later.m[i][3] + earlier.m[i][3];
+    return out;
+}
+
+Affine editedTransform(const Affine& edit, const Affine& animated) { return composeEdits(edit, animated); }
+
 double chainDuration(const std::vector<NodeMotion>& chain) {
     double end = 0;
     for (const NodeMotion& n : chain)

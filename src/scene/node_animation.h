@@ -42,11 +42,21 @@ struct NodeMotion {
     Track translationTrack, rotationTrack, scaleTrack;
 };
 
-// Scene::instances[instance] is the product of its chain's local transforms (root first).
+// Scene::instances[instance] is the product of its chain's local transforms (root first), with
+// the user's edit (the viewer's moves, scene/objects.h) composed on top: see editedTransform.
 struct InstanceAnimation {
     std::uint32_t instance = 0;
     std::vector<NodeMotion> chain;
+    Affine userEdit;  // identity until the user moves the instance
 };
+
+// An animated transform with a user's edit on top: the animated origin moved by the edit's
+// translation (world space) and the animated linear part turned by the edit's linear part about
+// that origin. So an edited object keeps its animation, displaced and turned: a patrol walks the
+// same path one metre to the left, a spinning object keeps spinning about its own (moved) origin.
+// Edits compose: editedTransform(b, editedTransform(a, t)) == editedTransform(composeEdits(b, a), t).
+Affine editedTransform(const Affine& edit, const Affine& animated);
+Affine composeEdits(const Affine& later, const Affine& earlier);
 
 // The track's value at `seconds`: the first key's before it, the last key's after; quaternions
 // (rotation) interpolate along the shorter arc (slerp) and come back unit length.

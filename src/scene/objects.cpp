@@ -46,11 +46,14 @@ std::string instanceName(const Scene& scene, std::uint32_t instance) {
 
 void moveInstance(Scene& scene, std::uint32_t instance, Vec3 offset, float yawDegrees) {
     PN_CHECK(instance < scene.instances.size());
+    // A turn about the object's own origin, then a move of that origin (editedTransform's form).
+    Affine edit = Affine::eulerDegrees({0, yawDegrees, 0});
+    for (int i = 0; i < 3; ++i) edit.m[i][3] = offset[i];
     Affine& t = scene.instances[instance].transform;
-    const Vec3 origin = t.point(Vec3{0});
-    const Affine turn = Affine::translation(origin) * Affine::eulerDegrees({0, yawDegrees, 0}) *
-                        Affine::translation(Vec3{0} - origin);
-    t = Affine::translation(offset) * turn * t;
+    t = editedTransform(edit, t);
+    // An animated instance keeps the edit, so its animation does not undo it on the next frame.
+    for (InstanceAnimation& a : scene.instanceAnimations)
+        if (a.instance == instance) a.userEdit = composeEdits(edit, a.userEdit);
 }
 
 }  // namespace penumbra

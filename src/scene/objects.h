@@ -23,7 +23,8 @@ void translateObject(Scene& scene, std::uint32_t object, Vec3 offset);
 // The instance's name: its prototype's, with its number ("instance 3 (bunny.obj)").
 std::string instanceName(const Scene& scene, std::uint32_t instance);
 // Turns instance `instance` by yawDegrees about the vertical through its origin, then moves it by
-// offset (world space). Its animation, if it has one, keeps setting its transform while it plays.
+// offset (world space). An animated instance keeps the move as its user edit (InstanceAnimation::
+// userEdit), so its animation plays on from the moved place instead of undoing the move.
 void moveInstance(Scene& scene, std::uint32_t instance, Vec3 offset, float yawDegrees);
 
 }  // namespace penumbra

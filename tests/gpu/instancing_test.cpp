@@ -29,13 +29,14 @@ std::vector<shader::RayDesc> roomRays(std::size_t count, std::uint32_t seed) {
     return rays;
 }
 
-TEST_F(GpuTest, TwoLevelTraversalMatchesTheCpuReference) {
-    const SceneArrays arrays = buildSceneArrays(instancedRoom());
+// GPU hits on `scene` against the CPU's brute force, through the BVH and through brute force.
+void expectGpuHitsMatchTheCpu(const gpu::Context& ctx, const Scene& scene) {
+    const SceneArrays arrays = buildSceneArrays(scene);
     ASSERT_FALSE(arrays.instances.empty());
     const bvh::TwoLevelView view{arrays.nodes, arrays.triVerts, arrays.instances, arrays.topRoot};
     const auto rays = roomRays(2000, 5);
     for (Accel accel : {Accel::Bvh, Accel::Brute}) {
-        const GpuHits gpu = traceOnGpu(*ctx, arrays, rays, accel);
+        const GpuHits gpu = traceOnGpu(ctx, arrays, rays, accel);
         std::size_t hits = 0, mismatches = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
             const Ray ray{rays[i].origin, rays[i].direction, rays[i].tMax};
@@ -55,6 +56,21 @@ TEST_F(GpuTest, TwoLevelTraversalMatchesTheCpuReference) {
         EXPECT_GT(hits, rays.size() / 4);
         EXPECT_LE(mismatches, rays.size() / 200) << (accel == Accel::Bvh ? "bvh" : "brute");
     }
+}
+
+TEST_F(GpuTest, TwoLevelTraversalMatchesTheCpuReference) { expectGpuHitsMatchTheCpu(*ctx, instancedRoom()); }
+
+// Identity instances (the world's own geometry, and here one more sphere placed by the identity)
+// are walked with the world ray, untransformed (PN_INSTANCE_IDENTITY); their hits are the same.
+TEST_F(GpuTest, IdentityInstancesAreWalkedUntransformedWithTheSameHits) {
+    Scene scene = instancedRoom();
+    scene.instances.push_back({0, Affine::scaling(Vec3{0.3f})});
+    scene.instances.push_back({0, Affine{}});
+    const SceneArrays arrays = buildSceneArrays(scene);
+    std::size_t identities = 0;
+    for (const shader::Instance& i : arrays.instances) identities += (i.rootNode & PN_INSTANCE_IDENTITY) != 0;
+    EXPECT_EQ(identities, 2u);  // the world's geometry and the last sphere
+    expectGpuHitsMatchTheCpu(*ctx, scene);
 }
 
 TEST_F(GpuTest, InstancedMeshesRenderAsDuplicatedOnes) {

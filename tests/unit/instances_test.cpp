@@ -81,6 +81,42 @@ TEST(Instances, MovingAnInstanceGivesTheHitsOfARebuild) {
     EXPECT_GT(onMoved, 20u);
 }
 
+// Above kMortonTopLevelAbove instances the top level is the Morton build, rebuilt into reused
+// buffers: moving instances still gives the hits of building everything again, and of brute force.
+TEST(Instances, MovingOneOfThousandsGivesTheHitsOfARebuild) {
+    Scene scene = test::instancedRoom(1, 3, 4);
+    for (int k = 0; k < 3000; ++k) {  // small spheres on a 15 x 10 x 20 grid filling the room
+        const Vec3 at{-1.8f + 0.25f * float(k % 15), 0.1f + 0.24f * float((k / 15) % 10), -1.9f + 0.19f * float(k / 150)};
+        scene.instances.push_back({0, Affine::translation(at) * Affine::scaling(Vec3{0.06f})});
+    }
+    SceneArrays moved = buildSceneArrays(scene);
+    ASSERT_GT(moved.instances.size(), bvh::kMortonTopLevelAbove);
+    // Two rebuilds into the warm buffers, then one from scratch.
+    for (std::uint32_t entry : {40u, 1777u}) {
+        const std::uint32_t id = moved.instances[entry].id;
+        const Affine elsewhere = Affine::translation({0.1f * float(entry % 7), 1.2f, 0.3f}) *
+                                 Affine::eulerDegrees({30, float(entry), 0}) * Affine::scaling({0.4f, 0.2f, 0.3f});
+        setInstanceTransform(moved, entry, elsewhere);
+        scene.instances[id].transform = elsewhere;
+    }
+    const SceneArrays rebuilt = buildSceneArrays(scene);
+    ASSERT_EQ(moved.nodes.size(), rebuilt.nodes.size());
+    std::size_t onMoved = 0, index = 0;
+    for (const Ray& ray : roomRays(3000, 4)) {
+        const bvh::Hit a = bvh::closestHit(view(moved), ray), b = bvh::closestHit(view(rebuilt), ray);
+        ASSERT_EQ(a.triangle, b.triangle);
+        ASSERT_EQ(a.instance, b.instance);
+        ASSERT_EQ(a.t, b.t);
+        onMoved += a.instance == 40 || a.instance == 1777;
+        if (index++ % 20 == 0) {  // brute force over 3,000 instances is slow: every 20th ray
+            const bvh::Hit brute = bvh::closestHitBrute(view(moved), ray);
+            ASSERT_EQ(a.triangle, brute.triangle);
+            ASSERT_EQ(a.instance, brute.instance);
+        }
+    }
+    EXPECT_GT(onMoved, 20u);
+}
+
 TEST(Instances, AHundredInstancesCostLessThanTwiceTheMemoryOfOne) {
     // A sphere of 3,840 triangles (the bunny's 70,000 would only make the margin larger).
     const std::size_t one = deviceBytes(buildSceneArrays(test::instancedRoom(1, 40, 48)));

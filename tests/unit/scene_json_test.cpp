@@ -246,7 +246,9 @@ TEST(SceneJson, InstancesPlaceOneMeshManyTimes) {
     for (std::size_t m = 0; m < copies.meshes.size(); ++m)
         for (std::size_t v = 0; v < copies.meshes[m].positions.size(); ++v)
             EXPECT_LT(length(baked.meshes[m].positions[v] - copies.meshes[m].positions[v]), 1e-5f);
-    EXPECT_LT(length(s.bounds().hi - copies.bounds().hi), 1e-5f);
+    // Instance bounds (transformBounds) are padded outwards by a few ulps of the terms summed.
+    EXPECT_LT(length(s.bounds().hi - copies.bounds().hi), 1e-4f);
+    EXPECT_GE(s.bounds().hi.x, copies.bounds().hi.x);
     EXPECT_NE(badError.find("instances"), std::string::npos) << badError;
 }
 

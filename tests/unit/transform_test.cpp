@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <random>
 
 #include "scene/merge.h"
@@ -137,6 +139,37 @@ TEST(AffineNormal, StaysPerpendicularToTransformedTangents) {
 // A smooth sphere placed by rotations, non-uniform scales and mirrors: every triangle's shading
 // normals stay within 90 degrees of its winding's normal, which still faces outward, and equal the
 // inverse transpose of the original normals.
+// Arvo's centre-and-extent form: the box holds every transformed corner, and is that box (the
+// tightest one) up to rounding.
+TEST(TransformBounds, HoldsEveryCornerAndIsTheirBox) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> coord(-50, 50), side(0, 5);
+    for (const Affine& a : randomAffines(500, 19)) {
+        const Vec3 lo{coord(rng), coord(rng), coord(rng)};
+        const Aabb box{lo, lo + Vec3{side(rng), side(rng), side(rng)}};
+        const Aabb out = transformBounds(box, a);
+        Aabb corners;
+        for (int c = 0; c < 8; ++c) {
+            const Vec3 p = a.point({(c & 1) ? box.hi.x : box.lo.x, (c & 2) ? box.hi.y : box.lo.y,
+                                    (c & 4) ? box.hi.z : box.lo.z});
+            corners.grow(p);
+            for (int i = 0; i < 3; ++i) {
+                EXPECT_LE(out.lo[i], p[i]);
+                EXPECT_GE(out.hi[i], p[i]);
+            }
+        }
+        // Rounding grows with the terms summed (entries in [-2, 2] times coordinates), not the result.
+        float magnitude = 1;
+        for (int i = 0; i < 3; ++i) magnitude = std::max({magnitude, std::abs(box.lo[i]), std::abs(box.hi[i])});
+        const float tolerance = 1e-5f * (1 + 8 * magnitude);
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_NEAR(out.lo[i], corners.lo[i], tolerance);
+            EXPECT_NEAR(out.hi[i], corners.hi[i], tolerance);
+        }
+    }
+    EXPECT_TRUE(transformBounds(Aabb{}, randomAffines(1, 3)[0]).empty());
+}
+
 TEST(AppendScene, KeepsShadingNormalsOnTheFrontSideOfTheirTriangles) {
     const std::vector<Affine> transforms = {
         Affine::eulerDegrees({0, 200, 0}),

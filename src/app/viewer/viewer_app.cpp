@@ -16,6 +16,7 @@
 #include "app/viewer/controls.h"
 #include "app/viewer/edit_panel.h"
 #include "app/viewer/grid_walk.h"
+#include "app/viewer/object_drag.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/screenshot.h"
 #include "app/viewer/ui_panel.h"
@@ -37,10 +38,17 @@ struct PointerState {
     // Left button: a press and release within a few pixels, away from the panel, is a click.
     bool leftDown = false;
     double leftDownX = 0, leftDownY = 0;
+    // A left press on the selected instance grabs it: it follows the cursor until the release.
+    std::optional<ObjectDrag> drag;
 };
 
 struct Click {
     double x = 0, y = 0;  // window coordinates
+};
+
+// What the left button did this frame: pressed (away from the panel) and clicked.
+struct LeftButton {
+    std::optional<Click> press, click;
 };
 
 float cameraSpeedFor(const Scene& scene) {
@@ -125,13 +133,14 @@ void setCaptured(GLFWwindow* w, PointerState& pointer, bool on) {
     else io.ConfigFlags &= ~ImGuiConfigFlags_NoMouse;
     glfwGetCursorPos(w, &pointer.lastX, &pointer.lastY);  // no jump on the next frame
     pointer.dragging = pointer.leftDown = false;
+    pointer.drag.reset();
 }
 
-// Pointer motion that looks (captured, or dragging with the right button) and left clicks.
-std::optional<Click> trackPointer(GLFWwindow* w, PointerState& p, InputState& input, bool uiWantsMouse) {
+// Pointer motion that looks (captured, or dragging with the right button), left presses and clicks.
+LeftButton trackPointer(GLFWwindow* w, PointerState& p, InputState& input, bool uiWantsMouse) {
     double mx = 0, my = 0;
     glfwGetCursorPos(w, &mx, &my);
-    std::optional<Click> click;
+    LeftButton left;
     if (p.captured) {
         applyLook(input, float(mx - p.lastX), float(my - p.lastY));
         if (!glfwGetWindowAttrib(w, GLFW_FOCUSED)) setCaptured(w, p, false);  // focus lost: let go
@@ -144,14 +153,48 @@ std::optional<Click> trackPointer(GLFWwindow* w, PointerState& p, InputState& in
             p.leftDown = true;
             p.leftDownX = mx;
             p.leftDownY = my;
+            left.press = Click{mx, my};
         } else if (!leftHeld && p.leftDown) {
             p.leftDown = false;
-            if (std::abs(mx - p.leftDownX) + std::abs(my - p.leftDownY) < 4.0) click = Click{mx, my};
+            const bool dragged = p.drag.has_value();
+            p.drag.reset();
+            // A press and release in place is a click, unless it grabbed the selection (walking,
+            // a click captures the mouse, which would end the user's handling of the object).
+            if (std::abs(mx - p.leftDownX) + std::abs(my - p.leftDownY) < 4.0 && !dragged) left.click = Click{mx, my};
         }
     }
     p.lastX = mx;
     p.lastY = my;
-    return click;
+    return left;
+}
+
+// A left press on the selected instance grabs it (the CPU pick under the cursor, as a click's).
+void grabSelection(GLFWwindow* w, const Click& press, PointerState& pointer, const Scene& scene,
+                   const InteractiveRenderer& renderer, const Camera& camera, std::uint32_t selectedInstance) {
+    int ww = 0, wh = 0;
+    glfwGetWindowSize(w, &ww, &wh);
+    if (selectedInstance >= scene.instances.size() || ww <= 0 || wh <= 0) return;
+    const Pick pick = pickPixel(renderer.sceneArrays(), camera, std::uint32_t(ww), std::uint32_t(wh), float(press.x),
+                                float(press.y));
+    if (pick.instance != selectedInstance) return;
+    pointer.drag = startObjectDrag(selectedInstance, scene.instances[selectedInstance].transform, camera,
+                                   std::uint32_t(ww), std::uint32_t(wh), float(press.x), float(press.y), pick.depth);
+}
+
+// Moves a grabbed instance so the grabbed point is under the cursor again; true when it moved.
+bool dragSelection(GLFWwindow* w, const PointerState& pointer, Scene& scene, const Camera& camera) {
+    if (!pointer.drag || pointer.drag->instance >= scene.instances.size()) return false;
+    int ww = 0, wh = 0;
+    glfwGetWindowSize(w, &ww, &wh);
+    if (ww <= 0 || wh <= 0) return false;
+    const Vec3 grabbed = scene.instances[pointer.drag->instance].transform.point(pointer.drag->grabbedLocal);
+    const Vec3 offset = dragOffset(camera, std::uint32_t(ww), std::uint32_t(wh), grabbed, float(pointer.lastX),
+                                   float(pointer.lastY));
+    // Rounding leaves a still cursor a tiny offset: below a hundredth of a pixel, nothing moved
+    // (a move would restart a paused viewer's accumulation every frame).
+    if (!(length(offset) > 1e-5f * length(grabbed - camera.position))) return false;
+    moveInstance(scene, pointer.drag->instance, offset, 0.0f);
+    return true;
 }
 
 // A click sets the focus (when asked), captures the pointer while walking, or selects.
@@ -175,7 +218,7 @@ void handleClick(GLFWwindow* w, const Click& click, PointerState& pointer, const
         select(scene, pick.object, edit);
         selectedInstance = pick.instance;
         if (pick.instance < scene.instances.size())
-            panel.message = instanceName(scene, pick.instance) + ": I/K J/L O/U move it, comma/period turn it";
+            panel.message = instanceName(scene, pick.instance) + ": drag it, or I/K J/L O/U move it, comma/period turn it";
     }
 }
 
@@ -343,10 +386,14 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         }
         if (input.nextInstance && !scene.instances.empty()) {
             selectedInstance = selectedInstance + 1 < scene.instances.size() ? selectedInstance + 1 : 0;
-            panel.message = instanceName(scene, selectedInstance) + ": I/K J/L O/U move it, comma/period turn it";
+            panel.message = instanceName(scene, selectedInstance) + ": drag it, or I/K J/L O/U move it, comma/period turn it";
         }
-        if (std::optional<Click> click = trackPointer(w, pointer, input, ui.wantsMouse()))
-            handleClick(w, *click, pointer, scene, renderer, controller, grid ? grid->camera() : controller.camera(),
+        const LeftButton left = trackPointer(w, pointer, input, ui.wantsMouse());
+        if (left.press)
+            grabSelection(w, *left.press, pointer, scene, renderer, grid ? grid->camera() : controller.camera(),
+                          selectedInstance);
+        if (left.click)
+            handleClick(w, *left.click, pointer, scene, renderer, controller, grid ? grid->camera() : controller.camera(),
                         settings, edit, selectedInstance, panel);
         // The selected instance moves with its keys, paused or playing; only the top level changes.
         bool instancesMoved = !automationDone && moveSelectedInstance(scene, selectedInstance, objectInputFrom(input),
@@ -365,6 +412,9 @@ void runViewer(Scene scene, const ViewerOptions& options) {
                 instancesMoved = true;
             }
         }
+        // A grabbed instance follows the cursor, after the camera and the animations have moved.
+        if (!automationDone && dragSelection(w, pointer, scene, grid ? grid->camera() : controller.camera()))
+            instancesMoved = true;
         if (instancesMoved) renderer.setInstanceTransforms(scene);
         endInputFrame(input);
 
@@ -382,6 +432,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
             grid.reset();
             if (scene.tileGrid) grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
             selectedInstance = kNoObject;
+            pointer.drag.reset();
         }
         if (requests.materialChanged || requests.moveObject || requests.openScene || instancesMoved) shown.valid = false;
         presenter.setVsync(panel.vsync);
