@@ -70,6 +70,10 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
         expectMembers(spv, "LightNode", {0, offsetof(LightNode, phi), offsetof(LightNode, boundsMax), offsetof(LightNode, cosThetaO),
                                          offsetof(LightNode, axis), offsetof(LightNode, cosThetaE), offsetof(LightNode, childOrLight),
                                          offsetof(LightNode, twoSided), offsetof(LightNode, sinThetaO), offsetof(LightNode, minDistance2)});
+        expectMembers(spv, "LightTreeNode", {0, offsetof(LightTreeNode, radius), offsetof(LightTreeNode, axis),
+                                             offsetof(LightTreeNode, phi), offsetof(LightTreeNode, cosThetaO),
+                                             offsetof(LightTreeNode, sinThetaO), offsetof(LightTreeNode, cosThetaE),
+                                             offsetof(LightTreeNode, childOrLight)});
         expectMembers(spv, "FrameUniforms",
                       {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight), offsetof(FrameUniforms, aspect),
                        offsetof(FrameUniforms, cameraUp), offsetof(FrameUniforms, width), offsetof(FrameUniforms, cameraForward),
