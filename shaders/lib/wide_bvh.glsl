@@ -9,7 +9,7 @@
 #ifndef PN_WIDE_BVH_GLSL
 #define PN_WIDE_BVH_GLSL
 
-// The wide nodes follow the binary ones in the node buffer, five uvec4 each:
+// The wide nodes follow the binary ones (if uploaded) in the node buffer, five uvec4 each:
 // (origin, exponentsMask) (childBase, primBase, meta[0], meta[1]) (loX, hiX) (loY, hiY) (loZ, hiZ).
 layout(std430, set = 0, binding = PN_BINDING_NODES) readonly buffer WideNodeBuffer { uvec4 wideNodeWords[]; };
 
@@ -17,8 +17,9 @@ layout(std430, set = 0, binding = PN_BINDING_NODES) readonly buffer WideNodeBuff
 uint wideByte(uint word, uint k) { return bitfieldExtract(word, int(8u * k), 8); }
 
 Hit traverseWide(vec3 o, vec3 d, float tMax, bool anyHit) {
+    // Only reached with a wide tree of at least one node (frame.accel falls back to PN_ACCEL_BVH
+    // without one); frame.nodeCount counts the binary nodes before it, 0 when they stay on the host.
     Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0, PN_NO_HIT);
-    if (frame.nodeCount == 0u) return hit;
     vec3 invD = safeInverse(d);
     // Slot s holds the child nearest to rays with sign bits s; XOR with the flipped octant puts
     // this ray's nearest child at the highest bit.
