@@ -7,8 +7,10 @@
 #
 #   scripts/gpu-bench-large.sh pack    here, after a Release build: fetches the dragon from npm
 #                                      into a scratch folder, writes the scene files, and packs
-#                                      penumbra, pathtracer, xz and their libraries into .gpu/
-#                                      (big files xz-compressed to fit the 64 MiB transfer)
+#                                      penumbra, pathtracer, xz, gzip and their libraries into .gpu/
+#                                      (every file over 1 MB but xz itself xz-compressed, to fit
+#                                      the 64 MiB transfer with the tracked files; Embree's OBJ is
+#                                      made from the PLY on the host instead of being sent)
 #   scripts/gpu-bench-large.sh run     on the GPU host, from the checkout root holding .gpu/;
 #                                      results go to $OUT (default ./bench-large-out)
 #   scripts/gpu-bench-large.sh local   here: the same run with build/penumbra on the local Vulkan
@@ -121,7 +123,7 @@ EOF
 # The OBJ Embree reads: an ASCII PLY's vertices and faces as they are (one element per line, as
 # the dragon's PLY has them).
 ply_to_obj() {  # FILE.ply.gz
-  zcat "$1" | awk '
+  gzip -dc "$1" | awk '
     h { if ($1 == "element" && $2 == "vertex") nv = $3; if ($1 == "end_header") h = 0; next }
     n < nv { print "v", $1, $2, $3; n++; next }
     { line = "f"; for (k = 2; k <= $1 + 1; k++) line = line " " ($k + 1); print line }' h=1
@@ -142,8 +144,7 @@ pack() {
   mkdir -p "$data"
   cp "$scratch/package/models/dragon_vrip.ply.gz" "$data/"
   ply_to_obj "$data/dragon_vrip.ply.gz" > "$data/dragon.obj"
-  write_scenes "$data"
-  xz -T0 -6 -k "$data/dragon.obj"
+  write_scenes "$data"  # reads dragon.obj for the bounds; the host makes its own copy from the PLY
   git rev-parse HEAD > "$data/commit.txt"
   # gpu-pack.sh packs into .gpu/ of the git checkout it runs in and expects a plain .git folder;
   # run it in a scratch repository (this may be a worktree) and move the result here.
@@ -151,17 +152,18 @@ pack() {
   mkdir -p "$packdir" && git -C "$packdir" init -q
   [ -d .gpu/debs ] && mkdir -p "$packdir/.gpu" && cp -r .gpu/debs "$packdir/.gpu/"  # skips the download
   (cd "$packdir" && "$top/../shared/tools/gpu-pack.sh" "$top/build/penumbra" "$top/build/bench/bvh/bench_bvh_build" \
-    /usr/bin/pathtracer "$(command -v xz)" \
-    "$data/dragon_vrip.ply.gz" "$data/dragon.obj.xz" "$data"/dragon.json "$data"/dragon12.json \
+    /usr/bin/pathtracer "$(command -v xz)" "$(command -v gzip)" \
+    "$data/dragon_vrip.ply.gz" "$data"/dragon.json "$data"/dragon12.json \
     "$data"/dragon12.xml "$data"/dragon.cam "$data"/dragon12.cam "$data/commit.txt") >&2
   rm -rf .gpu
   mv "$packdir/.gpu" .gpu
   git check-ignore -q .gpu 2>/dev/null ||
     echo "gpu-bench-large: note: .gpu/ is not ignored by git here; never commit it" >&2
-  # Everything big that xz itself does not need is sent compressed and unpacked on the host.
-  for f in .gpu/lib/*; do
-    case "$(basename "$f")" in liblzma.so*) continue ;; esac
-    if [ "$(stat -c %s "$f")" -gt 1000000 ]; then xz -T0 -6 "$f"; fi
+  # Everything big that xz itself does not need (programs and libraries: libembree3 alone is
+  # 44 MB) is sent compressed and unpacked on the host; xz keeps each file's mode.
+  for f in .gpu/bin/* .gpu/lib/*; do
+    case "$(basename "$f")" in liblzma.so* | xz | gzip | *.gz) continue ;; esac
+    if [ "$(stat -c %s "$f")" -gt 1000000 ]; then xz -T0 -9 "$f"; fi
   done
   local tracked packed
   tracked=$(git ls-files -z | du -cb --files0-from=- | tail -1 | cut -f1)
@@ -195,8 +197,12 @@ penumbra_scene() {  # TABLE NAME SCENE_FILE
   PENUMBRA_CACHE_DIR=$WORK/cache penumbra info "$scene" >> "$log" 2>&1
   local cached
   cached=$(sed -n 's/.*read from the cache in \([0-9.]*\) ms.*/\1/p' "$log" | tail -1)
-  # The ray benchmark once per traversal: primary, shadow and diffuse rays, and the whole frame.
+  # GPU memory per triangle as each walk uploads the scene.
   local accel
+  for accel in $ACCELS; do
+    penumbra info "$scene" --accel "$accel" 2>&1 | grep 'gpu memory' | sed "s/^ */$name $accel: /" >> "$OUT/memory.txt" || true
+  done
+  # The ray benchmark once per traversal: primary, shadow and diffuse rays, and the whole frame.
   for accel in $ACCELS; do
     penumbra bench "$scene" --json --no-bvh-cache --width "$WIDTH" --height "$HEIGHT" --bounces "$BOUNCES" \
       --repeats "$REPEATS" --accel "$accel" > "$OUT/penumbra-$name-bench-$accel.json" 2>&1 || true
@@ -240,7 +246,7 @@ run() {
     [ -f .gpu/env.sh ] || die ".gpu/ is missing: run 'scripts/gpu-bench-large.sh pack' on the dev machine"
     # shellcheck disable=SC1091
     source .gpu/env.sh
-    for f in .gpu/lib/*.xz; do
+    for f in .gpu/bin/*.xz .gpu/lib/*.xz; do
       if [ -e "$f" ]; then xz -d -f "$f"; fi
     done
     bin=.gpu/bin
@@ -255,12 +261,13 @@ run() {
     export PATH="$top/build:$PATH"
   fi
   cp "$bin"/dragon_vrip.ply.gz "$bin"/dragon*.json "$bin"/dragon12.xml "$bin"/dragon*.cam "$WORK/"
-  if [ -f "$bin/dragon.obj" ]; then cp "$bin/dragon.obj" "$WORK/"; else xz -d -c "$bin/dragon.obj.xz" > "$WORK/dragon.obj"; fi
+  if [ -f "$bin/dragon.obj" ]; then cp "$bin/dragon.obj" "$WORK/"; else ply_to_obj "$bin/dragon_vrip.ply.gz" > "$WORK/dragon.obj"; fi
   cat "$bin/commit.txt" > "$OUT/commit.txt" 2>/dev/null || git rev-parse HEAD > "$OUT/commit.txt"
   nproc > "$OUT/cpus.txt"
   local table=$OUT/table.txt
   : > "$table"
   : > "$OUT/rays.txt"
+  : > "$OUT/memory.txt"
   penumbra info 2>&1 | grep -E '^(device|chosen)' > "$OUT/device.txt" || true
   # The CPU BVH build on two of the host's cores (the issue's 2-core target) and on all of them.
   if command -v bench_bvh_build >/dev/null && [ "$where" = host ]; then
@@ -297,7 +304,8 @@ run() {
     while read -r name accel primary shadow diffuse frame; do
       printf '%-9s %-6s %10s %10s %10s %10s\n' "$name" "$accel" "$primary" "$shadow" "$diffuse" "$frame"
     done < "$OUT/rays.txt"
-    grep -h 'gpu memory per triangle' "$OUT"/penumbra-*.txt 2>/dev/null | head -2
+    echo
+    cat "$OUT/memory.txt" 2>/dev/null || true
   } | tee "$OUT/summary.txt"
   rm -rf "$WORK"
 }

@@ -14,6 +14,7 @@ struct Surface {
     uint instance;  // Hit.instance: the space the triangle data is in (PN_NO_HIT: world)
 };
 
+#include "shared/unit_vector.h"
 #include "lib/sphere_surface.glsl"
 #include "lib/sprite_surface.glsl"
 
@@ -49,7 +50,8 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     s.instance = hit.instance;
     s.position = o + hit.t * d;
     vec3 ng = normalize(cross(tv.e1, tv.e2));
-    vec3 ns = normalize((1.0 - hit.u - hit.v) * ta.n0 + hit.u * ta.n1 + hit.v * ta.n2);
+    vec3 ns = normalize((1.0 - hit.u - hit.v) * unpackUnitVector(ta.n0) + hit.u * unpackUnitVector(ta.n1) +
+                        hit.v * unpackUnitVector(ta.n2));
     if (PN_HAS(PN_FEATURE_INSTANCES) && hit.instance != PN_NO_HIT) {
         ng = instanceNormalToWorld(hit.instance, ng);
         ns = instanceNormalToWorld(hit.instance, ns);

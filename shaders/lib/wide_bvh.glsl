@@ -1,5 +1,6 @@
 // The compressed 8-wide BVH walk (--accel wide; shader WideNode, built by src/bvh/wide.cpp, and
-// step for step the CPU reference in src/bvh/traverse_wide_cpu.cpp). After Ylitie, Karras and
+// step for step the CPU reference in src/bvh/traverse_wide_cpu.cpp, except that child boxes are
+// tested in the node's quantized frame here, which rounds differently). After Ylitie, Karras and
 // Laine 2017: a node's eight quantized child boxes are tested together; the hit interior children
 // become bits 24-31 of a node group, ordered so that the highest bit is the child nearest the
 // ray's octant, and the hit leaves' primitives bits 0-23 of a primitive group. The stack holds
@@ -9,7 +10,7 @@
 #ifndef PN_WIDE_BVH_GLSL
 #define PN_WIDE_BVH_GLSL
 
-// The wide nodes follow the binary ones in the node buffer, five uvec4 each:
+// The wide nodes follow the binary ones (if uploaded) in the node buffer, five uvec4 each:
 // (origin, exponentsMask) (childBase, primBase, meta[0], meta[1]) (loX, hiX) (loY, hiY) (loZ, hiZ).
 layout(std430, set = 0, binding = PN_BINDING_NODES) readonly buffer WideNodeBuffer { uvec4 wideNodeWords[]; };
 
@@ -17,8 +18,9 @@ layout(std430, set = 0, binding = PN_BINDING_NODES) readonly buffer WideNodeBuff
 uint wideByte(uint word, uint k) { return bitfieldExtract(word, int(8u * k), 8); }
 
 Hit traverseWide(vec3 o, vec3 d, float tMax, bool anyHit) {
+    // Only reached with a wide tree of at least one node (frame.accel falls back to PN_ACCEL_BVH
+    // without one); frame.nodeCount counts the binary nodes before it, 0 when they stay on the host.
     Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0, PN_NO_HIT);
-    if (frame.nodeCount == 0u) return hit;
     vec3 invD = safeInverse(d);
     // Slot s holds the child nearest to rays with sign bits s; XOR with the flipped octant puts
     // this ray's nearest child at the highest bit.
@@ -38,20 +40,32 @@ Hit traverseWide(vec3 o, vec3 d, float tMax, bool anyHit) {
             PN_COUNT_NODE();
             uvec4 n0 = wideNodeWords[w], n1 = wideNodeWords[w + 1u], n2 = wideNodeWords[w + 2u],
                   n3 = wideNodeWords[w + 3u], n4 = wideNodeWords[w + 4u];
-            vec3 origin = uintBitsToFloat(n0.xyz);
+            // The ray in the node's quantized frame, once per node (Ylitie et al. 2017, section 3.2):
+            // plane q of axis k is at t = q * frameInvD[k] + frameT[k] (scale is a power of two, so
+            // frameInvD is exact). Per axis, the ray's direction says which plane it enters through
+            // (lo for a positive direction), so the words are picked once here, not per child.
             vec3 scale = uintBitsToFloat(uvec3(n0.w & 0xffu, (n0.w >> 8) & 0xffu, (n0.w >> 16) & 0xffu) << 23);
+            vec3 frameInvD = scale * invD;
+            vec3 frameT = (uintBitsToFloat(n0.xyz) - o) * invD;
+            uvec4 planesX = d.x < 0.0 ? n2.zwxy : n2, planesY = d.y < 0.0 ? n3.zwxy : n3,
+                  planesZ = d.z < 0.0 ? n4.zwxy : n4;  // (near lower slots, near upper, far lower, far upper)
             uint hits = 0u;
             for (uint s = 0u; s < 8u; ++s) {
                 uint k = s & 3u;
-                bool upper = s >= 4u;
-                uint meta = wideByte(upper ? n1.w : n1.z, k);
+                uint word = s >> 2;  // 0: slots 0-3 (in .x and .z), 1: slots 4-7 (.y and .w)
+                uint meta = wideByte(n1[2u + word], k);
                 if (meta == 0u) continue;
-                // origin + q * 2^e: the product is exact, so the box is the one the builder checked.
-                vec3 lo = origin + vec3(wideByte(upper ? n2.y : n2.x, k), wideByte(upper ? n3.y : n3.x, k),
-                                        wideByte(upper ? n4.y : n4.x, k)) * scale;
-                vec3 hi = origin + vec3(wideByte(upper ? n2.w : n2.z, k), wideByte(upper ? n3.w : n3.z, k),
-                                        wideByte(upper ? n4.w : n4.z, k)) * scale;
-                if (slabEntry(lo, hi, o, invD, hit.t) == PN_INFINITY) continue;
+                vec3 tNear = vec3(wideByte(planesX[word], k), wideByte(planesY[word], k), wideByte(planesZ[word], k)) *
+                                 frameInvD + frameT;
+                vec3 tFar = vec3(wideByte(planesX[2u + word], k), wideByte(planesY[2u + word], k),
+                                 wideByte(planesZ[2u + word], k)) * frameInvD + frameT;
+                float enter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
+                float leave = min(min(tFar.x, tFar.y), min(tFar.z, hit.t));
+                // Widened exits as in slabEntry. Unlike it, a plane's t here is rounded relative to
+                // the node's corner, not to the plane: a box the ray only grazes within about 1e-7 of
+                // the node's size can be culled (the paper's trade; the tests check hits against the
+                // binary walk and brute force).
+                if (enter > leave * PN_SLAB_EXIT_SCALE) continue;
                 if ((meta & 0xf8u) == 0x38u)
                     hits |= 1u << (24u + (s ^ octantFlip));  // interior child
                 else

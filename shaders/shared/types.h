@@ -217,18 +217,19 @@ PN_STRUCT(TriVerts) {
     float pad2;
 };
 
-// Cold triangle data, read once for the closest hit: 80 bytes.
+// Cold triangle data, read once for the closest hit: 48 bytes. Shading normals are packed
+// (shared/unit_vector.h: unpackUnitVector); UVs stay full floats, since tiled surfaces (a Doom
+// wall) run to texture coordinates in the hundreds, where half floats would miss texels.
 PN_STRUCT(TriAttribs) {
-    vec3 n0;          // per-vertex shading normals
-    uint materialId;
-    vec3 n1;
-    uint lightIndex;  // LightRef of this emitter, or PN_NO_LIGHT
-    vec3 n2;
-    float area;       // world-space area, for converting light pdfs
-    vec2 uv0;
-    vec2 uv1;
-    vec2 uv2;
-    vec2 pad;
+    uint materialId;  //  4
+    uint lightIndex;  //  4: LightRef of this emitter, or PN_NO_LIGHT
+    float area;       //  4: world-space area, for converting light pdfs
+    uint n0;          //  4: per-vertex shading normals, octahedral (packUnitVector)
+    uint n1;          //  4
+    uint n2;          //  4
+    vec2 uv0;         //  8
+    vec2 uv1;         //  8
+    vec2 uv2;         //  8
 };
 
 // One principled material (see docs/MATERIALS.md), 96 bytes. Lobes: a Lambertian base under a
@@ -582,10 +583,9 @@ static_assert(sizeof(WideNode) == 80 && offsetof(WideNode, exponentsMask) == 12 
               offsetof(WideNode, hiZ) == 72);
 static_assert(sizeof(TriVerts) == 48 && offsetof(TriVerts, flags) == 12 && offsetof(TriVerts, e1) == 16 &&
               offsetof(TriVerts, e2) == 32);
-static_assert(sizeof(TriAttribs) == 80 && offsetof(TriAttribs, materialId) == 12 &&
-              offsetof(TriAttribs, n1) == 16 && offsetof(TriAttribs, lightIndex) == 28 &&
-              offsetof(TriAttribs, n2) == 32 && offsetof(TriAttribs, area) == 44 &&
-              offsetof(TriAttribs, uv0) == 48 && offsetof(TriAttribs, uv2) == 64);
+static_assert(sizeof(TriAttribs) == 48 && offsetof(TriAttribs, lightIndex) == 4 && offsetof(TriAttribs, area) == 8 &&
+              offsetof(TriAttribs, n0) == 12 && offsetof(TriAttribs, n2) == 20 && offsetof(TriAttribs, uv0) == 24 &&
+              offsetof(TriAttribs, uv2) == 40);
 static_assert(sizeof(Material) == 96 && offsetof(Material, flags) == 12 &&
               offsetof(Material, emission) == 16 && offsetof(Material, alphaCutoff) == 28 &&
               offsetof(Material, absorption) == 32 && offsetof(Material, ior) == 44 &&

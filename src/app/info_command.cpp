@@ -22,15 +22,17 @@ struct InfoArgs {
     std::string device;
     EnvironmentSpec env;
     WadOptions wad;
+    std::string accel = "bvh";
     bool mpi = false;
 };
 
-void printScene(const std::string& name, const std::string& map, const EnvironmentSpec& env, const WadOptions& wad) {
+void printScene(const std::string& name, const std::string& map, const EnvironmentSpec& env, const WadOptions& wad,
+                Accel accel) {
     const auto start = std::chrono::steady_clock::now();
     Scene scene = loadScene(name, map, {}, nullptr, env, wad);
     const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const std::size_t cpuBytes = sceneBytes(scene);
-    SceneArrays arrays = buildSceneArrays(scene);
+    SceneArrays arrays = buildSceneArrays(scene, {}, accel);
     const bvh::BvhStats& s = arrays.stats;
     const std::size_t tris = arrays.triVerts.size();
     const std::size_t gpuBytes = deviceBytes(arrays);
@@ -69,24 +71,26 @@ void printScene(const std::string& name, const std::string& map, const Environme
     }
     std::printf("  cpu memory (scene model): %zu bytes (%.1f per triangle)\n", cpuBytes,
                 tris ? double(cpuBytes) / double(tris) : 0.0);
-    std::printf("  gpu memory: %zu bytes (%.1f per triangle)\n", gpuBytes, tris ? double(gpuBytes) / double(tris) : 0.0);
-    // What each walk reads per primitive: its nodes and the hot triangle array (TriVerts).
-    const double binaryBytes = double(arrays.nodes.size() * sizeof(shader::BvhNode));
+    std::printf("  gpu memory (--accel %s): %zu bytes (%.1f per triangle)\n", accelName(accel), gpuBytes,
+                tris ? double(gpuBytes) / double(tris) : 0.0);
+    // The node array each walk reads, the hot triangle array (TriVerts) and the cold one.
+    const double binaryBytes = arrays.binaryNodesOnGpu ? double(arrays.nodes.size() * sizeof(shader::BvhNode)) : 0.0;
     const double wideBytes = double(arrays.wideNodes.size() * sizeof(shader::WideNode));
     const double hotBytes = double(arrays.triVerts.size() * sizeof(shader::TriVerts));
     const double coldBytes = double(arrays.triAttribs.size() * sizeof(shader::TriAttribs));
     if (tris)
         std::printf("  gpu memory per triangle: binary nodes %.1f, wide nodes %.1f, triangle positions %.1f, attributes "
-                    "%.1f; without the other walk's nodes: bvh %.1f, wide %.1f\n",
+                    "%.1f, the rest %.1f\n",
                     binaryBytes / double(tris), wideBytes / double(tris), hotBytes / double(tris),
-                    coldBytes / double(tris), (double(gpuBytes) - wideBytes) / double(tris),
-                    (double(gpuBytes) - binaryBytes) / double(tris));
+                    coldBytes / double(tris),
+                    (double(gpuBytes) - binaryBytes - wideBytes - hotBytes - coldBytes) / double(tris));
 }
 
 void runInfo(const InfoArgs& args) {
+    const Accel accel = parseAccel(args.accel);  // a usage error before anything is printed
     if (std::unique_ptr<distributed::Comm> comm = startRanks(args.mpi)) {
         printRanksInfo(*comm, args.device);
-        if (comm->primary() && !args.scene.empty()) printScene(args.scene, args.map, args.env, args.wad);
+        if (comm->primary() && !args.scene.empty()) printScene(args.scene, args.map, args.env, args.wad, accel);
         return;
     }
     std::string error;
@@ -106,7 +110,7 @@ void runInfo(const InfoArgs& args) {
                     l.maxComputeWorkGroupInvocations, l.maxStorageBufferRange,
                     ctx->timestampsSupported() ? "yes" : "no", double(l.timestampPeriod));
     }
-    if (!args.scene.empty()) printScene(args.scene, args.map, args.env, args.wad);
+    if (!args.scene.empty()) printScene(args.scene, args.map, args.env, args.wad, accel);
 }
 
 }  // namespace
@@ -117,6 +121,7 @@ void registerInfo(CLI::App& app, Action& action) {
     cmd->add_option("scene", args->scene, "built-in scene or scene file");
     cmd->add_option("--map", args->map, "level of a .wad file");
     addDeviceOption(*cmd, args->device);
+    cmd->add_option("--accel", args->accel, "the walk whose GPU memory to report: bvh, wide (builds the wide BVH) or brute");
     cmd->add_flag("--mpi", args->mpi, "list every rank's host and device (implied when started by mpirun)");
     addBvhCacheOption(*cmd);
     addEnvironmentOptions(*cmd, args->env);

@@ -1,6 +1,7 @@
 #include "bvh/triangle.h"
 
 #include "scene/scene.h"
+#include "shared/unit_vector.h"
 
 namespace penumbra::bvh {
 
@@ -22,9 +23,9 @@ shader::TriVerts toTriVerts(const Triangle& tri) {
 
 shader::TriAttribs toTriAttribs(const SceneTriangle& t) {
     shader::TriAttribs a{};
-    a.n0 = t.n[0];
-    a.n1 = t.n[1];
-    a.n2 = t.n[2];
+    a.n0 = shader::packUnitVector(t.n[0]);
+    a.n1 = shader::packUnitVector(t.n[1]);
+    a.n2 = shader::packUnitVector(t.n[2]);
     a.uv0 = t.uv[0];
     a.uv1 = t.uv[1];
     a.uv2 = t.uv[2];

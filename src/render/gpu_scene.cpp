@@ -87,14 +87,18 @@ shader::Material toGpuMaterial(const Material& m) {
 
 namespace {
 
-// The node buffer: the binary nodes, then the wide ones (lib/wide_bvh.glsl finds them at word
-// nodeCount * 2). A WideNode is 80 bytes, two and a half binary nodes; the tail is padded.
+std::size_t binaryNodesUploaded(const SceneArrays& a) { return a.binaryNodesOnGpu ? a.nodes.size() : 0; }
+
+// The node buffer: the binary nodes (unless they stay on the host), then the wide ones
+// (lib/wide_bvh.glsl finds them at word nodeCount * 2, nodeCount being the binary nodes uploaded).
+// A WideNode is 80 bytes, two and a half binary nodes; the tail is padded.
 std::vector<shader::BvhNode> nodeBufferContents(const SceneArrays& a) {
-    if (a.wideNodes.empty()) return a.nodes;
+    const std::size_t binary = binaryNodesUploaded(a);
+    if (a.wideNodes.empty()) return {a.nodes.begin(), a.nodes.begin() + std::ptrdiff_t(binary)};
     const std::size_t wideBytes = a.wideNodes.size() * sizeof(shader::WideNode);
-    std::vector<shader::BvhNode> out(a.nodes.size() + (wideBytes + sizeof(shader::BvhNode) - 1) / sizeof(shader::BvhNode));
-    std::memcpy(out.data(), a.nodes.data(), a.nodes.size() * sizeof(shader::BvhNode));
-    std::memcpy(reinterpret_cast<char*>(out.data() + a.nodes.size()), a.wideNodes.data(), wideBytes);
+    std::vector<shader::BvhNode> out(binary + (wideBytes + sizeof(shader::BvhNode) - 1) / sizeof(shader::BvhNode));
+    std::memcpy(out.data(), a.nodes.data(), binary * sizeof(shader::BvhNode));
+    std::memcpy(reinterpret_cast<char*>(out.data() + binary), a.wideNodes.data(), wideBytes);
     return out;
 }
 
@@ -157,7 +161,7 @@ void addLightList(const Scene& scene, std::span<const EmissiveTriangle> emissive
 
 }  // namespace
 
-SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& options) {
+SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& options, Accel accel) {
     input.validate();
     // Emitters stay world-space triangles in the light BVH: instances of emissive meshes are baked.
     std::optional<Scene> baked;
@@ -196,7 +200,7 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
     bvh::Bvh tree = std::move(built.bvh);
     out.bvhFromCache = built.fromCache;
     out.buildMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (scene.instances.empty()) {
+    if (accel == Accel::Wide && scene.instances.empty()) {
         // The wide tree reorders the primitives, so it comes before anything indexes them.
         const auto wideStart = std::chrono::steady_clock::now();
         bvh::WideBvh wide = bvh::collapseToWide(tree);
@@ -204,6 +208,7 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
         out.wideDepth = wide.maxDepth;
         out.wideMilliseconds =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wideStart).count();
+        out.binaryNodesOnGpu = out.wideNodes.empty();  // an empty scene's walk is the binary one
     }
     out.stats = bvh::computeStats(tree, options);
     out.nodes = std::move(tree.nodes);
@@ -304,7 +309,7 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
 
 std::size_t deviceBytes(const SceneArrays& a) {
     auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
-    return bytes(a.nodes) + bytes(a.wideNodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.materials) + bytes(a.lightRefs) +
+    return binaryNodesUploaded(a) * sizeof(shader::BvhNode) + bytes(a.wideNodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.materials) + bytes(a.lightRefs) +
            bytes(a.lightNodes) + bytes(a.lightTree) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
            bytes(a.env.alias) + bytes(a.env.radiance) + bytes(a.instances);
 }
@@ -327,7 +332,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       instances(gpu::uploadStorageBuffer<shader::Instance>(ctx, commands, a.instances)),
       instanceCount(static_cast<std::uint32_t>(a.instances.size())),
       topRoot(a.topRoot),
-      nodeCount(static_cast<std::uint32_t>(a.nodes.size())),
+      nodeCount(static_cast<std::uint32_t>(binaryNodesUploaded(a))),
       wideNodeCount(static_cast<std::uint32_t>(a.wideNodes.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
       lightNodeCount(static_cast<std::uint32_t>(a.lightTree.size())),

@@ -10,6 +10,7 @@
 #include "gpu/commands.h"
 #include "render/env_table.h"
 #include "render/scene_arrays.h"
+#include "render/settings.h"
 #include "scene/scene.h"
 #include "shared/types.h"
 
@@ -21,7 +22,9 @@ shader::Material toGpuMaterial(const Material& m);
 // Beer-Lambert coefficient per metre of a material's absorption colour and distance (0: clear).
 Vec3 absorptionCoefficient(const Material& m);
 
-SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options = {});
+// accel Wide also collapses a flat scene's BVH into the wide one (which renumbers the primitives)
+// and leaves the binary nodes off the GPU; the viewer and the other walks pass Bvh or Brute.
+SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options = {}, Accel accel = Accel::Bvh);
 
 // Bytes the arrays take once uploaded (what GpuScene::deviceBytes reports after the upload).
 std::size_t deviceBytes(const SceneArrays& arrays);

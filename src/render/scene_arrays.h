@@ -16,10 +16,13 @@ namespace penumbra {
 
 // The host-side arrays, kept separate from the upload so tests and tools can use them on the CPU.
 struct SceneArrays {
-    std::vector<shader::BvhNode> nodes;
-    // The compressed wide BVH over the same primitive order (bvh/wide.h), uploaded after `nodes`
-    // in the same buffer; empty for two-level scenes, which --accel wide walks as binary.
+    std::vector<shader::BvhNode> nodes;  // always on the host (picking, overlays, statistics)
+    // The compressed wide BVH over the same primitive order (bvh/wide.h), built only for --accel
+    // wide (buildSceneArrays' accel) and only for flat scenes: two-level scenes walk the binary tree.
     std::vector<shader::WideNode> wideNodes;
+    // Whether `nodes` go to the GPU. The node buffer holds them (if so), then the wide nodes: with
+    // the wide tree only its walk runs, so the binary nodes stay on the host (a third of the memory).
+    bool binaryNodesOnGpu = true;
     std::uint32_t wideDepth = 0;
     double wideMilliseconds = 0;  // collapsing the binary tree
     std::vector<shader::TriVerts> triVerts;      // leaf order; triangles and spheres (PN_TRI_SPHERE)

@@ -16,7 +16,7 @@ const char* const kFix = "use a smaller scene (fewer triangles, smaller textures
 }  // namespace
 
 std::vector<SceneBufferSize> sceneBufferSizes(const SceneArrays& a) {
-    return {{"BVH nodes", bytesOf(a.nodes) + bytesOf(a.wideNodes)},  // one buffer
+    return {{"BVH nodes", (a.binaryNodesOnGpu ? bytesOf(a.nodes) : 0) + bytesOf(a.wideNodes)},  // one buffer
             {"triangle positions", bytesOf(a.triVerts)},
             {"triangle attributes", bytesOf(a.triAttribs)},
             {"materials", bytesOf(a.materials)},

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstring>
+#include <optional>
 #include <vector>
 
 #include "gpu/commands.h"
@@ -19,7 +20,14 @@ struct GpuHits {
 inline GpuHits traceOnGpu(const gpu::Context& ctx, const SceneArrays& arrays, const std::vector<shader::RayDesc>& rays,
                           Accel accel) {
     gpu::Commands commands(ctx);
-    GpuScene scene(ctx, commands, arrays);
+    // Arrays built for --accel wide keep the binary nodes on the host; the other walks need them
+    // uploaded (before the wide ones, which the wide walk then finds after them).
+    std::optional<SceneArrays> withBinary;
+    if (accel != Accel::Wide && !arrays.binaryNodesOnGpu) {
+        withBinary = arrays;
+        withBinary->binaryNodesOnGpu = true;
+    }
+    GpuScene scene(ctx, commands, withBinary ? *withBinary : arrays);
     RenderSettings settings;
     settings.accel = accel;
     shader::FrameUniforms frame = makeFrameUniforms(Camera{}, Vec3{0}, settings, scene.lightNodeCount, scene.triCount, scene.nodeCount);

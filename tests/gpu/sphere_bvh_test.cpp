@@ -82,7 +82,7 @@ std::vector<shader::RayDesc> mixedRays(const Scene& scene, std::size_t count, st
 }
 
 void expectAgreement(const gpu::Context& ctx, const Scene& scene, std::size_t rayCount, std::uint32_t seed) {
-    SceneArrays arrays = buildSceneArrays(scene);
+    SceneArrays arrays = buildSceneArrays(scene, {}, Accel::Wide);  // both trees, one primitive order
     ASSERT_EQ(arrays.triVerts.size(), scene.triangleCount() + scene.spheres.size());
     auto rays = mixedRays(scene, rayCount, seed);
     GpuHits bvh = traceOnGpu(ctx, arrays, rays, Accel::Bvh);

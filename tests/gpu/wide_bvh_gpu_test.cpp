@@ -81,7 +81,7 @@ TEST_F(GpuTest, WideBvhMatchesBinaryAndBruteForceOnAWadMap) {
     options.map = "E1M1";
     const Scene scene = loadSceneFile(wad, options);
     ASSERT_FALSE(scene.sprites.empty()) << "the map should bring its things as sprites";
-    const SceneArrays arrays = buildSceneArrays(scene);
+    const SceneArrays arrays = buildSceneArrays(scene, {}, Accel::Wide);
     const std::vector<shader::RayDesc> rays = boxRays(scene.bounds(), 1500, 21);
     const Agreement a = expectGpuWalksAgree(*ctx, arrays, rays);
     EXPECT_GT(a.hits, rays.size() / 3) << "too few rays hit the map for the test to mean much";
@@ -121,7 +121,7 @@ Scene alphaStack() {
 
 TEST_F(GpuTest, WideBvhMatchesBinaryAndBruteForceThroughAlphaTestedHoles) {
     const Scene scene = alphaStack();
-    const SceneArrays arrays = buildSceneArrays(scene);
+    const SceneArrays arrays = buildSceneArrays(scene, {}, Accel::Wide);
     std::mt19937 rng(31);
     std::uniform_real_distribution<float> u(-2.0f, 2.0f);
     std::vector<shader::RayDesc> rays;
@@ -147,7 +147,7 @@ TEST_F(GpuTest, WideBvhMatchesBinaryAndBruteForceThroughAlphaTestedHoles) {
 // The comparisons above would pass if --accel wide silently ran the binary walk: with every
 // slot of the wide nodes emptied, the wide walk must find nothing where the binary walk hits.
 TEST_F(GpuTest, WideAccelReallyWalksTheWideNodes) {
-    SceneArrays arrays = buildSceneArrays(alphaStack());
+    SceneArrays arrays = buildSceneArrays(alphaStack(), {}, Accel::Wide);
     for (shader::WideNode& n : arrays.wideNodes) n.meta[0] = n.meta[1] = 0;
     std::vector<shader::RayDesc> rays;
     for (int i = 0; i < 64; ++i) {

@@ -52,9 +52,9 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
         Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
         expectMembers(spv, "BvhNode", {0, offsetof(BvhNode, firstOrRight), offsetof(BvhNode, boundsMax), offsetof(BvhNode, triCount)});
         expectMembers(spv, "TriVerts", {0, offsetof(TriVerts, flags), offsetof(TriVerts, e1), 28, offsetof(TriVerts, e2), 44});
-        expectMembers(spv, "TriAttribs", {0, offsetof(TriAttribs, materialId), offsetof(TriAttribs, n1), offsetof(TriAttribs, lightIndex),
-                                          offsetof(TriAttribs, n2), offsetof(TriAttribs, area), offsetof(TriAttribs, uv0),
-                                          offsetof(TriAttribs, uv1), offsetof(TriAttribs, uv2), offsetof(TriAttribs, pad)});
+        expectMembers(spv, "TriAttribs", {0, offsetof(TriAttribs, lightIndex), offsetof(TriAttribs, area), offsetof(TriAttribs, n0),
+                                          offsetof(TriAttribs, n1), offsetof(TriAttribs, n2), offsetof(TriAttribs, uv0),
+                                          offsetof(TriAttribs, uv1), offsetof(TriAttribs, uv2)});
         expectMembers(spv, "Material", {0, offsetof(Material, flags), offsetof(Material, emission), offsetof(Material, alphaCutoff),
                                         offsetof(Material, absorption), offsetof(Material, ior), offsetof(Material, metallic),
                                         offsetof(Material, roughness), offsetof(Material, transmission),
