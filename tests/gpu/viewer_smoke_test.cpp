@@ -1,5 +1,7 @@
 // `penumbra view` for real: a window under Xvfb, lavapipe presenting to it with validation on,
-// a few frames, a screenshot, exit 0. Skipped where xvfb-run is not installed.
+// a few frames, a screenshot, exit 0. Skipped where xvfb-run is not installed, except under CI
+// (CI set), where a missing xvfb-run fails as a missing Vulkan device does (scripts/setup.sh
+// installs xvfb).
 #include <stb/stb_image.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -21,6 +23,14 @@ namespace penumbra::test {
 namespace {
 
 namespace fs = std::filesystem;
+
+// In a test body: skips the test where xvfb-run is missing, fails it under CI.
+#define PN_REQUIRE_XVFB()                                                                              \
+    do {                                                                                               \
+        if (std::system("command -v xvfb-run > /dev/null 2>&1") == 0) break;                           \
+        if (std::getenv("CI")) FAIL() << "CI must have xvfb-run: install xvfb (scripts/setup.sh does)"; \
+        GTEST_SKIP() << "xvfb-run is not installed";                                                   \
+    } while (0)
 
 struct RunResult {
     int exitCode;
@@ -57,7 +67,7 @@ protected:
 };
 
 TEST_F(ViewerSmokeTest, OpensUnderXvfbRendersFramesAndWritesTheScreenshot) {
-    if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
+    PN_REQUIRE_XVFB();
     RunResult r = runPenumbra(dir, "view cornell --width 160 --height 120 --frames 4 --denoise --screenshot shot.png", true);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
@@ -84,7 +94,7 @@ TEST_F(ViewerSmokeTest, OpensUnderXvfbRendersFramesAndWritesTheScreenshot) {
 // calls) ends with one line and exit 1, never a crash: the frame in flight is waited for before
 // the UI's buffers go.
 TEST_F(ViewerSmokeTest, ALostDeviceInTheFrameLoopIsOneLineAndExitOne) {
-    if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
+    PN_REQUIRE_XVFB();
     for (int calls : {60, 200, 500}) {
         SCOPED_TRACE("lost after " + std::to_string(calls) + " calls");
         RunResult r = runPenumbra(dir, "view cornell --width 64 --height 64 --frames 30", true,
@@ -129,7 +139,7 @@ double wallDistance(const walk::WalkMap& map, Vec3 from, Vec3 dir) {
 // allows but not through the first wall, with the eye 41 units above the floor.
 TEST_F(ViewerSmokeTest, ScriptedWalkOnFreedoomE1M1StopsAtTheWallAtEyeHeight) {
     const char* wadPath = "/usr/share/games/doom/freedoom1.wad";
-    if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
+    PN_REQUIRE_XVFB();
     if (!fs::exists(wadPath)) {
         if (std::getenv("CI")) FAIL() << wadPath << " is missing (install freedoom)";
         GTEST_SKIP() << wadPath << " is not installed (apt install freedoom)";
