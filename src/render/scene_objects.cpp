@@ -6,6 +6,7 @@
 #include "bvh/two_level.h"
 #include "core/error.h"
 #include "render/frame_uniforms.h"
+#include "shared/camera.h"
 
 namespace penumbra {
 
@@ -15,11 +16,8 @@ Pick pickPixel(const SceneArrays& arrays, const Camera& camera, std::uint32_t wi
     rs.width = width;
     rs.height = height;
     const shader::FrameUniforms f = makeFrameUniforms(camera, Vec3{0}, rs, 0, 0, 0);
-    // cameraRayDirection in shaders/lib/camera.glsl at the pixel's centre.
-    const float px = std::floor(x) + 0.5f, py = std::floor(y) + 0.5f;
-    const float ndcX = 2.0f * px / float(width) - 1.0f, ndcY = 1.0f - 2.0f * py / float(height);
-    const Vec3 direction = normalize(f.cameraForward + f.cameraRight * (ndcX * f.aspect * f.tanHalfFovY) +
-                                     f.cameraUp * (ndcY * f.tanHalfFovY));
+    // The ray the shaders trace through the pixel's centre.
+    const Vec3 direction = shader::cameraRayDirection(f, Vec2{std::floor(x) + 0.5f, std::floor(y) + 0.5f});
     Ray ray{f.cameraPosition, direction};
     const bvh::Hit hit = arrays.instances.empty()
                              ? bvh::closestHit(arrays.nodes, arrays.triVerts, ray)
