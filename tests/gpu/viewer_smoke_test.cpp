@@ -14,7 +14,7 @@
 
 #include <gtest/gtest.h>
 
-#include "binary_path.h"
+#include "run_penumbra.h"
 #include "scene/io/wad/units.h"
 #include "scene/io/wad/wad_loader.h"
 #include "scene/walk/walk_physics.h"
@@ -32,26 +32,8 @@ namespace fs = std::filesystem;
         GTEST_SKIP() << "xvfb-run is not installed";                                                   \
     } while (0)
 
-struct RunResult {
-    int exitCode;
-    std::string err, out;
-};
-
-std::string readText(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-RunResult runPenumbra(const fs::path& dir, const std::string& args, bool underXvfb, const std::string& env = "") {
-    const char* device = std::getenv("PENUMBRA_TEST_DEVICE");
-    std::string cmd = "cd '" + dir.string() + "' && env PENUMBRA_VALIDATION=1 PENUMBRA_DEVICE=" +
-                      (device ? device : "llvmpipe") + " " + env + " " +
-                      (underXvfb ? "xvfb-run -a -s '-screen 0 640x480x24' " : "") + penumbraBinary() + " " + args +
-                      " 2> stderr.txt > stdout.txt";
-    int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(dir / "stderr.txt"), readText(dir / "stdout.txt")};
+RunResult runViewer(const fs::path& dir, const std::string& args, bool underXvfb, const std::string& env = "") {
+    return runPenumbra(dir, args, env, underXvfb ? "xvfb-run -a -s '-screen 0 640x480x24'" : "");
 }
 
 class ViewerSmokeTest : public ::testing::Test {
@@ -68,7 +50,7 @@ protected:
 
 TEST_F(ViewerSmokeTest, OpensUnderXvfbRendersFramesAndWritesTheScreenshot) {
     PN_REQUIRE_XVFB();
-    RunResult r = runPenumbra(dir, "view cornell --width 160 --height 120 --frames 4 --denoise --screenshot shot.png", true);
+    RunResult r = runViewer(dir, "view cornell --width 160 --height 120 --frames 4 --denoise --screenshot shot.png", true);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
     int w = 0, h = 0, channels = 0;
@@ -97,7 +79,7 @@ TEST_F(ViewerSmokeTest, ALostDeviceInTheFrameLoopIsOneLineAndExitOne) {
     PN_REQUIRE_XVFB();
     for (int calls : {60, 200, 500}) {
         SCOPED_TRACE("lost after " + std::to_string(calls) + " calls");
-        RunResult r = runPenumbra(dir, "view cornell --width 64 --height 64 --frames 30", true,
+        RunResult r = runViewer(dir, "view cornell --width 64 --height 64 --frames 30", true,
                                   "PENUMBRA_TEST_VK_FAILURE=VK_ERROR_DEVICE_LOST:" + std::to_string(calls));
         EXPECT_EQ(r.exitCode, 1) << r.err;
         EXPECT_EQ(r.err.rfind("penumbra: error: Vulkan call failed: ", 0), 0u) << r.err;
@@ -107,7 +89,7 @@ TEST_F(ViewerSmokeTest, ALostDeviceInTheFrameLoopIsOneLineAndExitOne) {
 }
 
 TEST_F(ViewerSmokeTest, ScreenshotWithoutFramesIsAUsageErrorBeforeAnyWindowOpens) {
-    RunResult r = runPenumbra(dir, "view cornell --screenshot shot.png", false);
+    RunResult r = runViewer(dir, "view cornell --screenshot shot.png", false);
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(r.err.rfind("penumbra: error: --screenshot needs --frames", 0), 0u) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -115,7 +97,7 @@ TEST_F(ViewerSmokeTest, ScreenshotWithoutFramesIsAUsageErrorBeforeAnyWindowOpens
 
 TEST_F(ViewerSmokeTest, AMalformedScriptIsOneLineNamingItsLineBeforeAnyWindowOpens) {
     std::ofstream(dir / "bad.txt") << "0 key W down\n\n0.5 key W sideways\n";
-    RunResult r = runPenumbra(dir, "view cornell --script bad.txt", false);
+    RunResult r = runViewer(dir, "view cornell --script bad.txt", false);
     EXPECT_EQ(r.exitCode, 1);  // a bad input file, not a bad command line
     EXPECT_EQ(r.err.rfind("penumbra: error: bad.txt:3: a key goes 'down' or 'up'", 0), 0u) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -147,7 +129,7 @@ TEST_F(ViewerSmokeTest, ScriptedWalkOnFreedoomE1M1StopsAtTheWallAtEyeHeight) {
     // docs/VIEWER.md: the mouse turns 0.003 radians per pixel; negative DX turns left.
     std::ofstream(dir / "walk.txt") << "0 mouse -523.59878 0\n0 key W down\n1 key W up\n";
     // 0.5 s per frame: the first two frames walk (script clock 0 and 0.5), the third sees W up.
-    RunResult r = runPenumbra(dir,
+    RunResult r = runViewer(dir,
                               std::string("view ") + wadPath +
                                   " --map E1M1 --width 64 --height 64 --frames 3 --fixed-dt 0.5 "
                                   "--script walk.txt --print-camera",
