@@ -6,12 +6,9 @@
 #include "lib/rng.glsl"
 #include "lib/sampling.glsl"
 
-vec3 cameraRayDirection(vec2 pixelPosition) {
-    vec2 ndc = vec2(2.0 * pixelPosition.x / float(frame.width) - 1.0,
-                    1.0 - 2.0 * pixelPosition.y / float(frame.height));
-    vec2 plane = ndc * vec2(frame.aspect * frame.tanHalfFovY, frame.tanHalfFovY);
-    return normalize(frame.cameraForward + plane.x * frame.cameraRight + plane.y * frame.cameraUp);
-}
+#include "shared/camera.h"
+
+vec3 cameraRayDirection(vec2 pixelPosition) { return cameraRayDirection(frame, pixelPosition); }
 
 // Shirley and Chiu's concentric map from the unit square to the unit disk: area preserving, so
 // the point is uniform on the disk, and neighbouring samples stay neighbours.

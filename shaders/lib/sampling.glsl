@@ -2,8 +2,7 @@
 #ifndef PN_SAMPLING_GLSL
 #define PN_SAMPLING_GLSL
 
-const float PN_PI = 3.14159265358979;
-const float PN_INV_PI = 0.31830988618379;
+#include "shared/constants.h"
 
 // An orthonormal basis around unit n (Duff et al., "Building an Orthonormal Basis, Revisited").
 void basisAround(vec3 n, out vec3 t, out vec3 b) {

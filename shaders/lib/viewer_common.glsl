@@ -22,11 +22,8 @@ vec3 rgbToYCoCg(vec3 c) {
 vec3 yCoCgToRgb(vec3 y) { return vec3(y.x + y.y - y.z, y.x + y.z, y.x - y.y - y.z); }
 
 // Direction of the ray through a continuous pixel position in the current camera.
-vec3 viewDirection(vec2 pixelPosition) {
-    vec2 ndc = vec2(2.0 * pixelPosition.x / float(frame.width) - 1.0, 1.0 - 2.0 * pixelPosition.y / float(frame.height));
-    vec2 plane = ndc * vec2(frame.aspect * frame.tanHalfFovY, frame.tanHalfFovY);
-    return normalize(frame.cameraForward + plane.x * frame.cameraRight + plane.y * frame.cameraUp);
-}
+#include "shared/camera.h"
+vec3 viewDirection(vec2 pixelPosition) { return cameraRayDirection(frame, pixelPosition); }
 
 // Continuous pixel position of camera-space offset d (view z > 0) in the previous camera, or a
 // position far outside the image when d is behind it.

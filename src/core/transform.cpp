@@ -1,4 +1,5 @@
 #include "core/transform.h"
+#include "shared/constants.h"
 
 #include <cmath>
 
@@ -58,7 +59,7 @@ Affine Affine::scaling(Vec3 s) {
 }
 
 Affine Affine::eulerDegrees(Vec3 d) {
-    const float k = 3.14159265358979f / 180.0f;
+    const float k = degreesToRadians(1.0f);
     auto rot = [](int axis, float radians) {
         Affine a;
         float c = std::cos(radians), s = std::sin(radians);

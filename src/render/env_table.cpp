@@ -1,11 +1,11 @@
 #include "render/env_table.h"
+#include "shared/constants.h"
 
 #include <cmath>
 #include <memory>
 
 namespace penumbra {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 double envTexelSolidAngle(std::uint32_t y, std::uint32_t width, std::uint32_t height) {

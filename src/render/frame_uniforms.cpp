@@ -1,4 +1,5 @@
 #include "render/frame_uniforms.h"
+#include "shared/constants.h"
 
 #include <cmath>
 
@@ -17,7 +18,7 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.cameraForward = forward;
     f.cameraRight = right;
     f.cameraUp = up;
-    f.tanHalfFovY = std::tan(camera.fovYDegrees * 0.5f * 3.14159265358979f / 180.0f);
+    f.tanHalfFovY = std::tan(degreesToRadians(camera.fovYDegrees * 0.5f));
     f.aspect = float(settings.width) / float(settings.height);
     f.width = settings.width;
     f.height = settings.height;
@@ -67,7 +68,7 @@ void setEnvironmentUniforms(shader::FrameUniforms& frame, const Environment& env
     frame.envWidth = width;
     frame.envHeight = height;
     frame.envIntensity = env.intensity;
-    frame.envRotation = env.rotationDegrees * 3.14159265358979f / 180.0f;
+    frame.envRotation = degreesToRadians(env.rotationDegrees);
 }
 
 void setPreviousCamera(shader::ViewerUniforms& viewer, const shader::FrameUniforms& previous) {

@@ -23,6 +23,7 @@
 #include "scene/environment.h"
 #include "scene/objects.h"
 #include "scene/instances.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 
@@ -137,7 +138,7 @@ float environmentLuminance(const Scene& scene) {
         const double solidAngle = envTexelSolidAngle(std::uint32_t(y), std::uint32_t(map.width), std::uint32_t(map.height));
         for (int x = 0; x < map.width; ++x) sum += luminance(map.radiance[std::size_t(y) * map.width + x]) * solidAngle;
     }
-    return float(sum / (4 * 3.14159265358979));
+    return float(sum / (4 * kPi));
 }
 
 // Every light, for the unified sampler; sets TriAttribs::lightIndex of emissive primitives.
@@ -242,7 +243,7 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
             out.triVerts[i] = bvh::toSphereVerts(sphere.center, sphere.radius);
             out.triAttribs[i] = {};
             out.triAttribs[i].materialId = sphere.material;
-            out.triAttribs[i].area = 4.0f * 3.14159265f * sphere.radius * sphere.radius;
+            out.triAttribs[i].area = 4.0f * kPiF * sphere.radius * sphere.radius;
             continue;
         }
         const SceneTriangle& t = tris[tree.primOrder[i]];

@@ -1,11 +1,11 @@
 #include "render/light_list.h"
 
 #include "shared/color.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 LightBounds triangleBounds(const EmissiveTriangle& t) {
     LightBounds b;
@@ -21,7 +21,7 @@ LightBounds triangleBounds(const EmissiveTriangle& t) {
 LightBounds sphereBounds(const shader::SphereLight& l) {
     const float lum = luminance(l.radiance);
     // Seen from any direction, a sphere is a disk of area pi r^2.
-    const float intensity = lum * kPi * l.radius * l.radius;
+    const float intensity = lum * kPiF * l.radius * l.radius;
     LightBounds b = l.cosOuter > -1.0f
                         ? spotLightBounds(l.center, l.spotDirection, intensity, l.cosInner, l.cosOuter)
                         : pointLightBounds(l.center, intensity);

@@ -5,11 +5,11 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 constexpr int kBins = 12;
 
 float safeAcos(float c) { return std::acos(std::clamp(c, -1.0f, 1.0f)); }
@@ -29,10 +29,10 @@ struct Cone {
 Cone unionOf(Cone a, Cone b) {
     const float thetaA = safeAcos(a.cosTheta), thetaB = safeAcos(b.cosTheta);
     const float thetaD = safeAcos(dot(a.axis, b.axis));
-    if (std::min(thetaD + thetaB, kPi) <= thetaA) return a;
-    if (std::min(thetaD + thetaA, kPi) <= thetaB) return b;
+    if (std::min(thetaD + thetaB, kPiF) <= thetaA) return a;
+    if (std::min(thetaD + thetaA, kPiF) <= thetaB) return b;
     const float thetaO = 0.5f * (thetaA + thetaD + thetaB);
-    if (thetaO >= kPi) return {a.axis, -1.0f};
+    if (thetaO >= kPiF) return {a.axis, -1.0f};
     const Vec3 turn = cross(a.axis, b.axis);
     if (!(dot(turn, turn) > 1e-12f)) return {a.axis, -1.0f};
     return {normalize(rotateAbout(a.axis, normalize(turn), thetaO - thetaA)), std::cos(thetaO)};
@@ -44,10 +44,10 @@ Cone unionOf(Cone a, Cone b) {
 float orientationCost(const LightBounds& b, float kr) {
     if (!(b.phi > 0)) return 0;
     const float thetaO = safeAcos(b.cosThetaO), thetaE = safeAcos(b.cosThetaE);
-    const float thetaW = std::min(thetaO + thetaE, kPi);
+    const float thetaW = std::min(thetaO + thetaE, kPiF);
     const float sinO = std::sqrt(std::max(0.0f, 1 - b.cosThetaO * b.cosThetaO));
-    const float mOmega = 2 * kPi * (1 - b.cosThetaO) +
-                         kPi / 2 * (2 * thetaW * sinO - std::cos(thetaO - 2 * thetaW) - 2 * thetaO * sinO + b.cosThetaO);
+    const float mOmega = 2 * kPiF * (1 - b.cosThetaO) +
+                         kPiF / 2 * (2 * thetaW * sinO - std::cos(thetaO - 2 * thetaW) - 2 * thetaO * sinO + b.cosThetaO);
     return b.phi * mOmega * kr * b.bounds.area();
 }
 

@@ -6,6 +6,7 @@
 #include "bvh/two_level.h"
 #include "core/error.h"
 #include "render/frame_uniforms.h"
+#include "shared/camera.h"
 
 namespace penumbra {
 
@@ -13,11 +14,7 @@ Vec3 pixelRayDirection(const Camera& camera, std::uint32_t width, std::uint32_t 
     RenderSettings rs;
     rs.width = width;
     rs.height = height;
-    const shader::FrameUniforms f = makeFrameUniforms(camera, Vec3{0}, rs, 0, 0, 0);
-    // cameraRayDirection in shaders/lib/camera.glsl.
-    const float ndcX = 2.0f * x / float(width) - 1.0f, ndcY = 1.0f - 2.0f * y / float(height);
-    return normalize(f.cameraForward + f.cameraRight * (ndcX * f.aspect * f.tanHalfFovY) +
-                     f.cameraUp * (ndcY * f.tanHalfFovY));
+    return shader::cameraRayDirection(makeFrameUniforms(camera, Vec3{0}, rs, 0, 0, 0), Vec2{x, y});
 }
 
 Pick pickPixel(const SceneArrays& arrays, const Camera& camera, std::uint32_t width, std::uint32_t height, float x,

@@ -1,11 +1,11 @@
 #include "render/sphere_lights.h"
+#include "shared/constants.h"
 
 #include <cmath>
 
 namespace penumbra {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Radiance of a sphere of radius r whose intensity is `intensity` in every direction: a sphere
 // seen from afar is a disk of area pi r^2.

@@ -11,11 +11,11 @@
 #include "gpu/buffer.h"
 #include "render/kernel_features.h"
 #include "scene/animation.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // v turned by `radians` about the unit axis (Rodrigues' formula).
 Vec3 rotateAbout(Vec3 v, Vec3 axis, double radians) {

@@ -4,10 +4,10 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 Vec3 environmentDirection(double u, double v) {

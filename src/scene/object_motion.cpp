@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "scene/node_animation.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
@@ -52,7 +53,7 @@ Affine motionTransform(const ScriptedMotion& motion, const Affine& placement, do
     if (motion.spinDegreesPerSecond != 0) {
         // The turn so far, wrapped to one revolution so long times keep their precision.
         const double degrees = std::fmod(double(motion.spinDegreesPerSecond) * seconds, 360.0);
-        const double half = degrees * 3.14159265358979323846 / 360.0;
+        const double half = degreesToRadians(degrees) / 2;
         const Vec3 axis = normalize(motion.spinAxis) * float(std::sin(half));
         spin = trsTransform(Vec3{0}, KeyValue{axis.x, axis.y, axis.z, float(std::cos(half))}, Vec3{1});
     }

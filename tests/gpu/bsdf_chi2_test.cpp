@@ -8,11 +8,11 @@
 #include "bsdf_kernel.h"
 #include "chi_square.h"
 #include "gpu_fixture.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 constexpr int kCosBins = 80, kPhiBins = 80;
 constexpr std::uint32_t kSamples = 250000;
 
@@ -42,8 +42,8 @@ std::vector<Chi2Case> chi2Cases() {
 int binOf(Vec3 w) {
     int ci = std::clamp(int((w.z + 1.0f) * 0.5f * kCosBins), 0, kCosBins - 1);
     float phi = std::atan2(w.y, w.x);
-    if (phi < 0) phi += 2 * kPi;
-    int pi = std::clamp(int(phi / (2 * kPi) * kPhiBins), 0, kPhiBins - 1);
+    if (phi < 0) phi += 2 * kPiF;
+    int pi = std::clamp(int(phi / (2 * kPiF) * kPhiBins), 0, kPhiBins - 1);
     return ci * kPhiBins + pi;
 }
 
@@ -67,7 +67,7 @@ std::vector<double> expectedCounts(BsdfKernel& kernel, Vec3 wo, bool entering, d
     for (int ci = 0; ci < kCosBins; ++ci)
         for (int pi = 0; pi < kPhiBins; ++pi)
             cells.push_back({ci * kPhiBins + pi, -1.0 + 2.0 * ci / kCosBins, -1.0 + 2.0 * (ci + 1) / kCosBins,
-                             2 * kPi * pi / kPhiBins, 2 * kPi * (pi + 1) / kPhiBins, 0});
+                             2 * kPiF * pi / kPhiBins, 2 * kPiF * (pi + 1) / kPhiBins, 0});
     std::vector<double> expected(kCosBins * kPhiBins, 0.0);
     while (!cells.empty()) {
         std::vector<shader::BsdfTestQuery> queries;

@@ -10,11 +10,11 @@
 #include "bsdf_kernel.h"
 #include "gpu_fixture.h"
 #include "render_helpers.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 struct EnergyCase {
     std::string name;
@@ -66,7 +66,7 @@ std::vector<shader::BsdfTestQuery> sphereQueries(Vec3 wo, bool entering, int str
     for (int i = 0; i < strata; ++i)
         for (int j = 0; j < strata; ++j)
             queries.push_back({wo, entering ? 1u : 0u,
-                               localDirection(-1.0f + 2.0f * (i + u(rng)) / strata, 2 * kPi * (j + u(rng)) / strata), 0});
+                               localDirection(-1.0f + 2.0f * (i + u(rng)) / strata, 2 * kPiF * (j + u(rng)) / strata), 0});
     return queries;
 }
 
@@ -99,7 +99,7 @@ TEST_P(BsdfEnergyTest, WhiteFurnaceReflectsAtMostOne) {
             auto evals = kernel.eval(queries);
             double bruteSum = 0, bruteSquares = 0;
             for (std::size_t i = 0; i < evals.size(); ++i) {
-                const double v = 4 * kPi * luminance(evals[i].value) * std::abs(queries[i].wi.z);
+                const double v = 4 * kPiF * luminance(evals[i].value) * std::abs(queries[i].wi.z);
                 bruteSum += v;
                 bruteSquares += v * v;
             }
@@ -124,7 +124,7 @@ TEST_P(BsdfEnergyTest, PdfIntegratesToTheShareOfNonDeltaSamples) {
         auto evals = kernel.eval(queries);
         double sum = 0, sumSquares = 0;
         for (const auto& e : evals) {
-            const double v = 4 * kPi * e.pdf;
+            const double v = 4 * kPiF * e.pdf;
             sum += v;
             sumSquares += v * v;
         }
@@ -154,8 +154,8 @@ TEST_P(BsdfEnergyTest, ReflectionIsReciprocal) {
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     std::vector<shader::BsdfTestQuery> queries;
     for (int i = 0; i < 2000; ++i) {
-        Vec3 a = localDirection(0.02f + 0.98f * u(rng), 2 * kPi * u(rng));
-        Vec3 b = localDirection(0.02f + 0.98f * u(rng), 2 * kPi * u(rng));
+        Vec3 a = localDirection(0.02f + 0.98f * u(rng), 2 * kPiF * u(rng));
+        Vec3 b = localDirection(0.02f + 0.98f * u(rng), 2 * kPiF * u(rng));
         queries.push_back({a, 1u, b, 0});
         queries.push_back({b, 1u, a, 0});
     }

@@ -12,6 +12,7 @@
 #include "render/renderer.h"
 #include "render_helpers.h"
 #include "scene/presets/mesh_builder.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 namespace {
@@ -19,7 +20,6 @@ namespace {
 constexpr std::uint32_t kWidth = 48, kHeight = 8, kSpp = 1024;
 constexpr float kFovY = 2.0f;    // degrees
 constexpr float kDepth = 2.0f;   // of the edge's plane
-constexpr double kPi = 3.14159265358979;
 
 Scene edgeScene(float aperture, float focus) {
     Scene s;

@@ -1,16 +1,15 @@
 // The environment flags as a user meets them: --env with a map (and its rotation and intensity
 // reaching the image), --env sky, and one-line errors with the documented exit codes.
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "binary_path.h"
 #include "gpu_fixture.h"
 #include "image/write.h"
 #include "scene/environment.h"
+#include "run_penumbra.h"
 
 namespace penumbra::test {
 namespace {
@@ -37,19 +36,7 @@ protected:
         GpuTest::TearDown();
     }
 
-    struct Result {
-        int exitCode;
-        std::string err;
-    };
-    Result run(const std::string& args) {
-        const char* device = std::getenv("PENUMBRA_TEST_DEVICE");
-        std::string cmd = "cd '" + dir.string() + "' && env PENUMBRA_DEVICE=" + (device ? device : "llvmpipe") +
-                          " PENUMBRA_VALIDATION=1 '" + penumbraBinary() + "' " + args + " >/dev/null 2>stderr.txt";
-        int status = std::system(cmd.c_str());
-        std::stringstream ss;
-        ss << std::ifstream(dir / "stderr.txt").rdbuf();
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
-    }
+    RunResult run(const std::string& args) { return runPenumbra(dir, args); }
 
     fs::path dir;
 };
@@ -63,7 +50,7 @@ TEST_F(EnvCliTest, MapRotationAndIntensityReachTheImage) {
         for (int x = 0; x < 3; ++x) map.pixels[std::size_t(y) * 3 + x] = colours[x];
     writeImage(dir / "cols.exr", map, {});
     for (float rotation : {0.0f, 90.0f, -90.0f}) {
-        Result r = run("render void.json --env cols.exr --env-intensity 3 --env-rotation " + std::to_string(rotation) +
+        RunResult r = run("render void.json --env cols.exr --env-intensity 3 --env-rotation " + std::to_string(rotation) +
                        " --spp 1 --width 4 --height 4 -o out.exr");
         ASSERT_EQ(r.exitCode, 0) << r.err;
         ImageRgb img = readExr(dir / "out.exr");
@@ -77,18 +64,18 @@ TEST_F(EnvCliTest, MapRotationAndIntensityReachTheImage) {
 }
 
 TEST_F(EnvCliTest, SkyRendersAndBadEnvironmentsAreOneLineErrors) {
-    Result ok = run("render void.json --env sky --spp 1 --width 4 --height 4 -o sky.exr");
+    RunResult ok = run("render void.json --env sky --spp 1 --width 4 --height 4 -o sky.exr");
     ASSERT_EQ(ok.exitCode, 0) << ok.err;
     ImageRgb img = readExr(dir / "sky.exr");
     EXPECT_FALSE(img.hasNonFinite());
     EXPECT_GT(luminance(img.mean()), 0.0f);
 
-    Result missing = run("render void.json --env nowhere.hdr -o x.png");
+    RunResult missing = run("render void.json --env nowhere.hdr -o x.png");
     EXPECT_EQ(missing.exitCode, 1);
     EXPECT_EQ(missing.err.rfind("penumbra: error: ", 0), 0u) << missing.err;
     EXPECT_NE(missing.err.find("nowhere.hdr"), std::string::npos) << missing.err;
     EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
-    Result negative = run("render void.json --env sky --env-intensity -1 -o x.png");
+    RunResult negative = run("render void.json --env sky --env-intensity -1 -o x.png");
     EXPECT_EQ(negative.exitCode, 2) << negative.err;
     EXPECT_FALSE(fs::exists(dir / "x.png"));
 }

@@ -19,9 +19,7 @@ namespace {
 
 constexpr float kAlbedo = 0.5f;
 
-struct Measured {
-    double mean, stderr;
-};
+using Measured = MeanEstimate;
 
 // Mean luminance over the image and its standard error, plus a per-pixel check that every
 // pixel agrees with `expected` (Sidak-corrected over the pixels). BSDF sampling alone finds a
@@ -43,19 +41,15 @@ Measured renderFloor(const gpu::Context& ctx, const Scene& scene, std::uint32_t 
     EXPECT_EQ(renderer.stats().invalidSamples, 0u);
     std::vector<Vec4> sums = renderer.accumulation();
     const double z = sidakZ(1e-3, sums.size());
-    double total = 0, variance = 0;
     int bad = 0;
     for (std::size_t i = 0; i < sums.size(); ++i) {
         PixelStats p = pixelStats(sums[i], spp);
-        total += p.mean;
-        variance += p.stderr * p.stderr;
         const double tolerance = z * p.stderr + 1e-4 * expected;
         if (misMode != PN_MIS_BSDF_ONLY && std::abs(p.mean - expected) > tolerance && bad++ < 3)
             ADD_FAILURE() << "mis mode " << misMode << ", pixel " << i << ": " << p.mean << ", expected " << expected
                           << " +- " << tolerance;
     }
-    const double n = double(sums.size());
-    return {total / n, std::sqrt(variance) / n};
+    return imageMean(sums, spp);
 }
 
 void expectAllModes(const gpu::Context& ctx, const Scene& scene, double expected, std::uint32_t spp = 256) {

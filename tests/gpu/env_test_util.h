@@ -8,10 +8,10 @@
 #include "render_helpers.h"
 #include "scene/presets/mesh_builder.h"
 #include "scene/scene.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // A small map with a bright spot (two texels 200x the rest) and a vertical and horizontal
 // gradient, coloured so that channels differ.

@@ -8,6 +8,7 @@
 #include "render/renderer.h"
 #include "render_helpers.h"
 #include "scene/presets/mesh_builder.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 namespace {
@@ -75,7 +76,7 @@ TEST_F(GpuTest, IndexMatchedAbsorberTransmitsTheAbsorptionColour) {
     EXPECT_EQ(r.stats().invalidSamples, 0u);
     ImageRgb img = r.image();
     // Off-axis rays cross the slab at angle theta and travel 1 / cos(theta) metres inside.
-    const double tanHalf = std::tan(4.0 * 3.14159265358979 / 180.0);
+    const double tanHalf = std::tan(degreesToRadians(4.0));
     for (int y = 0; y < 12; ++y)
         for (int x = 0; x < 12; ++x) {
             const double px = (2 * (x + 0.5) / 12 - 1) * tanHalf, py = (2 * (y + 0.5) / 12 - 1) * tanHalf;

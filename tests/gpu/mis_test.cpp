@@ -59,15 +59,11 @@ Estimate render(const gpu::Context& ctx, MisMode mode, Scene scene = misScene())
     renderer.render();
     EXPECT_EQ(renderer.stats().invalidSamples, 0u);
     std::vector<Vec4> sums = renderer.accumulation();
-    double total = 0, errorVariance = 0, sampleVariance = 0;
-    for (const Vec4& v : sums) {
-        PixelStats p = pixelStats(v, s.samplesPerPixel);
-        total += p.mean;
-        errorVariance += p.stderr * p.stderr;
-        sampleVariance += p.stderr * p.stderr * s.samplesPerPixel;
-    }
+    const MeanEstimate image = imageMean(sums, s.samplesPerPixel);
+    // The pixels' squared standard errors sum to (n stderr)^2; each is a per-sample variance
+    // over the sample count.
     const double n = double(sums.size());
-    return {total / n, std::sqrt(errorVariance) / n, sampleVariance / n};
+    return {image.mean, image.stderr, image.stderr * image.stderr * n * s.samplesPerPixel};
 }
 
 TEST_F(GpuTest, MisModesConvergeToTheSameImageAndBothHasTheLowestVariance) {

@@ -7,6 +7,7 @@
 #include "gpu_fixture.h"
 #include "render/renderer.h"
 #include "scene/presets/mesh_builder.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 namespace {
@@ -90,7 +91,7 @@ TEST_F(GpuTest, NormalMapTiltsShadingAlongTheUvTangentFrame) {
         // On this floor tangent = +x (u), image up = -z (-v), normal = +y: the world normal the
         // quantised texel encodes.
         Vec3 n{texel.decoded.x, texel.decoded.z, -texel.decoded.y};
-        const float expected = kAlbedo / 3.14159265f * kIrradiance * std::max(0.0f, dot(normalize(n), normalize(c.toLight)));
+        const float expected = kAlbedo / kPiF * kIrradiance * std::max(0.0f, dot(normalize(n), normalize(c.toLight)));
         EXPECT_NEAR(renderCentre(*ctx, mappedFloor(texel, c.toLight)), expected, 2e-3f * std::max(expected, 1.0f)) << c.what;
     }
 }

@@ -4,6 +4,7 @@
 #include "render/renderer.h"
 #include "render_helpers.h"
 #include "scene/presets/mesh_builder.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 namespace {
@@ -30,7 +31,7 @@ TEST_F(GpuTest, PointLightGivesAlbedoTimesIntensityOverPiDistanceSquared) {
     s.lights.push_back(l);
     Vec3 got = centre(*ctx, s);
     // L = (albedo / pi) * I * cos / d^2 with cos = 1, d = 2.
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], kAlbedo / 3.14159265f * 8.0f * l.color[c] / 4.0f, 1e-3f);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], kAlbedo / kPiF * 8.0f * l.color[c] / 4.0f, 1e-3f);
 }
 
 TEST_F(GpuTest, SpotLightIsDarkOutsideItsConeAndFullInside) {
@@ -43,7 +44,7 @@ TEST_F(GpuTest, SpotLightIsDarkOutsideItsConeAndFullInside) {
     l.innerConeRadians = 0.3f;
     l.outerConeRadians = 0.4f;
     s.lights.push_back(l);
-    EXPECT_NEAR(luminance(centre(*ctx, s)), kAlbedo / 3.14159265f * 8.0f / 4.0f, 1e-3f);
+    EXPECT_NEAR(luminance(centre(*ctx, s)), kAlbedo / kPiF * 8.0f / 4.0f, 1e-3f);
     s.lights[0].direction = normalize(Vec3{1, -1, 0});  // 45 degrees away: outside the cone
     EXPECT_NEAR(luminance(centre(*ctx, s)), 0.0f, 1e-6f);
 }
@@ -55,7 +56,7 @@ TEST_F(GpuTest, DirectionalLightGivesAlbedoTimesIrradianceOverPi) {
     l.direction = normalize(Vec3{0, -1, 1});  // 45 degrees: cos = 0.7071
     l.intensity = 2.0f;
     s.lights.push_back(l);
-    EXPECT_NEAR(luminance(centre(*ctx, s)), kAlbedo / 3.14159265f * 2.0f * 0.70710678f, 1e-3f);
+    EXPECT_NEAR(luminance(centre(*ctx, s)), kAlbedo / kPiF * 2.0f * 0.70710678f, 1e-3f);
 }
 
 TEST_F(GpuTest, PunctualAndTriangleLightsAddUp) {
@@ -81,14 +82,8 @@ TEST_F(GpuTest, PunctualAndTriangleLightsAddUp) {
         settings.seed = seed;
         Renderer r(*ctx, scene, settings);
         r.render();
-        double total = 0, variance = 0;
-        for (const Vec4& px : r.accumulation()) {
-            PixelStats p = pixelStats(px, settings.samplesPerPixel);
-            total += p.mean;
-            variance += p.stderr * p.stderr;
-        }
-        const double n = 16.0 * 16.0;
-        return std::pair{total / n, std::sqrt(variance) / n};
+        const MeanEstimate image = imageMean(r.accumulation(), settings.samplesPerPixel);
+        return std::pair{image.mean, image.stderr};
     };
     auto [a, sa] = meanOf(tri, 1);
     auto [b, sb] = meanOf(point, 2);

@@ -8,12 +8,12 @@
 #include "render/renderer.h"
 #include "render_helpers.h"
 #include "scene/presets/mesh_builder.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 namespace {
 
 constexpr float kAlbedo = 0.5f;
-constexpr double kPi = 3.14159265358979;
 
 // A large diffuse floor at y = 0; the camera looks at the origin from `eye` with a field of
 // view so narrow that every pixel sees (almost exactly) the origin.
@@ -24,10 +24,7 @@ void addSphereLight(Scene& s, Vec3 centre, float radius, Vec3 radiance) {
     s.spheres.push_back({centre, radius, lamp});
 }
 
-struct Estimate {
-    double mean;    // mean luminance over the image
-    double stderr;  // its standard error
-};
+using Estimate = MeanEstimate;  // the image's mean luminance and its standard error
 
 Estimate renderMean(const gpu::Context& ctx, const Scene& scene, std::uint32_t spp, std::uint32_t misMode,
                     std::uint32_t seed, std::uint32_t side = 8) {
@@ -45,14 +42,7 @@ Estimate renderMean(const gpu::Context& ctx, const Scene& scene, std::uint32_t s
     frame->misMode = misMode;
     r.render();
     EXPECT_EQ(r.stats().invalidSamples, 0u);
-    double total = 0, variance = 0;
-    for (const Vec4& px : r.accumulation()) {
-        PixelStats p = pixelStats(px, settings.samplesPerPixel);
-        total += p.mean;
-        variance += p.stderr * p.stderr;
-    }
-    const double n = double(side) * side;
-    return {total / n, std::sqrt(variance) / n};
+    return imageMean(r.accumulation(), settings.samplesPerPixel);
 }
 
 // Within z standard errors, plus 0.2% for the pixels' footprint around the origin and rounding.

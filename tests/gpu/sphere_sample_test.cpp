@@ -10,11 +10,11 @@
 #include "render/scene_pipeline.h"
 #include "render_helpers.h"
 #include "scene/presets/mesh_builder.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 namespace {
 
-constexpr double kPi = 3.14159265358979;
 
 struct LightSampleRecord {
     Vec3 wi;

@@ -5,6 +5,7 @@
 #include "render/interactive_renderer.h"
 #include "render/scene_objects.h"
 #include "gpu_fixture.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 namespace {
@@ -95,7 +96,7 @@ TEST_F(ViewerEditTest, MovingTheSphereMovesItInTheGBuffer) {
     // +x is the image's right. The centre projects to 1 / (4 tan(20 deg) aspect) in NDC; the
     // silhouette's centroid is that up to a fraction of a pixel at this size.
     const double aspect = double(kW) / kH;
-    const double expected = kW / 2.0 + 0.5 * kW / (4.0 * std::tan(20.0 * M_PI / 180.0) * aspect);
+    const double expected = kW / 2.0 + 0.5 * kW / (4.0 * std::tan(degreesToRadians(20.0)) * aspect);
     EXPECT_NEAR(x1, expected, 0.75) << "before " << x0;
     EXPECT_NEAR(double(after), double(before), 0.25 * before);  // same size, nearly: same depth
     EXPECT_EQ(pickPixel(viewer.sceneArrays(), scene.camera, kW, kH, kW / 2, kH / 2).object, 0u);  // the wall now

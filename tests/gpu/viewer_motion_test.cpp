@@ -9,6 +9,7 @@
 #include "render/interactive_renderer.h"
 #include "render/scene_objects.h"
 #include "gpu_fixture.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 namespace {
@@ -95,7 +96,7 @@ MotionRun runCrossing(gpu::Context& ctx, bool objectMotion) {
 bool onCard(const shader::GBufferTexel& g) { return g.surfaceId == 2u; }
 
 // Pixels per metre at the card's depth.
-float pixelsPerMetre() { return float(kH) / (2.0f * kCardDepth * std::tan(kFovY * 0.5f * 3.14159265f / 180.0f)); }
+float pixelsPerMetre() { return float(kH) / (2.0f * kCardDepth * std::tan(degreesToRadians(kFovY * 0.5f))); }
 
 TEST_F(ViewerMotionTest, MovingCardLeavesNoGhostAndKeepsItsHistory) {
     const MotionRun run = runCrossing(*ctx, true);

@@ -118,6 +118,7 @@ TEST(Duration, RefusesTheRestNamingTheFlag) {
 }  // namespace penumbra
 
 #include "scene/node_animation.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
@@ -125,7 +126,7 @@ namespace {
 // Rotation keys: halfway between 0 and 90 degrees about +y is 45 degrees, whichever sign the
 // second key's quaternion has (q and -q are one rotation; slerp takes the shorter arc).
 TEST(NodeAnimation, RotationsInterpolateAlongTheShorterArc) {
-    const float s = std::sin(0.25f * 3.14159265f), c = std::cos(0.25f * 3.14159265f);  // 90 deg about y
+    const float s = std::sin(0.25f * kPiF), c = std::cos(0.25f * kPiF);  // 90 deg about y
     for (float sign : {1.0f, -1.0f}) {
         Track track;
         track.times = {0.0f, 2.0f};

@@ -8,6 +8,7 @@
 #include "image/write.h"
 #include "scene/environment.h"
 #include "scene/io/scene_json.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
@@ -34,11 +35,11 @@ TEST(EnvJson, SkyMakesAMapAndASunThatFollowRotationAndIntensity) {
     ASSERT_TRUE(s.environment.map);
     ASSERT_TRUE(s.environment.sun);
     EXPECT_EQ(s.environment.intensity, 2.0f);
-    EXPECT_NEAR(s.environment.sun->angularRadius, 1.5f * 3.14159265f / 180, 1e-6f);
+    EXPECT_NEAR(s.environment.sun->angularRadius, degreesToRadians(1.5f), 1e-6f);
     std::vector<Light> lights = distantLights(s.environment);
     ASSERT_EQ(lights.size(), 1u);
     // Azimuth 0 is -z; turned 90 degrees about +y it is -x. The light travels away from the sun.
-    EXPECT_NEAR(lights[0].direction.x, std::cos(30 * 3.14159265f / 180), 1e-5f);
+    EXPECT_NEAR(lights[0].direction.x, std::cos(degreesToRadians(30.0f)), 1e-5f);
     EXPECT_NEAR(lights[0].direction.y, -0.5f, 1e-5f);
     EXPECT_NEAR(lights[0].direction.z, 0.0f, 1e-5f);
     EXPECT_NEAR(lights[0].intensity, 2 * s.environment.sun->intensity, 1e-4f);
@@ -57,7 +58,7 @@ TEST(EnvJson, FileIsRelativeToTheSceneFile) {
 
 TEST(EnvJson, AngularRadiusIsForDirectionalLightsOnly) {
     Scene s = parse(R"("lights": [{"type": "directional", "direction": [0,-1,0], "angular_radius": 10}])");
-    EXPECT_NEAR(s.lights[0].angularRadius, 10 * 3.14159265f / 180, 1e-6f);
+    EXPECT_NEAR(s.lights[0].angularRadius, degreesToRadians(10.0f), 1e-6f);
     EXPECT_NE(errorOf(R"("lights": [{"type": "point", "angular_radius": 1}])").find("lights[0].angular_radius"), std::string::npos);
     EXPECT_NE(errorOf(R"("lights": [{"type": "directional", "angular_radius": 60}])").find("between 0 and 45"), std::string::npos);
 }

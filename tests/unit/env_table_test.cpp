@@ -10,11 +10,11 @@
 #include "render/env_table.h"
 #include "scene/environment.h"
 #include "scene/io/env_sky.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 EnvironmentMap randomMap(int w, int h, unsigned seed) {
     EnvironmentMap m;

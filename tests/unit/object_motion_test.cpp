@@ -13,6 +13,7 @@
 #include "scene/io/scene_json.h"
 #include "scene/instances.h"
 #include "scene_json_test_util.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 namespace {
@@ -66,7 +67,7 @@ TEST(ObjectMotion, PathAndSpinPutTheObjectWhereTheMotionSays) {
     const Scene s = movingQuad();
     // Spin R(theta) about +y maps (1, 0, 0) to (cos theta, 0, -sin theta); then +2 up, then the path.
     auto expected = [](Vec3 offset, double degrees) {
-        const double r = degrees * 3.14159265358979323846 / 180.0;
+        const double r = degreesToRadians(degrees);
         return Vec3{float(std::cos(r)), 2.0f, float(-std::sin(r))} + offset;
     };
     expectNear(cornerAt(s, 0.0), expected({0, 0, 0}, 0));

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "scene/scene.h"
+#include "shared/constants.h"
 
 namespace penumbra::test {
 
@@ -13,14 +14,13 @@ namespace penumbra::test {
 // from outside, so the front faces and the normals point outward.
 inline Mesh smoothSphere(Vec3 center, float radius, int rings, int segments,
                          std::uint32_t material) {
-    constexpr float kPi = 3.14159265358979f;
     Mesh m;
     m.name = "smooth sphere";
     m.material = material;
     for (int i = 0; i <= rings; ++i) {
-        const float theta = kPi * float(i) / float(rings);
+        const float theta = kPiF * float(i) / float(rings);
         for (int j = 0; j <= segments; ++j) {
-            const float phi = 2 * kPi * float(j) / float(segments);
+            const float phi = 2 * kPiF * float(j) / float(segments);
             const Vec3 n{std::sin(theta) * std::cos(phi), std::cos(theta),
                          -std::sin(theta) * std::sin(phi)};
             m.positions.push_back(center + n * radius);

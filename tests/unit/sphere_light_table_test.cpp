@@ -7,11 +7,11 @@
 #include "bvh/sphere.h"
 #include "render/gpu_scene.h"
 #include "scene/presets/mesh_builder.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
 
-constexpr double kPi = 3.14159265358979;
 
 TEST(SphereLightTable, PointLightsWithRadiusBecomeSpheresAndEveryLightIsPickedByPower) {
     Scene s;

@@ -1,25 +1,21 @@
 // The swapchain side of the viewer: acquire, copy the display buffer into an RGBA8 image and blit
 // it (scaled, format-converted) onto the swapchain image, draw the UI over it, present. One frame
 // in flight: beginFrame waits for the previous one, so the renderer may rewrite its uniforms.
-// Out-of-date or suboptimal swapchains (resizes) are rebuilt transparently.
+// Out-of-date or suboptimal swapchains (resizes) are rebuilt transparently. The Vulkan objects
+// themselves (swapchain, images) come from src/gpu/.
 #pragma once
-
-#include <vector>
 
 #include "gpu/buffer.h"
 #include "gpu/context.h"
 #include "gpu/handle.h"
+#include "gpu/image.h"
+#include "gpu/swapchain.h"
 
 namespace penumbra::viewer {
 
 class Window;
 
-using ImageHandle = gpu::DeviceHandle<VkImage, vkDestroyImage>;
-using ImageViewHandle = gpu::DeviceHandle<VkImageView, vkDestroyImageView>;
-using SemaphoreHandle = gpu::DeviceHandle<VkSemaphore, vkDestroySemaphore>;
 using RenderPassHandle = gpu::DeviceHandle<VkRenderPass, vkDestroyRenderPass>;
-using FramebufferHandle = gpu::DeviceHandle<VkFramebuffer, vkDestroyFramebuffer>;
-using SwapchainHandle = gpu::DeviceHandle<VkSwapchainKHR, vkDestroySwapchainKHR>;
 
 class Presenter {
 public:
@@ -42,40 +38,30 @@ public:
     void waitIdle() const;
 
     VkRenderPass renderPass() const { return renderPass_.get(); }
-    std::uint32_t imageCount() const { return static_cast<std::uint32_t>(images_.size()); }
-    std::uint32_t minImageCount() const { return minImageCount_; }
-    VkFormat format() const { return format_; }
+    std::uint32_t imageCount() const { return swapchain_.imageCount(); }
+    std::uint32_t minImageCount() const { return swapchain_.minImageCount(); }
+    VkFormat format() const { return swapchain_.format(); }
 
 private:
     void createSwapchain();
-    void createDisplayImage(std::uint32_t width, std::uint32_t height);
     void transition(VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags srcAccess,
-                    VkAccessFlags dstAccess, VkPipelineStageFlags srcStage, VkPipelineStageFlags dstStage);
+                    VkAccessFlags dstAccess, VkPipelineStageFlags srcStage, VkPipelineStageFlags dstStage) {
+        gpu::transitionImage(cmd_, image, from, to, srcAccess, dstAccess, srcStage, dstStage);
+    }
 
     const gpu::Context& ctx_;
     const Window& window_;
     bool vsync_;
     bool rebuild_ = false;
-    VkFormat format_ = VK_FORMAT_UNDEFINED;
-    VkColorSpaceKHR colorSpace_ = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
-    VkExtent2D extent_{};
-    std::uint32_t minImageCount_ = 2;
-    SwapchainHandle swapchain_;
-    std::vector<VkImage> images_;
-    std::vector<ImageViewHandle> views_;
-    std::vector<FramebufferHandle> framebuffers_;
-    std::vector<SemaphoreHandle> renderDone_;  // one per swapchain image
+    gpu::Swapchain swapchain_;
     RenderPassHandle renderPass_;
-    SemaphoreHandle acquired_;
+    gpu::SemaphoreHandle acquired_;
     gpu::Fence frameFence_;
     gpu::CommandPool pool_;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     std::uint32_t imageIndex_ = 0;
     bool frameOpen_ = false;
-    // The RGBA8 image the display buffer is copied into before the blit.
-    ImageHandle displayImage_;
-    gpu::MemoryHandle displayMemory_;
-    std::uint32_t displayWidth_ = 0, displayHeight_ = 0;
+    gpu::Image displayImage_;  // the RGBA8 image the display buffer is copied into before the blit
 };
 
 }  // namespace penumbra::viewer

@@ -281,6 +281,168 @@ struct ShownFrame {
     }
 };
 
+// What the frame loop carries from one frame to the next, besides the scene and its settings.
+struct LoopState {
+    CameraController controller;
+    // Tile-map levels start in grid movement (G switches to free flight and back).
+    std::unique_ptr<GridWalker> grid;  // not std::optional: GCC 12 warns of it being maybe uninitialized
+    std::uint32_t selectedInstance = kNoObject;  // N cycles through the instances; a click picks one
+    InputState input;
+    PointerState pointer;
+    std::optional<ScriptPlayer> script;
+    EditState edit;
+    PanelState panel;
+    bool frameInFlight = false;  // a rendered frame was submitted and not yet finished
+    ShownFrame shown;            // what the display buffer holds
+    std::uint32_t framesRendered = 0;
+    std::string pendingScreenshot;
+    double fpsSmoothed = 0;
+    double animationClock = 0;  // seconds played: the moment animated textures show
+
+    LoopState(const Scene& scene, const ViewerOptions& options, const InteractiveRenderer& renderer)
+        : controller(makeController(scene, options.fly)) {
+        if (scene.tileGrid && !options.fly) grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
+        if (options.script) script.emplace(*options.script);
+        panel.sceneName = scene.name;
+        panel.vsync = options.vsync;
+        panel.playing = options.frames.has_value() || script.has_value();  // automation plays from the start
+        panel.triangles = scene.triangleCount();
+        panel.bvhNodes = renderer.sceneArrays().nodes.size();
+        panel.bvhDepth = bvh::treeDepth(renderer.sceneArrays().nodes);
+        panel.hasTorch = renderer.hasTorch();
+    }
+    Camera camera() const { return grid ? grid->camera() : controller.camera(); }
+};
+
+// G: grid movement on a tile-map level, or free flight from where the grid walker stands.
+void toggleGrid(LoopState& loop, const Scene& scene) {
+    if (loop.grid) {
+        loop.controller = CameraController(loop.grid->camera(), cameraSpeedFor(scene), scene.walkMap);
+        loop.controller.setWalking(false);
+        loop.grid.reset();
+        loop.panel.message = "free flight (G: grid movement)";
+    } else if (scene.tileGrid) {
+        loop.grid = std::make_unique<GridWalker>(*scene.tileGrid, loop.controller.camera());
+        loop.panel.message = "grid movement (G: free flight)";
+    } else {
+        loop.panel.message = "grid movement needs a tile-map level (the dungeon)";
+    }
+}
+
+// This frame's input (keys, pointer, script) moves the camera, the selected instance and the
+// animation clock.
+void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, const UiLayer& ui, GLFWwindow* w,
+                ViewSettings& settings, float step, bool automationDone) {
+    const bool advancing = loop.panel.playing && !automationDone;
+    if (loop.script && advancing) loop.script->playFrame(loop.input, step);
+    const bool resetAsked = loop.input.resetCamera || loop.panel.resetCamera;
+    handlePresses(loop.input, w, loop.pointer, loop.controller, loop.panel);
+    if (loop.grid && resetAsked)  // R: back to the start tile
+        loop.grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
+    if (loop.input.gridToggled) toggleGrid(loop, scene);
+    if (loop.input.nextInstance && !scene.instances.empty()) {
+        loop.selectedInstance = loop.selectedInstance + 1 < scene.instances.size() ? loop.selectedInstance + 1 : 0;
+        loop.panel.message = instanceName(scene, loop.selectedInstance) + ": drag it, or I/K J/L O/U move it, comma/period turn it";
+    }
+    const LeftButton left = trackPointer(w, loop.pointer, loop.input, ui.wantsMouse());
+    if (left.press) grabSelection(w, *left.press, loop.pointer, scene, renderer, loop.camera(), loop.selectedInstance);
+    if (left.click)
+        handleClick(w, *left.click, loop.pointer, scene, renderer, loop.controller, loop.camera(), settings, loop.edit,
+                    loop.selectedInstance, loop.panel);
+    // The selected instance moves with its keys, paused or playing; only the top level changes.
+    bool instancesMoved = !automationDone && moveSelectedInstance(scene, loop.selectedInstance,
+                                                                  objectInputFrom(loop.input), loop.camera(),
+                                                                  loop.controller.speed(), step);
+    // Paused, the camera stays where the shown frame was taken, and animated textures hold
+    // their frame; playing, they run at the game's rate in simulated time (--fixed-dt too).
+    if (advancing) {
+        if (loop.grid) loop.grid->update(cameraInputFrom(loop.input), step);
+        else loop.controller.update(cameraInputFrom(loop.input), step);
+        loop.animationClock += step;
+        settings.time = float(loop.animationClock);
+        // Animated instances (glTF animations, scene-file motions) follow the clock.
+        if (animatesGeometry(scene)) {
+            applyInstanceAnimations(scene, loop.animationClock);
+            instancesMoved = true;
+        }
+    }
+    // A grabbed instance follows the cursor, after the camera and the animations have moved.
+    if (!automationDone && dragSelection(w, loop.pointer, scene, loop.camera())) instancesMoved = true;
+    if (instancesMoved) {
+        renderer.setInstanceTransforms(scene);
+        loop.shown.valid = false;
+    }
+    endInputFrame(loop.input);
+}
+
+// The panel, and the edits it asks for.
+void drawUi(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, UiLayer& ui, ViewSettings& settings,
+            float dt) {
+    ui.newFrame();
+    PanelState& panel = loop.panel;
+    panel.cameraSpeed = loop.controller.speed();
+    panel.walking = loop.controller.walking();
+    panel.canWalk = loop.controller.canWalk();
+    panel.pointerCaptured = loop.pointer.captured;
+    if (dt > 0) loop.fpsSmoothed = loop.fpsSmoothed == 0 ? 1.0 / dt : 0.9 * loop.fpsSmoothed + 0.1 / dt;
+    panel.fps = loop.fpsSmoothed;
+    EditRequests requests;
+    if (panel.visible) ui.drawPanel(settings, panel, renderer.stats(), loop.edit, requests);
+    applyEdits(scene, renderer, settings, loop.edit, requests, loop.controller, panel);
+    if (requests.openScene) {  // the new scene's own movement mode, nothing selected
+        loop.grid.reset();
+        if (scene.tileGrid) loop.grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
+        loop.selectedInstance = kNoObject;
+        loop.pointer.drag.reset();
+    }
+    if (requests.materialChanged || requests.moveObject || requests.openScene) loop.shown.valid = false;
+}
+
+// Once the previous frame has finished, its timings and its display buffer are readable: a
+// screenshot asked for with it is written now.
+void finishShownFrame(LoopState& loop, const gpu::Context& ctx, InteractiveRenderer& renderer) {
+    if (!loop.frameInFlight) return;
+    renderer.finishFrame();
+    loop.frameInFlight = false;
+    if (loop.pendingScreenshot.empty()) return;
+    try {
+        writeScreenshot(ctx, renderer, loop.pendingScreenshot);
+        loop.panel.message = "saved " + loop.pendingScreenshot;
+        std::fprintf(stderr, "penumbra: screenshot %s\n", loop.pendingScreenshot.c_str());
+    } catch (const Error& e) {
+        loop.panel.message = e.what();
+        std::fprintf(stderr, "penumbra: error: %s\n", e.what());
+    }
+    loop.pendingScreenshot.clear();
+}
+
+// Playing renders every frame; paused renders one preview frame, again only when the camera, a
+// setting or the size changed (or for a screenshot), and shows it meanwhile.
+void renderOrShow(LoopState& loop, VkCommandBuffer cmd, InteractiveRenderer& renderer, Presenter& presenter,
+                  VkExtent2D framebuffer, const ViewSettings& settings, const ViewerOptions& options,
+                  bool automationDone) {
+    auto scaled = [&](std::uint32_t side) {
+        return std::max(1u, std::uint32_t(float(side) * std::clamp(settings.resolutionScale, 0.1f, 1.0f)));
+    };
+    const std::uint32_t rw = scaled(framebuffer.width), rh = scaled(framebuffer.height);
+    const Camera camera = loop.camera();
+    PanelState& panel = loop.panel;
+    if (!automationDone && (panel.playing || panel.screenshotRequested || !loop.shown.matches(camera, settings, rw, rh))) {
+        renderer.resize(rw, rh);
+        panel.renderWidth = renderer.width();
+        panel.renderHeight = renderer.height();
+        renderer.record(cmd, camera, settings);
+        loop.shown = ShownFrame{true, camera, settings, rw, rh};
+        loop.frameInFlight = true;
+        if (panel.playing) ++loop.framesRendered;
+        if (panel.screenshotRequested) loop.pendingScreenshot = defaultScreenshotPath();
+        if (options.frames && loop.framesRendered == *options.frames && !options.screenshot.empty())
+            loop.pendingScreenshot = options.screenshot;
+    }
+    presenter.blitDisplay(renderer.display(), renderer.width(), renderer.height());
+    panel.screenshotRequested = false;
+}
+
 }  // namespace
 
 DebugView parseDebugView(const std::string& name) {
@@ -324,173 +486,39 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     InteractiveRenderer renderer(ctx, scene, true);
     Presenter presenter(ctx, window, options.vsync);
     UiLayer ui(ctx, window.get(), presenter);
-
-    CameraController controller = makeController(scene, options.fly);
-    // Tile-map levels start in grid movement (G switches to free flight and back).
-    std::unique_ptr<GridWalker> grid;  // not std::optional: GCC 12 warns of it being maybe uninitialized
-    if (scene.tileGrid && !options.fly) grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
-    std::uint32_t selectedInstance = kNoObject;  // N cycles through the instances; a click picks one
-    InputState input;
-    installCallbacks(window.get(), input);
-    PointerState pointer;
-    std::optional<ScriptPlayer> script;
-    if (options.script) script.emplace(*options.script);
-
-    EditState edit;
-    PanelState panel;
-    panel.sceneName = scene.name;
-    panel.vsync = options.vsync;
-    panel.playing = options.frames.has_value() || script.has_value();  // automation plays from the start
-    panel.triangles = scene.triangleCount();
-    panel.bvhNodes = renderer.sceneArrays().nodes.size();
-    panel.bvhDepth = bvh::treeDepth(renderer.sceneArrays().nodes);
-    panel.hasTorch = renderer.hasTorch();
-
-    bool frameInFlight = false;  // a rendered frame was submitted and not yet finished
-    ShownFrame shown;            // what the display buffer holds
-    std::uint32_t framesRendered = 0;
-    std::string pendingScreenshot;
+    LoopState loop(scene, options, renderer);
+    installCallbacks(window.get(), loop.input);
     auto last = std::chrono::steady_clock::now();
-    double fpsSmoothed = 0;
-    double animationClock = 0;  // seconds played: the moment animated textures show
 
     while (!window.shouldClose()) {
         // Paused: sleep until something happens (no fan noise); playing: just poll.
-        if (panel.playing) glfwPollEvents();
+        if (loop.panel.playing) glfwPollEvents();
         else glfwWaitEventsTimeout(0.1);
         auto now = std::chrono::steady_clock::now();
-        float dt = std::min(std::chrono::duration<float>(now - last).count(), 0.25f);
+        const float dt = std::min(std::chrono::duration<float>(now - last).count(), 0.25f);
         last = now;
         const float step = options.fixedDt ? float(*options.fixedDt) : dt;  // simulated seconds this frame
-
-        GLFWwindow* w = window.get();
         // Automation: after the N-th frame nothing moves or renders; its frame finishes, then exit.
-        const bool automationDone = options.frames && framesRendered >= *options.frames;
-        const bool advancing = panel.playing && !automationDone;
-        if (script && advancing) script->playFrame(input, step);
-        const bool resetAsked = input.resetCamera || panel.resetCamera;
-        handlePresses(input, w, pointer, controller, panel);
-        if (grid && resetAsked) grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);  // R: back to the start tile
-        if (input.gridToggled) {
-            if (grid) {
-                controller = CameraController(grid->camera(), cameraSpeedFor(scene), scene.walkMap);
-                controller.setWalking(false);
-                grid.reset();
-                panel.message = "free flight (G: grid movement)";
-            } else if (scene.tileGrid) {
-                grid = std::make_unique<GridWalker>(*scene.tileGrid, controller.camera());
-                panel.message = "grid movement (G: free flight)";
-            } else {
-                panel.message = "grid movement needs a tile-map level (the dungeon)";
-            }
-        }
-        if (input.nextInstance && !scene.instances.empty()) {
-            selectedInstance = selectedInstance + 1 < scene.instances.size() ? selectedInstance + 1 : 0;
-            panel.message = instanceName(scene, selectedInstance) + ": drag it, or I/K J/L O/U move it, comma/period turn it";
-        }
-        const LeftButton left = trackPointer(w, pointer, input, ui.wantsMouse());
-        if (left.press)
-            grabSelection(w, *left.press, pointer, scene, renderer, grid ? grid->camera() : controller.camera(),
-                          selectedInstance);
-        if (left.click)
-            handleClick(w, *left.click, pointer, scene, renderer, controller, grid ? grid->camera() : controller.camera(),
-                        settings, edit, selectedInstance, panel);
-        // The selected instance moves with its keys, paused or playing; only the top level changes.
-        bool instancesMoved = !automationDone && moveSelectedInstance(scene, selectedInstance, objectInputFrom(input),
-                                                                      grid ? grid->camera() : controller.camera(),
-                                                                      controller.speed(), step);
-        // Paused, the camera stays where the shown frame was taken, and animated textures hold
-        // their frame; playing, they run at the game's rate in simulated time (--fixed-dt too).
-        if (advancing) {
-            if (grid) grid->update(cameraInputFrom(input), step);
-            else controller.update(cameraInputFrom(input), step);
-            animationClock += step;
-            settings.time = float(animationClock);
-            // Animated instances (glTF animations, scene-file motions) follow the clock.
-            if (animatesGeometry(scene)) {
-                applyInstanceAnimations(scene, animationClock);
-                instancesMoved = true;
-            }
-        }
-        // A grabbed instance follows the cursor, after the camera and the animations have moved.
-        if (!automationDone && dragSelection(w, pointer, scene, grid ? grid->camera() : controller.camera()))
-            instancesMoved = true;
-        if (instancesMoved) renderer.setInstanceTransforms(scene);
-        endInputFrame(input);
+        const bool automationDone = options.frames && loop.framesRendered >= *options.frames;
 
-        ui.newFrame();
-        panel.cameraSpeed = controller.speed();
-        panel.walking = controller.walking();
-        panel.canWalk = controller.canWalk();
-        panel.pointerCaptured = pointer.captured;
-        if (dt > 0) fpsSmoothed = fpsSmoothed == 0 ? 1.0 / dt : 0.9 * fpsSmoothed + 0.1 / dt;
-        panel.fps = fpsSmoothed;
-        EditRequests requests;
-        if (panel.visible) ui.drawPanel(settings, panel, renderer.stats(), edit, requests);
-        applyEdits(scene, renderer, settings, edit, requests, controller, panel);
-        if (requests.openScene) {  // the new scene's own movement mode, nothing selected
-            grid.reset();
-            if (scene.tileGrid) grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
-            selectedInstance = kNoObject;
-            pointer.drag.reset();
-        }
-        if (requests.materialChanged || requests.moveObject || requests.openScene || instancesMoved) shown.valid = false;
-        presenter.setVsync(panel.vsync);
-
+        applyInput(loop, scene, renderer, ui, window.get(), settings, step, automationDone);
+        drawUi(loop, scene, renderer, ui, settings, dt);
+        presenter.setVsync(loop.panel.vsync);
         if (!presenter.beginFrame()) {
             ImGui::EndFrame();
             continue;
         }
-        // The previous frame has finished: its timings and its display buffer are readable.
-        if (frameInFlight) {
-            renderer.finishFrame();
-            frameInFlight = false;
-            if (!pendingScreenshot.empty()) {
-                try {
-                    writeScreenshot(ctx, renderer, pendingScreenshot);
-                    panel.message = "saved " + pendingScreenshot;
-                    std::fprintf(stderr, "penumbra: screenshot %s\n", pendingScreenshot.c_str());
-                } catch (const Error& e) {
-                    panel.message = e.what();
-                    std::fprintf(stderr, "penumbra: error: %s\n", e.what());
-                }
-                pendingScreenshot.clear();
-            }
-        }
-        if (automationDone && !frameInFlight) window.requestClose();
-
+        finishShownFrame(loop, ctx, renderer);  // the previous frame has finished
+        if (automationDone && !loop.frameInFlight) window.requestClose();
         VkCommandBuffer cmd = presenter.commandBuffer();
-        const VkExtent2D fb = window.framebufferSize();
-        auto scaled = [&](std::uint32_t side) {
-            return std::max(1u, std::uint32_t(float(side) * std::clamp(settings.resolutionScale, 0.1f, 1.0f)));
-        };
-        const std::uint32_t rw = scaled(fb.width), rh = scaled(fb.height);
-        const Camera camera = grid ? grid->camera() : controller.camera();
-        // Playing renders every frame; paused renders one preview frame, again only when the
-        // camera, a setting or the size changed (or for a screenshot), and shows it meanwhile.
-        if (!automationDone && (panel.playing || panel.screenshotRequested || !shown.matches(camera, settings, rw, rh))) {
-            renderer.resize(rw, rh);
-            panel.renderWidth = renderer.width();
-            panel.renderHeight = renderer.height();
-            renderer.record(cmd, camera, settings);
-            presenter.blitDisplay(renderer.display(), renderer.width(), renderer.height());
-            shown = ShownFrame{true, camera, settings, rw, rh};
-            frameInFlight = true;
-            if (panel.playing) ++framesRendered;
-            if (panel.screenshotRequested) pendingScreenshot = defaultScreenshotPath();
-            if (options.frames && framesRendered == *options.frames && !options.screenshot.empty())
-                pendingScreenshot = options.screenshot;
-        } else {
-            presenter.blitDisplay(renderer.display(), renderer.width(), renderer.height());
-        }
-        panel.screenshotRequested = false;
+        renderOrShow(loop, cmd, renderer, presenter, window.framebufferSize(), settings, options, automationDone);
         presenter.beginUi();
         ui.render(cmd);
         presenter.endFrame();
     }
     presenter.waitIdle();
     if (options.printCamera) {
-        std::printf("%s\n", cameraLine(grid ? grid->camera() : controller.camera()).c_str());
+        std::printf("%s\n", cameraLine(loop.camera()).c_str());
         std::fflush(stdout);
     }
 }

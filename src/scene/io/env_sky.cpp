@@ -5,11 +5,11 @@
 
 #include "core/error.h"
 #include "scene/environment.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kUnitsPerLux = kPi * 1e-5;        // see makeSky
 constexpr double kExtraterrestrialLux = 128000.0;  // solar illuminance above the atmosphere
 

@@ -1,16 +1,13 @@
-// glTF 2.0 (.gltf, .glb, data URIs) through tinygltf (Debian's libtinygltf.so). tinygltf parses
-// JSON and loads buffers; we give it file-system callbacks (no shell expansion, no reads outside
-// the asset's folder, size limits) and an image callback that only keeps the encoded bytes, so
-// images are decoded later, once, by texture_io. Every index and byte range tinygltf hands back
-// is checked here before it is used: accessors, buffer views, nodes, meshes, materials,
-// textures, cameras, lights.
+// glTF 2.0 (.gltf, .glb, data URIs) through tinygltf (Debian's libtinygltf.so): the model is
+// read by gltf_model.cpp, and turned into a Scene here: materials and textures, the node
+// hierarchy (gltf_node.cpp: local transforms), cameras and lights, geometry (gltf_accessor.cpp:
+// checked accessor views), instancing and animations. Every index tinygltf hands back is checked
+// before it is used.
 #include "scene/io/gltf.h"
 
 #include <tiny_gltf.h>
 
-#include <array>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -21,168 +18,25 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "scene/face_check.h"
+#include "scene/io/gltf_accessor.h"
+#include "scene/io/gltf_model.h"
+#include "scene/io/gltf_node.h"
 #include "scene/io/normals.h"
 #include "scene/io/texture_io.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
 
-constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(2) << 30;  // tinygltf takes 32-bit lengths
-constexpr int kMaxJsonDepth = 200;           // tinygltf converts extras recursively
 constexpr std::size_t kMaxNodeDepth = 256;   // deeper node chains are refused
 constexpr std::size_t kMaxNodeVisits = std::size_t(1) << 20;
 constexpr std::size_t kMaxOutputVertices = std::size_t(1) << 27;  // over all instances
 constexpr std::size_t kMaxOutputIndices = std::size_t(3) << 27;
 
+using gltf::AccessorView;
+using gltf::clampName;
+using gltf::readAccessor;
 using tinygltf::Model;
-
-// ---- 4x4 matrices in doubles, column-major like glTF (m[col * 4 + row]) --------------------
-
-struct Mat4 {
-    std::array<double, 16> m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    double at(int row, int col) const { return m[std::size_t(col * 4 + row)]; }
-};
-
-Mat4 operator*(const Mat4& a, const Mat4& b) {
-    Mat4 r;
-    for (int c = 0; c < 4; ++c)
-        for (int rr = 0; rr < 4; ++rr) {
-            double s = 0;
-            for (int k = 0; k < 4; ++k) s += a.at(rr, k) * b.at(k, c);
-            r.m[std::size_t(c * 4 + rr)] = s;
-        }
-    return r;
-}
-
-Vec3 transformPoint(const Mat4& a, Vec3 p) {
-    return {float(a.at(0, 0) * p.x + a.at(0, 1) * p.y + a.at(0, 2) * p.z + a.at(0, 3)),
-            float(a.at(1, 0) * p.x + a.at(1, 1) * p.y + a.at(1, 2) * p.z + a.at(1, 3)),
-            float(a.at(2, 0) * p.x + a.at(2, 1) * p.y + a.at(2, 2) * p.z + a.at(2, 3))};
-}
-
-Vec3 transformDir(const Mat4& a, Vec3 d) {
-    return {float(a.at(0, 0) * d.x + a.at(0, 1) * d.y + a.at(0, 2) * d.z),
-            float(a.at(1, 0) * d.x + a.at(1, 1) * d.y + a.at(1, 2) * d.z),
-            float(a.at(2, 0) * d.x + a.at(2, 1) * d.y + a.at(2, 2) * d.z)};
-}
-
-double det3(const Mat4& a) {
-    return a.at(0, 0) * (a.at(1, 1) * a.at(2, 2) - a.at(1, 2) * a.at(2, 1)) -
-           a.at(0, 1) * (a.at(1, 0) * a.at(2, 2) - a.at(1, 2) * a.at(2, 0)) +
-           a.at(0, 2) * (a.at(1, 0) * a.at(2, 1) - a.at(1, 1) * a.at(2, 0));
-}
-
-// The cofactor matrix of the upper 3x3: the inverse transpose up to the factor 1/det, which
-// does not matter for normals that are normalised afterwards (its sign is fixed by the caller).
-std::array<double, 9> cofactor3(const Mat4& a) {
-    auto e = [&](int r, int c) { return a.at(r, c); };
-    return {e(1, 1) * e(2, 2) - e(1, 2) * e(2, 1), e(1, 2) * e(2, 0) - e(1, 0) * e(2, 2),
-            e(1, 0) * e(2, 1) - e(1, 1) * e(2, 0), e(0, 2) * e(2, 1) - e(0, 1) * e(2, 2),
-            e(0, 0) * e(2, 2) - e(0, 2) * e(2, 0), e(0, 1) * e(2, 0) - e(0, 0) * e(2, 1),
-            e(0, 1) * e(1, 2) - e(0, 2) * e(1, 1), e(0, 2) * e(1, 0) - e(0, 0) * e(1, 2),
-            e(0, 0) * e(1, 1) - e(0, 1) * e(1, 0)};  // row-major rows of cof(A)
-}
-
-// ---- tinygltf callbacks -----------------------------------------------------------------------
-
-struct FsContext {
-    std::string prefix;  // only files below this path are read
-};
-
-bool fileExists(const std::string& path, void* user) {
-    const auto* ctx = static_cast<const FsContext*>(user);
-    if (path.compare(0, ctx->prefix.size(), ctx->prefix) != 0) return false;  // e.g. tinygltf's "." fallback
-    std::error_code ec;
-    return std::filesystem::is_regular_file(path, ec);
-}
-
-std::string expandFilePath(const std::string& path, void*) { return path; }  // no wordexp
-
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
-    if (!fileExists(path, user)) {
-        if (err) *err += "not found";
-        return false;
-    }
-    std::error_code ec;
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    if (ec || size > kMaxFileBytes) {
-        if (err) *err += ec ? ec.message() : "larger than 2 GiB";
-        return false;
-    }
-    std::ifstream in(path, std::ios::binary);
-    out->resize(static_cast<std::size_t>(size));
-    if (!in || !in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
-        if (err) *err += "read error";
-        return false;
-    }
-    return true;
-}
-
-bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
-    if (err) *err += "writing is disabled";
-    return false;
-}
-
-// Keeps the encoded bytes (URI images); images in buffer views are read later, after their view
-// has been checked (tinygltf passes an unchecked pointer for those, so we must not touch it).
-bool keepImageBytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
-                    const unsigned char* bytes, int size, void*) {
-    image->as_is = true;
-    if (image->bufferView >= 0) return true;
-    if (bytes && size > 0) image->image.assign(bytes, bytes + size);
-    return true;
-}
-
-// Nesting depth of a JSON text (brackets outside strings); refuses stack-exhausting inputs early.
-int jsonDepth(std::string_view json) {
-    int depth = 0, maxDepth = 0;
-    bool inString = false, escape = false;
-    for (char c : json) {
-        if (inString) {
-            if (escape)
-                escape = false;
-            else if (c == '\\')
-                escape = true;
-            else if (c == '"')
-                inString = false;
-            continue;
-        }
-        if (c == '"') inString = true;
-        if (c == '[' || c == '{') maxDepth = std::max(maxDepth, ++depth);
-        if (c == ']' || c == '}') --depth;
-    }
-    return maxDepth;
-}
-
-std::uint32_t readU32(std::string_view b, std::size_t at) {
-    std::uint32_t v;
-    std::memcpy(&v, b.data() + at, 4);
-    return v;  // GLB is little-endian, as are our targets
-}
-
-std::string clampName(std::string s) {
-    if (s.size() > 80) s = s.substr(0, 77) + "...";
-    for (char& c : s)
-        if (static_cast<unsigned char>(c) < 32) c = '?';
-    return s;
-}
-
-std::string firstLines(const std::string& text, std::size_t maxLines) {
-    std::string out;
-    std::size_t pos = 0, lines = 0;
-    while (pos < text.size() && lines < maxLines) {
-        std::size_t end = text.find('\n', pos);
-        if (end == std::string::npos) end = text.size();
-        std::string line = clampName(text.substr(pos, end - pos));
-        if (!line.empty()) {
-            if (!out.empty()) out += "; ";
-            out += line;
-            ++lines;
-        }
-        pos = end + 1;
-    }
-    return out;
-}
 
 double extNumber(const tinygltf::ExtensionMap& ext, const char* name, const char* key, double fallback) {
     auto it = ext.find(name);
@@ -210,75 +64,6 @@ Vec3 extColor(const tinygltf::ExtensionMap& ext, const char* name, const char* k
     return c;
 }
 
-// ---- accessors ------------------------------------------------------------------------------
-
-struct AccessorView {
-    const unsigned char* data = nullptr;
-    std::size_t count = 0;
-    std::size_t stride = 0;
-    int componentType = 0;
-    int components = 0;
-    bool normalized = false;
-
-    double component(std::size_t i, int c) const {
-        const unsigned char* p = data + i * stride;
-        switch (componentType) {
-            case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-                float f;
-                std::memcpy(&f, p + 4 * c, 4);
-                return f;
-            }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-                std::uint32_t u;
-                std::memcpy(&u, p + 4 * c, 4);
-                return u;
-            }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-                std::uint16_t u;
-                std::memcpy(&u, p + 2 * c, 2);
-                return normalized ? u / 65535.0 : u;
-            }
-            case TINYGLTF_COMPONENT_TYPE_SHORT: {
-                std::int16_t s;
-                std::memcpy(&s, p + 2 * c, 2);
-                return normalized ? std::max(s / 32767.0, -1.0) : s;
-            }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-                const std::uint8_t u = p[c];
-                return normalized ? u / 255.0 : u;
-            }
-            case TINYGLTF_COMPONENT_TYPE_BYTE: {
-                std::int8_t s;
-                std::memcpy(&s, p + c, 1);
-                return normalized ? std::max(s / 127.0, -1.0) : s;
-            }
-        }
-        return 0;
-    }
-};
-
-int componentSize(int type) {
-    switch (type) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-        case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    }
-    return 0;
-}
-
-int componentCount(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return 1;
-        case TINYGLTF_TYPE_VEC2: return 2;
-        case TINYGLTF_TYPE_VEC3: return 3;
-        case TINYGLTF_TYPE_VEC4: return 4;
-    }
-    return 0;
-}
-
 class GltfImporter {
 public:
     GltfImporter(const Model& model, std::string name) : model_(model), name_(std::move(name)) {}
@@ -301,48 +86,6 @@ public:
     }
 
 private:
-    AccessorView accessor(int index, const std::string& where, int wantComponents) const {
-        const std::string here = where + ", accessor " + std::to_string(index);
-        if (index < 0 || std::size_t(index) >= model_.accessors.size())
-            throw Error(here + " does not exist (" + std::to_string(model_.accessors.size()) + " accessors)");
-        const tinygltf::Accessor& acc = model_.accessors[std::size_t(index)];
-        if (acc.sparse.isSparse) throw Error(here + ": sparse accessors are not supported");
-        AccessorView view;
-        view.components = componentCount(acc.type);
-        if (view.components != wantComponents)
-            throw Error(here + ": expected " + std::to_string(wantComponents) + " components per element");
-        const int size = componentSize(acc.componentType);
-        if (size == 0) throw Error(here + ": invalid componentType " + std::to_string(acc.componentType));
-        view.componentType = acc.componentType;
-        view.normalized = acc.normalized && acc.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT &&
-                          acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-        view.count = acc.count;
-        if (acc.count == 0) return view;
-        if (acc.bufferView < 0 || std::size_t(acc.bufferView) >= model_.bufferViews.size())
-            throw Error(here + ": bufferView " + std::to_string(acc.bufferView) + " does not exist");
-        const tinygltf::BufferView& bv = model_.bufferViews[std::size_t(acc.bufferView)];
-        const std::string bvWhere = here + ", bufferView " + std::to_string(acc.bufferView);
-        if (bv.buffer < 0 || std::size_t(bv.buffer) >= model_.buffers.size())
-            throw Error(bvWhere + ": buffer " + std::to_string(bv.buffer) + " does not exist");
-        const std::vector<unsigned char>& buf = model_.buffers[std::size_t(bv.buffer)].data;
-        if (bv.byteLength > buf.size() || bv.byteOffset > buf.size() - bv.byteLength)
-            throw Error(bvWhere + ": bytes " + std::to_string(bv.byteOffset) + "+" + std::to_string(bv.byteLength) +
-                        " lie outside buffer " + std::to_string(bv.buffer) + " (" + std::to_string(buf.size()) +
-                        " bytes)");
-        const std::size_t elem = std::size_t(size) * std::size_t(view.components);
-        view.stride = bv.byteStride ? bv.byteStride : elem;
-        if (view.stride < elem || view.stride > 252)
-            throw Error(bvWhere + ": byteStride " + std::to_string(bv.byteStride) + " is invalid for " +
-                        std::to_string(elem) + "-byte elements");
-        if (acc.byteOffset > bv.byteLength || bv.byteLength - acc.byteOffset < elem ||
-            (acc.count - 1) > (bv.byteLength - acc.byteOffset - elem) / view.stride)
-            throw Error(here + ": " + std::to_string(acc.count) + " elements from byte " +
-                        std::to_string(acc.byteOffset) + " do not fit in the " + std::to_string(bv.byteLength) +
-                        "-byte bufferView");
-        view.data = buf.data() + bv.byteOffset + acc.byteOffset;
-        return view;
-    }
-
     // ---- materials and textures ----
 
     std::uint32_t defaultMaterial() {
@@ -490,45 +233,6 @@ private:
 
     // ---- nodes ----
 
-    Mat4 localMatrix(const tinygltf::Node& n, const std::string& where) const {
-        auto finite = [&](const std::vector<double>& v) {
-            for (double d : v)
-                if (!std::isfinite(d)) throw Error(where + ": transform has a value that is not a finite number");
-        };
-        Mat4 local;
-        if (!n.matrix.empty()) {
-            if (n.matrix.size() != 16) throw Error(where + ": matrix must have 16 numbers");
-            finite(n.matrix);
-            std::copy(n.matrix.begin(), n.matrix.end(), local.m.begin());
-            return local;
-        }
-        if (!n.translation.empty() && n.translation.size() != 3) throw Error(where + ": translation must have 3 numbers");
-        if (!n.rotation.empty() && n.rotation.size() != 4) throw Error(where + ": rotation must have 4 numbers");
-        if (!n.scale.empty() && n.scale.size() != 3) throw Error(where + ": scale must have 3 numbers");
-        finite(n.translation);
-        finite(n.rotation);
-        finite(n.scale);
-        double x = 0, y = 0, z = 0, w = 1;
-        if (n.rotation.size() == 4) {
-            x = n.rotation[0], y = n.rotation[1], z = n.rotation[2], w = n.rotation[3];
-            const double len = std::sqrt(x * x + y * y + z * z + w * w);
-            if (len > 0 && std::isfinite(len)) x /= len, y /= len, z /= len, w /= len;
-            else x = y = z = 0, w = 1;
-        }
-        const double sx = n.scale.size() == 3 ? n.scale[0] : 1, sy = n.scale.size() == 3 ? n.scale[1] : 1,
-                     sz = n.scale.size() == 3 ? n.scale[2] : 1;
-        // R * S in columns, then T.
-        const double r[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
-                                {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
-                                {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
-        const double s[3] = {sx, sy, sz};
-        for (int c = 0; c < 3; ++c)
-            for (int rr = 0; rr < 3; ++rr) local.m[std::size_t(c * 4 + rr)] = r[rr][c] * s[c];
-        if (n.translation.size() == 3)
-            for (int k = 0; k < 3; ++k) local.m[std::size_t(12 + k)] = n.translation[std::size_t(k)];
-        return local;
-    }
-
     std::vector<int> roots() {
         std::vector<int> out;
         if (!model_.scenes.empty()) {
@@ -559,13 +263,13 @@ private:
     void traverse() {
         struct Frame {
             int node;
-            Mat4 world;
+            Affine world;
             std::size_t next = 0;  // next child to visit
         };
         std::vector<char> onPath(model_.nodes.size(), 0);
         std::vector<Frame> stack;
         std::size_t visits = 0;
-        auto enter = [&](int node, const Mat4& parent, int from) {
+        auto enter = [&](int node, const Affine& parent, int from) {
             if (node < 0 || std::size_t(node) >= model_.nodes.size())
                 throw Error((from < 0 ? name_ + ": scene" : nodeWhere(from)) + " refers to node " + std::to_string(node) +
                             ", which does not exist (" + std::to_string(model_.nodes.size()) + " nodes)");
@@ -578,7 +282,7 @@ private:
                             " nodes");
             const std::string where = nodeWhere(node);
             const tinygltf::Node& n = model_.nodes[std::size_t(node)];
-            Mat4 world = parent * localMatrix(n, where);
+            Affine world = parent * gltf::nodeTransform(n, where);
             onPath[std::size_t(node)] = 1;
             if (!animated_.empty() && n.mesh >= 0) {  // the node chain, for animated instances
                 path_.clear();
@@ -589,13 +293,13 @@ private:
             stack.push_back({node, world, 0});
         };
         for (int root : roots()) {
-            enter(root, Mat4{}, -1);
+            enter(root, Affine{}, -1);
             while (!stack.empty()) {
                 Frame& top = stack.back();
                 const tinygltf::Node& n = model_.nodes[std::size_t(top.node)];
                 if (top.next < n.children.size()) {
                     const int child = n.children[top.next++];
-                    const Mat4 world = top.world;  // `top` may move when the stack grows
+                    const Affine world = top.world;  // `top` may move when the stack grows
                     enter(child, world, top.node);
                 } else {
                     onPath[std::size_t(top.node)] = 0;
@@ -605,7 +309,7 @@ private:
         }
     }
 
-    void visitNode(int index, const tinygltf::Node& n, const Mat4& world, const std::string& where) {
+    void visitNode(int index, const tinygltf::Node& n, const Affine& world, const std::string& where) {
         if (n.mesh >= 0) {
             if (std::size_t(n.mesh) >= model_.meshes.size())
                 throw Error(where + ": mesh " + std::to_string(n.mesh) + " does not exist");
@@ -629,20 +333,20 @@ private:
         }
     }
 
-    void useCamera(const tinygltf::Camera& cam, const Mat4& world, const std::string& where) {
+    void useCamera(const tinygltf::Camera& cam, const Affine& world, const std::string& where) {
         if (cam.type != "perspective") {
             warnOnce("camera type '" + clampName(cam.type) + "' is not supported; only perspective cameras are used");
             return;
         }
         const double yfov = cam.perspective.yfov;
-        const Vec3 pos = transformPoint(world, {0, 0, 0});
-        const Vec3 forward = normalize(transformDir(world, {0, 0, -1}));
-        const Vec3 up = normalize(transformDir(world, {0, 1, 0}));
+        const Vec3 pos = world.point({0, 0, 0});
+        const Vec3 forward = normalize(world.vector({0, 0, -1}));
+        const Vec3 up = normalize(world.vector({0, 1, 0}));
         Camera c;
         c.position = pos;
         c.lookAt = pos + forward;
         c.up = up;
-        c.fovYDegrees = float(yfov * 180.0 / 3.14159265358979);
+        c.fovYDegrees = float(radiansToDegrees(yfov));
         if (!(yfov > 0 && c.fovYDegrees < 179.0f) || !isFinite(pos) || !isFinite(c.lookAt) || dot(forward, forward) == 0 ||
             length(cross(forward, up)) < 1e-4f) {
             logWarning(where + ": camera has an unusable transform or field of view; it is ignored");
@@ -652,7 +356,7 @@ private:
         cameraSet_ = true;
     }
 
-    void addLight(const tinygltf::Light& g, const Mat4& world, const std::string& where) {
+    void addLight(const tinygltf::Light& g, const Affine& world, const std::string& where) {
         Light l;
         l.name = g.name;
         if (g.type == "point")
@@ -663,8 +367,8 @@ private:
             l.type = LightType::Directional;
         else
             throw Error(where + ": light type '" + clampName(g.type) + "' is not point, spot or directional");
-        l.position = transformPoint(world, {0, 0, 0});
-        l.direction = normalize(transformDir(world, {0, 0, -1}));
+        l.position = world.point({0, 0, 0});
+        l.direction = normalize(world.vector({0, 0, -1}));
         if (g.color.size() == 3) l.color = {float(g.color[0]), float(g.color[1]), float(g.color[2])};
         l.intensity = float(g.intensity);
         l.range = float(g.range);
@@ -701,7 +405,7 @@ private:
             logWarning(where + ": no POSITION attribute; skipped");
             return primCache_.emplace(key, nullptr).first->second.get();
         }
-        const AccessorView pv = accessor(pos->second, where + " POSITION", 3);
+        const AccessorView pv = readAccessor(model_, pos->second, where + " POSITION", 3);
         if (pv.count >= std::numeric_limits<std::uint32_t>::max()) throw Error(where + ": too many vertices");
         out->positions.resize(pv.count);
         for (std::size_t i = 0; i < pv.count; ++i) {
@@ -712,7 +416,7 @@ private:
             out->positions[i] = v;
         }
         if (auto it = p.attributes.find("NORMAL"); it != p.attributes.end()) {
-            const AccessorView nv = accessor(it->second, where + " NORMAL", 3);
+            const AccessorView nv = readAccessor(model_, it->second, where + " NORMAL", 3);
             if (nv.count != pv.count) throw Error(where + ": NORMAL and POSITION counts differ");
             out->normals.resize(nv.count);
             for (std::size_t i = 0; i < nv.count; ++i) {
@@ -721,7 +425,7 @@ private:
             }
         }
         if (auto it = p.attributes.find("TEXCOORD_0"); it != p.attributes.end()) {
-            const AccessorView tv = accessor(it->second, where + " TEXCOORD_0", 2);
+            const AccessorView tv = readAccessor(model_, it->second, where + " TEXCOORD_0", 2);
             if (tv.count != pv.count) throw Error(where + ": TEXCOORD_0 and POSITION counts differ");
             out->uvs.resize(tv.count);
             for (std::size_t i = 0; i < tv.count; ++i) {
@@ -730,7 +434,7 @@ private:
             }
         }
         if (p.indices >= 0) {
-            const AccessorView iv = accessor(p.indices, where + " indices", 1);
+            const AccessorView iv = readAccessor(model_, p.indices, where + " indices", 1);
             if (iv.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
                 iv.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
                 iv.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
@@ -762,7 +466,7 @@ private:
         for (const PendingMesh& p : pending_) ++uses[p.mesh];
         std::map<int, std::uint32_t> prototypeOf;
         for (const PendingMesh& p : pending_) {
-            const Affine placement = toAffine(p.world);
+            const Affine placement = p.world;
             const float det = placement.determinant();
             const bool invertible = std::abs(det) > 1e-12f && std::isfinite(1.0f / det);
             const bool animated = !p.path.empty();
@@ -774,7 +478,7 @@ private:
             if (it == prototypeOf.end()) {
                 Prototype proto;
                 proto.name = model_.meshes[std::size_t(p.mesh)].name;
-                addMesh(p.node, p.mesh, Mat4{}, p.where, proto.meshes);
+                addMesh(p.node, p.mesh, Affine{}, p.where, proto.meshes);
                 const auto index = proto.meshes.empty() ? kNoPrototype : std::uint32_t(scene_.prototypes.size());
                 if (!proto.meshes.empty()) scene_.prototypes.push_back(std::move(proto));
                 it = prototypeOf.emplace(p.mesh, index).first;
@@ -827,8 +531,8 @@ private:
         else if (sampler.interpolation == "CUBICSPLINE") track.interpolation = KeyInterpolation::CubicSpline;
         else if (sampler.interpolation.empty() || sampler.interpolation == "LINEAR") track.interpolation = KeyInterpolation::Linear;
         else throw Error(where + ": unknown interpolation '" + clampName(sampler.interpolation) + "'");
-        const AccessorView in = accessor(sampler.input, where + " input", 1);
-        const AccessorView out = accessor(sampler.output, where + " output", components);
+        const AccessorView in = readAccessor(model_, sampler.input, where + " input", 1);
+        const AccessorView out = readAccessor(model_, sampler.output, where + " output", components);
         if (in.count == 0) throw Error(where + ": the sampler has no keys");
         for (std::size_t k = 0; k < in.count; ++k) track.times.push_back(float(in.component(k, 0)));
         for (std::size_t k = 0; k < out.count; ++k) {
@@ -847,7 +551,7 @@ private:
             NodeMotion m;
             const auto it = animated_.find(index);
             if (it == animated_.end()) {
-                m.fixed = toAffine(localMatrix(n, nodeWhere(index)));
+                m.fixed = gltf::nodeTransform(n, nodeWhere(index));
             } else {
                 m.trs = true;
                 if (n.translation.size() == 3) m.translation = {float(n.translation[0]), float(n.translation[1]), float(n.translation[2])};
@@ -863,14 +567,7 @@ private:
         return chain;
     }
 
-    static Affine toAffine(const Mat4& m) {
-        Affine a;
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 4; ++c) a.m[r][c] = float(m.at(r, c));
-        return a;
-    }
-
-    void addMesh(int node, int meshIndex, const Mat4& world, const std::string& where, std::vector<Mesh>& into) {
+    void addMesh(int node, int meshIndex, const Affine& world, const std::string& where, std::vector<Mesh>& into) {
         const tinygltf::Mesh& mesh = model_.meshes[std::size_t(meshIndex)];
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
             addPrimitive(node, meshIndex, int(p), world,
@@ -879,7 +576,7 @@ private:
                          into);
     }
 
-    void addPrimitive(int, int meshIndex, int primIndex, const Mat4& world, const std::string& where,
+    void addPrimitive(int, int meshIndex, int primIndex, const Affine& world, const std::string& where,
                       std::vector<Mesh>& into) {
         const tinygltf::Primitive& p = model_.meshes[std::size_t(meshIndex)].primitives[std::size_t(primIndex)];
         if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
@@ -908,21 +605,15 @@ private:
         m.material = materialIndex;
         m.positions.resize(local->positions.size());
         for (std::size_t i = 0; i < local->positions.size(); ++i) {
-            m.positions[i] = transformPoint(world, local->positions[i]);
+            m.positions[i] = world.point(local->positions[i]);
             if (!isFinite(m.positions[i]))
                 throw Error(where + ": vertex " + std::to_string(i) + " is not finite after the node transform");
         }
-        const double det = det3(world);
-        if (!local->normals.empty()) {
-            const std::array<double, 9> cof = cofactor3(world);
-            m.normals.resize(local->normals.size());
-            for (std::size_t i = 0; i < local->normals.size(); ++i) {
-                const Vec3 n = local->normals[i];
-                Vec3 t{float(cof[0] * n.x + cof[1] * n.y + cof[2] * n.z), float(cof[3] * n.x + cof[4] * n.y + cof[5] * n.z),
-                       float(cof[6] * n.x + cof[7] * n.y + cof[8] * n.z)};
-                t = normalize(det < 0 ? -t : t);  // cof = det * inverse transpose
-                m.normals[i] = isFinite(t) ? t : Vec3{};
-            }
+        const float det = world.determinant();
+        m.normals.resize(local->normals.size());
+        for (std::size_t i = 0; i < local->normals.size(); ++i) {
+            const Vec3 t = world.normal(local->normals[i]);
+            m.normals[i] = isFinite(t) ? t : Vec3{};
         }
         m.uvs = local->uvs;
         m.indices = local->indices;
@@ -936,7 +627,7 @@ private:
     struct PendingMesh {
         int node;
         int mesh;
-        Mat4 world;
+        Affine world;
         std::string where;
         std::vector<int> path;  // root to node, when a node on it is animated (else empty)
     };
@@ -962,42 +653,7 @@ private:
 }  // namespace
 
 Scene loadGltfFromMemory(std::string_view bytes, const std::filesystem::path& baseDir, const std::string& name) {
-    if (bytes.size() > kMaxFileBytes) throw Error(name + ": file is larger than 2 GiB");
-    const bool binary = bytes.size() >= 4 && bytes.substr(0, 4) == "glTF";
-    std::string_view json = bytes;
-    if (binary) {
-        if (bytes.size() < 20) throw Error(name + ": GLB file is truncated (no JSON chunk header)");
-        const std::uint32_t jsonLength = readU32(bytes, 12);
-        if (jsonLength > bytes.size() - 20) throw Error(name + ": GLB JSON chunk runs past the end of the file");
-        json = bytes.substr(20, jsonLength);
-    }
-    if (jsonDepth(json) > kMaxJsonDepth)
-        throw Error(name + ": JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-
-    std::string base = baseDir.empty() ? std::string(".") : baseDir.string();
-    FsContext fs{base.back() == '/' ? base : base + "/"};
-    tinygltf::TinyGLTF loader;
-    loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &fs});
-    loader.SetImageLoader(&keepImageBytes, nullptr);
-    tinygltf::Model model;
-    std::string err, warn;
-    bool ok = false;
-    try {
-        if (binary)
-            ok = loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                             static_cast<unsigned int>(bytes.size()), base);
-        else
-            ok = loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()),
-                                            base);
-    } catch (const std::exception& e) {
-        throw Error(name + ": invalid glTF: " + clampName(e.what()));
-    }
-    if (!ok) throw Error(name + ": invalid glTF: " + (err.empty() ? std::string("parse failed") : firstLines(err, 3)));
-    if (!warn.empty()) logWarning(name + ": " + firstLines(warn, 4));
-    for (const std::string& ext : model.extensionsRequired)
-        if (ext != "KHR_lights_punctual" && ext != "KHR_materials_emissive_strength" &&
-            ext != "KHR_materials_transmission" && ext != "KHR_materials_ior" && ext != "KHR_texture_transform")
-            logWarning(name + ": required extension " + clampName(ext) + " is not supported; the result may be wrong");
+    const tinygltf::Model model = gltf::parseModel(bytes, baseDir, name);
     return GltfImporter(model, name).run();
 }
 
@@ -1008,7 +664,7 @@ Scene loadGltf(const std::filesystem::path& path) {
                     (std::filesystem::exists(path, ec) ? "it is not a regular file" : "no such file"));
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (ec) throw Error("cannot read '" + path.string() + "': " + ec.message());
-    if (size > kMaxFileBytes) throw Error("'" + path.string() + "' is larger than 2 GiB");
+    if (size > gltf::kMaxFileBytes) throw Error("'" + path.string() + "' is larger than 2 GiB");
     std::ifstream in(path, std::ios::binary);
     std::string bytes(static_cast<std::size_t>(size), '\0');
     if (!in || !in.read(bytes.data(), static_cast<std::streamsize>(size))) throw Error("cannot read '" + path.string() + "'");

@@ -9,6 +9,7 @@
 
 #include "core/big_buffer.h"
 #include "core/parallel.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
@@ -24,7 +25,7 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 float fastAcos(float x) {
     const float a = std::fabs(x);
     const float r = std::sqrt(1.0f - a) * (1.5707288f + a * (-0.2121144f + a * (0.0742610f - 0.0187293f * a)));
-    return x < 0 ? 3.14159265f - r : r;
+    return x < 0 ? kPiF - r : r;
 }
 
 // Angle at vertex `a` of the triangle a-b-c, in radians; 0 for degenerate corners.
@@ -81,7 +82,7 @@ void generateCreaseNormals(Mesh& mesh, float creaseDegrees) {
         mesh.normals.clear();
         return;
     }
-    const float cosCrease = std::cos(creaseDegrees * 3.14159265f / 180.0f);
+    const float cosCrease = std::cos(degreesToRadians(creaseDegrees));
 
     // 1. Weld: vertices with bit-identical positions share a position id.
     std::vector<std::uint32_t> posId;
@@ -186,7 +187,7 @@ Camera cameraFittingBounds(const Aabb& bounds, float fovYDegrees) {
     const Vec3 center = bounds.center();
     float radius = 0.5f * length(bounds.extent());
     if (!(radius > 0) || !std::isfinite(radius)) radius = 1.0f;
-    const float distance = radius / std::sin(0.5f * fovYDegrees * 3.14159265f / 180.0f);
+    const float distance = radius / std::sin(degreesToRadians(0.5f * fovYDegrees));
     Camera fitted = camera;
     fitted.position = center + Vec3{0, 0, distance};
     fitted.lookAt = center;

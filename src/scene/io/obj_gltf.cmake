@@ -12,6 +12,9 @@ target_sources(penumbra_scene PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/obj.cpp
   ${CMAKE_CURRENT_LIST_DIR}/obj_parse.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_accessor.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_model.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_node.cpp
   ${CMAKE_CURRENT_LIST_DIR}/texture_io.cpp
   ${CMAKE_CURRENT_LIST_DIR}/normals.cpp)
 target_link_libraries(penumbra_scene PRIVATE

@@ -16,6 +16,7 @@
 #include "scene/io/load.h"
 #include "scene/merge.h"
 #include "scene/presets/presets.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
@@ -403,7 +404,7 @@ Light readLight(const Reader& r, const Json& j, const std::string& where) {
     if (j.contains("radius")) l.radius = r.number(j["radius"], where + ".radius", 0);
     if (j.contains("angular_radius")) {
         if (l.type != LightType::Directional) r.fail(where + ".angular_radius", "only directional lights have one");
-        l.angularRadius = r.number(j["angular_radius"], where + ".angular_radius", 0, 45) * 3.14159265f / 180.0f;
+        l.angularRadius = degreesToRadians(r.number(j["angular_radius"], where + ".angular_radius", 0, 45));
     }
     return l;
 }
@@ -622,7 +623,7 @@ std::string sceneToJson(const Scene& instanced) {
                                  {"direction", v3(l.direction)}, {"color", v3(l.color)}, {"intensity", l.intensity},
                                  {"range", l.range}, {"radius", l.radius}});
         if (l.type == LightType::Directional && l.angularRadius > 0)
-            doc["lights"].back()["angular_radius"] = l.angularRadius * 180.0f / 3.14159265f;
+            doc["lights"].back()["angular_radius"] = radiansToDegrees(l.angularRadius);
     }
     const Environment& env = scene.environment;
     if (env.map || env.intensity != 1.0f || env.rotationDegrees != 0.0f) {

@@ -11,6 +11,7 @@
 
 #include "scene/presets/mesh_builder.h"
 #include "scene/presets/presets.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
@@ -62,7 +63,7 @@ Scene makeCaffeine() {
 
     // The ring plane lies in the file's xy plane; tipping it 25 degrees back about x shows the
     // molecule a little from above, as if it rose from the cup.
-    const float tilt = -25.0f * 3.14159265f / 180.0f;
+    const float tilt = degreesToRadians(-25.0f);
     const float c = std::cos(tilt), s = std::sin(tilt);
     Vec3 mean{0};
     for (const Atom& a : kCaffeine) mean += Vec3{a.x, a.y, a.z};

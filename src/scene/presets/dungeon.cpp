@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "scene/presets/mesh_builder.h"
 #include "scene/presets/presets.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
@@ -87,7 +88,7 @@ void addMap(Scene& scene, std::uint32_t floorMat, std::uint32_t ceilingMat, std:
 // A ring of `sides` points at height y.
 void addRing(Mesh& m, int sides, float radius, float y) {
     for (int i = 0; i < sides; ++i) {
-        const float a = 2.0f * 3.14159265f * float(i) / float(sides);
+        const float a = 2.0f * kPiF * float(i) / float(sides);
         m.positions.push_back({radius * std::cos(a), y, radius * std::sin(a)});
     }
 }

@@ -14,6 +14,7 @@
 #include "scene/animation.h"
 #include "scene/instances.h"
 #include "scene/io/gltf.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
@@ -97,7 +98,7 @@ TEST_F(GltfScene, MirroredNodeFlipsWindingAndKeepsNormals) {
 // winding is reversed so that front faces stay outside.
 TEST(GltfLoader, NodeTransformsTurnNormalsByTheInverseTranspose) {
     const Vec3 axis = normalize(Vec3{1, 2, 3}), scale{0.5f, -2.0f, 1.5f}, translation{1, -2, 3};
-    const float half = 0.5f * 70.0f * 3.14159265f / 180.0f;
+    const float half = degreesToRadians(0.5f * 70.0f);
     const float x = axis.x * std::sin(half), y = axis.y * std::sin(half), z = axis.z * std::sin(half),
                 w = std::cos(half);
     const Vec3 r0{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)};
@@ -253,7 +254,7 @@ TEST_F(GltfScene, FirstCameraBecomesTheDefault) {
     expectNear(scene_->camera.position, {0, 0, 5});
     expectNear(scene_->camera.lookAt, {0, 0, 4});
     expectNear(scene_->camera.up, {0, 1, 0});
-    EXPECT_NEAR(scene_->camera.fovYDegrees, 0.5 * 180 / M_PI, 1e-3);
+    EXPECT_NEAR(scene_->camera.fovYDegrees, radiansToDegrees(0.5), 1e-3);
 }
 
 TEST(GltfLoader, SpecularExtensionTurnsTheCoatOff) {
@@ -284,7 +285,7 @@ TEST(GltfLoader, EmbeddedWithoutSceneUsesRootNodesAndFitsCamera) {
     validateCamera(c);
     expectNear(c.lookAt, {0.5f, 0.5f, 0});
     float radius = 0.5f * std::sqrt(2.0f);
-    EXPECT_NEAR(c.position.z, radius / std::sin(20 * M_PI / 180), 1e-4);
+    EXPECT_NEAR(c.position.z, radius / std::sin(degreesToRadians(20.0)), 1e-4);
     EXPECT_FLOAT_EQ(c.fovYDegrees, 40.0f);
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "scene/io/normals.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
@@ -11,7 +12,7 @@ namespace {
 // Two triangles sharing the edge (0,0,0)-(0,1,0), both facing roughly +Z.
 Mesh hinge(float degrees) {  // degrees between the two face normals
     Mesh m;
-    float a = degrees * 3.14159265f / 180.0f;
+    float a = degreesToRadians(degrees);
     m.positions = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {-std::cos(a), 0, std::sin(a)}};
     m.indices = {0, 2, 1, 0, 1, 3};
     return m;
@@ -54,7 +55,7 @@ TEST(FitCamera, SphereFitsInFov) {
     box.grow({1, 1, 1});
     Camera c = cameraFittingBounds(box, 40.0f);
     EXPECT_EQ(c.lookAt, Vec3(0, 0, 0));
-    EXPECT_NEAR(c.position.z, std::sqrt(3.0f) / std::sin(20.0f * 3.14159265f / 180.0f), 1e-4f);
+    EXPECT_NEAR(c.position.z, std::sqrt(3.0f) / std::sin(degreesToRadians(20.0f)), 1e-4f);
     Camera empty = cameraFittingBounds(Aabb{}, 40.0f);
     EXPECT_TRUE(isFinite(empty.position));
 }

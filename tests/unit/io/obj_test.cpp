@@ -11,6 +11,7 @@
 #include "io_test_util.h"
 #include "scene/face_check.h"
 #include "scene/io/obj.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
@@ -127,7 +128,7 @@ TEST(ObjLoader, SmoothSphereKeepsSharedVertices) {
     ++count;
     for (int r = 1; r < rings; ++r)
         for (int s = 0; s < segments; ++s) {
-            double th = M_PI * r / rings, ph = 2 * M_PI * s / segments;
+            double th = kPi * r / rings, ph = 2 * kPi * s / segments;
             obj << "v " << std::sin(th) * std::cos(ph) << " " << std::cos(th) << " " << -std::sin(th) * std::sin(ph) << "\n";
             ++count;
         }
@@ -252,7 +253,7 @@ TEST(ObjLoader, HugePolygonIsRefusedOrTriangulated) {
     std::ostringstream obj;
     const int n = 300;
     for (int i = 0; i < n; ++i)
-        obj << "v " << std::cos(2 * M_PI * i / n) << " " << std::sin(2 * M_PI * i / n) << " 0\n";
+        obj << "v " << std::cos(2 * kPi * i / n) << " " << std::sin(2 * kPi * i / n) << " 0\n";
     obj << "f";
     for (int i = 1; i <= n; ++i) obj << " " << i;
     obj << "\n";

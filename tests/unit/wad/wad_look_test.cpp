@@ -16,6 +16,7 @@
 #include "shared/animation.h"
 #include "shared/color.h"
 #include "wad_builder.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
@@ -153,8 +154,8 @@ std::pair<int, int> shownTexel(const EnvironmentMap& map, Vec3 direction) {
 }
 
 Vec3 doomDirection(double angleDegrees, double elevationDegrees) {
-    const double a = angleDegrees * 3.14159265358979 / 180,
-                 e = elevationDegrees * 3.14159265358979 / 180;
+    const double a = degreesToRadians(angleDegrees),
+                 e = degreesToRadians(elevationDegrees);
     // Doom (x, y) is our (x, -z).
     return Vec3{float(std::cos(e) * std::cos(a)), float(std::sin(e)),
                 float(-std::cos(e) * std::sin(a))};
@@ -172,10 +173,10 @@ TEST(WadSky, MapWrapsTheSkyFourTimesWithRowHundredOnTheHorizon) {
     EXPECT_EQ(shownTexel(map, doomDirection(200.1, 0.1)).first, int(200.1 / 360 * 1024) % 256);
     // Row: 100 - 160 tan(elevation), so just above the horizon row 99, and 20 degrees up row 41.
     EXPECT_EQ(shownTexel(map, doomDirection(10, 0.2)).second, 99);
-    const int row20 = int(std::floor(100 - 160 * std::tan(20 * 3.14159265358979 / 180)));
+    const int row20 = int(std::floor(100 - 160 * std::tan(degreesToRadians(20.0))));
     EXPECT_NEAR(shownTexel(map, doomDirection(10, 20)).second, row20,
                 1);  // the map's rows are 0.35 degrees
-    const int rowBelow = int(std::floor(100 + 160 * std::tan(5 * 3.14159265358979 / 180)));
+    const int rowBelow = int(std::floor(100 + 160 * std::tan(degreesToRadians(5.0))));
     EXPECT_NEAR(shownTexel(map, doomDirection(10, -5)).second, rowBelow, 1);
     // Straight up: the mean of the top 4 rows (rows 0-3: green 1.5 on average, decoded first).
     Environment env;

@@ -7,11 +7,11 @@
 
 #include "scene/environment.h"
 #include "shared/color.h"
+#include "shared/constants.h"
 
 namespace penumbra::wad {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kHorizonRow = 100.0;   // R_InitSkyMap: skytexturemid = 100 (rows)
 constexpr double kFocalPixels = 160.0;  // half of the 320-pixel view, which spans 90 degrees
 constexpr int kSkyColumns = 1024;       // angle >> ANGLETOSKYSHIFT (22): 1024 columns per turn

@@ -8,6 +8,7 @@
 #include "scene/io/wad/sprites.h"
 #include "scene/io/wad/things.h"
 #include "scene/io/wad/units.h"
+#include "shared/constants.h"
 
 namespace penumbra::wad {
 namespace {
@@ -122,7 +123,7 @@ private:
             ++skippedSprites_;
             return;
         }
-        const double angle = double(t.angle) * (3.14159265358979323846 / 180.0);
+        const double angle = degreesToRadians(double(t.angle));
         Sprite s;
         s.position = toWorld(t.x, z, t.y);
         s.facing = Vec3{float(std::cos(angle)), 0.0f, float(-std::sin(angle))};

@@ -25,6 +25,7 @@
 #include "scene/io/wad/units.h"
 #include "scene/walk/wad_walk_map.h"
 #include "scene/walk/walk_physics.h"
+#include "shared/constants.h"
 
 namespace penumbra {
 namespace {
@@ -324,7 +325,7 @@ private:
         cam.up = Vec3(0, 1, 0);
         for (const Thing& t : map_.things) {
             if (t.type != 1) continue;
-            double angle = double(t.angle) * (3.14159265358979323846 / 180.0);
+            double angle = degreesToRadians(double(t.angle));
             cam.position = toWorld(t.x, floorAt(t.x, t.y) + kEyeHeight, t.y);
             cam.lookAt = cam.position + Vec3(float(std::cos(angle)), 0.0f, float(-std::sin(angle)));
             return;
