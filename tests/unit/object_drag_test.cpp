@@ -8,6 +8,7 @@
 
 #include "app/viewer/object_drag.h"
 #include "scene/objects.h"
+#include "shared/constants.h"
 
 namespace penumbra::viewer {
 namespace {
@@ -24,7 +25,7 @@ Projected project(const Camera& c, Vec3 p) {
     const Vec3 up = cross(right, forward);
     const Vec3 v = p - c.position;
     const float depth = dot(v, forward);
-    const float tanHalf = std::tan(c.fovYDegrees * 0.5f * 3.14159265358979f / 180.0f);
+    const float tanHalf = std::tan(degreesToRadians(c.fovYDegrees * 0.5f));
     const float aspect = float(kWidth) / float(kHeight);
     const float ndcX = dot(v, right) / depth / (aspect * tanHalf), ndcY = dot(v, up) / depth / tanHalf;
     return {(ndcX + 1) * 0.5f * float(kWidth), (1 - ndcY) * 0.5f * float(kHeight), depth};
@@ -42,7 +43,7 @@ Camera lookingDownZ() {
 TEST(ObjectDrag, DraggingNPixelsMovesByNPixelWidthsAtTheObjectsDepth) {
     const Camera c = lookingDownZ();
     const Vec3 grabbed{1, 2, 13};  // on the axis, 10 m ahead: under the image centre
-    const float pixel = 2.0f * 10.0f * std::tan(30.0f * 3.14159265358979f / 180.0f) / float(kHeight);
+    const float pixel = 2.0f * 10.0f * std::tan(degreesToRadians(30.0f)) / float(kHeight);
     const Vec3 right = dragOffset(c, kWidth, kHeight, grabbed, kWidth / 2.0f + 25, kHeight / 2.0f);
     // Right of a camera looking down +z with +y up is -x.
     EXPECT_NEAR(right.x, -25 * pixel, 1e-4f);
