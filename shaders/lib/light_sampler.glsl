@@ -84,7 +84,12 @@ float treeNodeImportance(LightTreeNode node, vec3 p, vec3 n) {
                                           node.cosThetaE, (node.childOrLight & PN_LIGHT_NODE_TWO_SIDED) != 0u), p, n);
 }
 
-bool hasLightTree() { return frame.lightNodeCount > 0u; }
+// The light tree's root and its importance at p; 0 (and no root) when the scene has no tree.
+float lightTreeRoot(vec3 p, vec3 n, out LightTreeNode root) {
+    if (frame.lightNodeCount == 0u) return 0.0;
+    root = lightTree[0];
+    return treeNodeImportance(root, p, n);
+}
 
 // A directional light's illuminance times the best cosine at the surface over its disk.
 float directionalImportance(PunctualLight l, vec3 n) {
@@ -136,11 +141,7 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
         return LightPick(k, 1.0 / float(frame.lightRefCount));
     }
     LightTreeNode node;
-    float tree = 0.0;
-    if (hasLightTree()) {
-        node = lightTree[0];
-        tree = treeNodeImportance(node, p, n);
-    }
+    float tree = lightTreeRoot(p, n, node);
     float total = totalLightImportance(tree, p, n);
     if (!(total > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
     float x = u * total;
@@ -175,11 +176,7 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
 float lightPickPmf(uint ref, vec3 p, vec3 n) {
     if (frame.lightPickUniform != 0u) return 1.0 / float(frame.lightRefCount);
     LightTreeNode node;
-    float tree = 0.0;
-    if (hasLightTree()) {
-        node = lightTree[0];
-        tree = treeNodeImportance(node, p, n);
-    }
+    float tree = lightTreeRoot(p, n, node);
     float total = totalLightImportance(tree, p, n);
     if (!(total > 0.0)) return 0.0;
     if (ref < frame.topLightCount) return topLightImportance(ref, p, n) / total;
