@@ -20,8 +20,8 @@ void main() {
     if (i < liveRays()) {
         slot = queueIn(i);
         Hit hit = loadHit(slot);
-        Path path = loadPathForShading(slot, hit);
         uvec3 p = slotPixel(slot);
+        Path path = loadPathForShading(slot, p, hit);
         alive = extendPath(path, hit, p.y * frame.width + p.x, shadow);
         // The path's own light (emission, an escape) is rare: read-modify-write only then.
         if (path.result != vec3(0.0)) addToPathResult(slot, path.result);

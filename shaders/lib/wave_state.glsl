@@ -27,6 +27,8 @@ uvec3 slotPixel(uint slot) {
     uint local = slot % tilePixels;
     return uvec3(push.tileX + local % push.tileWidth, push.tileY + local / push.tileWidth, slot / tilePixels);
 }
+// The sample index of the path in a slot whose slotPixel is p (what startPath seeds it with).
+uint pathSampleIndex(uvec3 p) { return push.passIndex * frame.samplesPerPass + p.z; }
 uint slotOf(uvec2 pixel, uint sampleInPass) {
     return sampleInPass * push.tileWidth * push.tileHeight + (pixel.y - push.tileY) * push.tileWidth + pixel.x - push.tileX;
 }
@@ -35,7 +37,7 @@ const uint PN_WAVE_AFTER_DELTA = 0x80000000u;
 
 // Field 3 holds the radiance gathered so far: only a vertex that adds light reads and writes it
 // (addToPathResult). Fields 5 and 6 (the previous vertex) are read only where MIS or an escape
-// needs them (loadPathForShading). The sample index is the slot's (slotPixel), never stored.
+// needs them (loadPathForShading). The sample index is the slot's (pathSampleIndex), never stored.
 void storePath(uint slot, Path p) {
     setPathField(0u, slot, packVec(p.origin, p.bsdfPdfPrev));
     setPathField(1u, slot, packVec(p.direction, p.depth | (p.afterDelta ? PN_WAVE_AFTER_DELTA : 0u)));
@@ -49,7 +51,8 @@ void startPathResult(uint slot) { setPathField(3u, slot, uvec4(0u)); }
 
 // The path at its hit, with the previous vertex only where the vertex will need it: an escape,
 // or a hit on a light-sampled emitter after a non-delta bounce (MIS weights its emission).
-Path loadPathForShading(uint slot, Hit hit) {
+// `pixel` is slotPixel(slot).
+Path loadPathForShading(uint slot, uvec3 pixel, Hit hit) {
     Path p;
     uvec4 f0 = pathField(0u, slot), f1 = pathField(1u, slot), f2 = pathField(2u, slot);
     p.origin = unpackVec(f0);
@@ -60,7 +63,7 @@ Path loadPathForShading(uint slot, Hit hit) {
     p.throughput = unpackVec(f2);
     p.rng = f2.w;
     p.result = vec3(0.0);
-    p.sampleIndex = push.passIndex * frame.samplesPerPass + slotPixel(slot).z;
+    p.sampleIndex = pathSampleIndex(pixel);
     p.medium = PN_HAS(PN_FEATURE_ABSORPTION) ? unpackVec(pathField(4u, slot)) : vec3(0.0);
     p.previousNormal = vec3(0.0);
     p.previousPosition = vec3(0.0);
