@@ -20,10 +20,9 @@ protected:
         historyA = pixels<shader::HistoryTexel>();
         historyB = pixels<shader::HistoryTexel>();
         filterIn = pixels<Vec4>();
-        guide = pixels<std::uint64_t>();
         auto make = [&](gpu::Buffer& in, gpu::Buffer& out) {
             return std::make_unique<TemporalPass>(
-                *ctx, TemporalBuffers{&frame, &viewer, &accum, &gbuffer, &gbufferPrev, &in, &out, &filterIn, &guide});
+                *ctx, TemporalBuffers{&frame, &viewer, &accum, &gbuffer, &gbufferPrev, &in, &out, &filterIn});
         };
         aToB = make(historyA, historyB);
         bToA = make(historyB, historyA);
@@ -43,7 +42,7 @@ protected:
         view<Vec4>(accum)[i] = Vec4{mean.x * spp, mean.y * spp, mean.z * spp, y * y * spp};
     }
 
-    gpu::Buffer accum, gbuffer, gbufferPrev, historyA, historyB, filterIn, guide;
+    gpu::Buffer accum, gbuffer, gbufferPrev, historyA, historyB, filterIn;
     std::unique_ptr<TemporalPass> aToB, bToA;
 };
 

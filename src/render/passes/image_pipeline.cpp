@@ -7,10 +7,11 @@ namespace penumbra {
 std::unique_ptr<gpu::ComputePipeline> makeImagePipeline(const gpu::Context& ctx, const std::string& shader,
                                                         const gpu::Buffer& frameUniforms,
                                                         const std::vector<BufferBinding>& storage,
-                                                        std::uint32_t pushBytes) {
+                                                        std::uint32_t pushBytes,
+                                                        std::span<const std::uint32_t> specialization) {
     std::vector<gpu::BindingSpec> specs = {{PN_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
     for (const auto& [binding, buffer] : storage) specs.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-    auto pipeline = std::make_unique<gpu::ComputePipeline>(ctx, shader, specs, pushBytes);
+    auto pipeline = std::make_unique<gpu::ComputePipeline>(ctx, shader, specs, pushBytes, specialization);
     pipeline->bind(PN_BINDING_FRAME, frameUniforms);
     for (const auto& [binding, buffer] : storage) pipeline->bind(binding, *buffer);
     return pipeline;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,7 +17,8 @@ using BufferBinding = std::pair<std::uint32_t, const gpu::Buffer*>;
 std::unique_ptr<gpu::ComputePipeline> makeImagePipeline(const gpu::Context& ctx, const std::string& shader,
                                                         const gpu::Buffer& frameUniforms,
                                                         const std::vector<BufferBinding>& storage,
-                                                        std::uint32_t pushBytes = 0);
+                                                        std::uint32_t pushBytes = 0,
+                                                        std::span<const std::uint32_t> specialization = {});
 
 // Workgroups covering a width x height image with the 8x8 groups every image pass uses.
 void dispatchImage(const gpu::ComputePipeline& pipeline, VkCommandBuffer cmd, std::uint32_t width,
