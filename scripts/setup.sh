@@ -14,6 +14,7 @@ packages=(
   libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev zlib1g-dev   # zlib: .ply.gz
   libassimp-dev                                 # FBX, Collada, 3DS, STL, ... (src/scene/io/assimp_loader.cpp)
   libgtest-dev libbenchmark-dev
+  libtbb-dev                                    # the top-level BVH rebuild on a worker pool (src/bvh/morton_build.cpp)
   libglfw3-dev libimgui-dev xvfb xauth         # the viewer (penumbra view) and its test under Xvfb
   libopenmpi-dev openmpi-bin                    # render across ranks under mpirun (docs/DISTRIBUTED.md)
   clang libclang-rt-14-dev                      # libFuzzer targets (tests/fuzz)

@@ -52,11 +52,21 @@ vec3 toInstanceVector(uint instance, vec3 v) {
                 dot(instances[instance].worldToObject[2].xyz, v));
 }
 
+// Two-level walks push a marker on entering an instance, so popping it means the bottom level is
+// done. Node indices never reach these values (PN_INSTANCE_IDENTITY is their top bit).
+#define PN_LEAVE_IDENTITY_INSTANCE 0xffffffffu  // nothing to restore: the walk kept the world ray
+#define PN_LEAVE_MOVED_INSTANCE 0xfffffffeu     // the world ray is the six entries below it
+// Two-level kernels need room for a top level's pending nodes, the world ray and a marker, then a
+// bottom level's; flat ones keep the smaller stack (a specialisation constant picks).
+#define PN_BVH_WALK_STACK_SIZE (PN_HAS(PN_FEATURE_INSTANCES) ? 2 * PN_BVH_STACK_SIZE : PN_BVH_STACK_SIZE)
+
 // anyHit: stop at the first hit below tMax (shadow rays) instead of finding the closest.
 // With instances (frame.instanceCount > 0) the walk starts in the top level; a top-level leaf is
 // one instance, entered by moving the ray into its space and continuing at its bottom level's
-// root on the same stack. When the stack falls back to the depth it had on entry, the bottom
-// level is done and the ray returns to world space. Without instances, the flat BVH at node 0.
+// root on the same stack, above a marker; popping the marker ends the bottom level. The world ray
+// is saved on the stack (bit for bit) under a moved instance's marker rather than kept in
+// registers through the whole walk: the loop then carries one ray and the instance, the state a
+// flat walk carries plus one register. Without instances, the flat BVH at node 0.
 Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
     Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0, PN_NO_HIT);
     if (frame.nodeCount == 0u) return hit;
@@ -66,11 +76,9 @@ Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
     vec3 invD = safeInverse(d);
     if (slabEntry(nodes[current].boundsMin, nodes[current].boundsMax, o, invD, tMax) == PN_INFINITY) return hit;
 
-    uint stack[PN_BVH_STACK_SIZE];
+    uint stack[PN_BVH_WALK_STACK_SIZE];
     uint depth = 0u;
     uint instance = PN_NO_HIT;  // the instance whose bottom level is being walked
-    uint instanceDepth = 0u;    // the stack depth when it was entered
-    bool moved = false;         // o, d and invD are in the instance's space (not the identity)
     while (true) {
         BvhNode node = nodes[current];
         PN_COUNT_NODE();
@@ -80,13 +88,20 @@ Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
                 uint root = instances[instance].rootNode;
                 // An identity instance (the world's own geometry, a mesh left where it was
                 // modelled) is walked with the world ray: no transform in, none back out.
-                moved = (root & PN_INSTANCE_IDENTITY) == 0u;
-                if (moved) {
-                    o = toInstancePoint(instance, worldO);
-                    d = toInstanceVector(instance, worldD);
+                if ((root & PN_INSTANCE_IDENTITY) == 0u) {
+                    stack[depth++] = floatBitsToUint(o.x);
+                    stack[depth++] = floatBitsToUint(o.y);
+                    stack[depth++] = floatBitsToUint(o.z);
+                    stack[depth++] = floatBitsToUint(d.x);
+                    stack[depth++] = floatBitsToUint(d.y);
+                    stack[depth++] = floatBitsToUint(d.z);
+                    stack[depth++] = PN_LEAVE_MOVED_INSTANCE;
+                    o = toInstancePoint(instance, o);
+                    d = toInstanceVector(instance, d);
                     invD = safeInverse(d);
+                } else {
+                    stack[depth++] = PN_LEAVE_IDENTITY_INSTANCE;
                 }
-                instanceDepth = depth;
                 current = root & ~PN_INSTANCE_IDENTITY;
                 continue;
             }
@@ -114,17 +129,20 @@ Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
                 continue;
             }
         }
-        if (PN_HAS(PN_FEATURE_INSTANCES) && instance != PN_NO_HIT && depth == instanceDepth) {
-            instance = PN_NO_HIT;
-            if (moved) {
-                o = worldO;
-                d = worldD;
-                invD = safeInverse(d);
-                moved = false;
-            }
-        }
         if (depth == 0u) break;
         current = stack[--depth];
+        if (PN_HAS(PN_FEATURE_INSTANCES) && current >= PN_LEAVE_MOVED_INSTANCE) {
+            // The bottom level is done: back to the top level, in world space.
+            instance = PN_NO_HIT;
+            if (current == PN_LEAVE_MOVED_INSTANCE) {
+                depth -= 6u;
+                o = uintBitsToFloat(uvec3(stack[depth], stack[depth + 1u], stack[depth + 2u]));
+                d = uintBitsToFloat(uvec3(stack[depth + 3u], stack[depth + 4u], stack[depth + 5u]));
+                invD = safeInverse(d);
+            }
+            if (depth == 0u) break;
+            current = stack[--depth];
+        }
     }
     return hit;
 }

@@ -1,5 +1,8 @@
 #include "bvh/two_level.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "core/error.h"
 
 namespace penumbra::bvh {
@@ -58,12 +61,12 @@ std::uint32_t appendBottomLevel(std::vector<shader::BvhNode>& nodes, const Bvh& 
 }
 
 void appendTopLevel(std::span<const Aabb> instanceBounds, std::vector<shader::BvhNode>& nodes,
-                    TopLevelScratch& scratch) {
+                    TopLevelScratch& scratch, BuildThreads threads) {
     if (instanceBounds.empty()) return;
     // Many instances: the Morton build, several times faster than binned SAH for a somewhat
     // worse tree, keeps a per-frame rebuild within budget (docs/PERFORMANCE.md "Top-level rebuild").
     if (instanceBounds.size() > kMortonTopLevelAbove) {
-        appendMorton(instanceBounds, nodes, scratch.morton);
+        appendMorton(instanceBounds, nodes, scratch.morton, threads);
         return;
     }
     BuildOptions options;
@@ -92,13 +95,22 @@ std::vector<shader::BvhNode> buildTopLevel(std::span<const Aabb> instanceBounds,
 
 void replaceTopLevel(std::vector<shader::BvhNode>& nodes, std::uint32_t nodeBase,
                      std::span<const shader::Instance> instances, std::span<const Aabb> objectBounds,
-                     TopLevelScratch& scratch) {
+                     TopLevelScratch& scratch, BuildThreads threads) {
     PN_CHECK(instances.size() == objectBounds.size() && nodeBase <= nodes.size());
-    scratch.worldBounds.resize(instances.size());
-    for (std::size_t i = 0; i < instances.size(); ++i)
-        scratch.worldBounds[i] = transformBounds(objectBounds[i], objectToWorld(instances[i]));
+    const std::size_t n = instances.size();
+    scratch.worldBounds.resize(n);
+    auto transformRange = [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i)
+            scratch.worldBounds[i] = transformBounds(objectBounds[i], objectToWorld(instances[i]));
+    };
+    // Each box on its own, so chunks on the worker pool give the serial boxes.
+    if (threads == BuildThreads::Pool && n >= 2 * kMortonParallelGrain)
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kMortonParallelGrain),
+                          [&](const tbb::blocked_range<std::size_t>& r) { transformRange(r.begin(), r.end()); });
+    else
+        transformRange(0, n);
     nodes.resize(nodeBase);
-    appendTopLevel(scratch.worldBounds, nodes, scratch);
+    appendTopLevel(scratch.worldBounds, nodes, scratch, threads);
 }
 
 Hit closestHit(const TwoLevelView& scene, const Ray& ray) {

@@ -45,14 +45,15 @@ struct TopLevelScratch {
 
 // The same top level appended to `nodes` (its root at the old nodes.size()).
 void appendTopLevel(std::span<const Aabb> instanceBounds, std::vector<shader::BvhNode>& nodes,
-                    TopLevelScratch& scratch);
+                    TopLevelScratch& scratch, BuildThreads threads = BuildThreads::Pool);
 
 // The per-frame rebuild: nodes from nodeBase on are replaced by the top level over `instances`,
 // instance i's box being objectBounds[i] (its bottom level's, object space) through its
-// objectToWorld. The root is nodeBase (when there are instances).
+// objectToWorld. The root is nodeBase (when there are instances). Many instances are boxed and
+// built on TBB's worker pool (kMortonParallelGrain), the same nodes to the bit as BuildThreads::One.
 void replaceTopLevel(std::vector<shader::BvhNode>& nodes, std::uint32_t nodeBase,
                      std::span<const shader::Instance> instances, std::span<const Aabb> objectBounds,
-                     TopLevelScratch& scratch);
+                     TopLevelScratch& scratch, BuildThreads threads = BuildThreads::Pool);
 
 // A two-level scene as the GPU sees it: every level's nodes, the primitive slots, the instances
 // and the top level's root.

@@ -3,6 +3,7 @@
 // camera written out here (vertical field of view, square pixels, row 0 at the top).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -106,6 +107,91 @@ TEST(ObjectDrag, NothingToGrabOrBehindTheCameraMovesNothing) {
     EXPECT_FALSE(startObjectDrag(0, Affine{}, c, kWidth, kHeight, 10, 10, 0.0f).has_value());
     const Vec3 behind = dragOffset(c, kWidth, kHeight, Vec3{1, 2, -4}, 100, 100);
     EXPECT_EQ(length(behind), 0.0f);
+}
+
+// Turning by a Shift drag (turnAboutCentre, dragTurnDegrees), applied as the viewer applies it:
+// moveInstance with the turn's offset and yaw, one step per frame of cursor motion.
+void turnBy(Scene& scene, Vec3 centreLocal, float dxPixels) {
+    const InstanceTurn turn = turnAboutCentre(scene.instances[0].transform, centreLocal, dragTurnDegrees(dxPixels, kWidth));
+    moveInstance(scene, 0, turn.offset, turn.yawDegrees);
+}
+
+float maxDifference(const Affine& a, const Affine& b) {
+    float d = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 4; ++j) d = std::max(d, std::abs(a.m[i][j] - b.m[i][j]));
+    return d;
+}
+
+Scene sceneWithTurnedBox() {
+    Scene scene;
+    Mesh box;  // a box from (1, 0, 2) to (3, 1, 6): its centre (2, 0.5, 4) is far from the origin
+    box.positions = {{1, 0, 2}, {3, 1, 6}, {3, 0, 2}};
+    scene.prototypes.push_back({"box", {box}});
+    // Scaled, sheared and turned: the centre must stay put whatever the linear part.
+    Affine shear;
+    shear.m[0][1] = 0.4f;
+    scene.instances.push_back({0, Affine::translation({0.5f, 1, 8}) * Affine::eulerDegrees({10, 35, 0}) * shear *
+                                      Affine::scaling({1.5f, 0.7f, 1.2f})});
+    return scene;
+}
+
+TEST(ObjectTurn, TheCentreStaysAndTheTurnIsAboutTheVertical) {
+    Scene scene = sceneWithTurnedBox();
+    const Vec3 centre = prototypeCentre(scene, 0);
+    EXPECT_NEAR(length(centre - Vec3{2, 0.5f, 4}), 0, 1e-6f);
+    const Affine before = scene.instances[0].transform;
+    const Vec3 corner{1, 0, 2};
+    for (float dx : {13.0f, 160.0f, -47.5f}) {
+        const Affine start = scene.instances[0].transform;
+        turnBy(scene, centre, dx);
+        const Affine& now = scene.instances[0].transform;
+        EXPECT_LT(length(now.point(centre) - before.point(centre)), 1e-5f) << dx;
+        // Any point keeps its height and its distance from the vertical through the centre, and
+        // turns by the drag's angle about it.
+        const Vec3 c = before.point(centre), p0 = start.point(corner) - c, p1 = now.point(corner) - c;
+        EXPECT_NEAR(p1.y, p0.y, 1e-5f);
+        const float a0 = std::atan2(p0.x, p0.z), a1 = std::atan2(p1.x, p1.z);
+        const float turned = std::remainder(a1 - a0, 2.0f * kPiF);
+        EXPECT_NEAR(turned, degreesToRadians(dx * 360.0f / float(kWidth)), 1e-5f) << dx;
+        EXPECT_NEAR(std::hypot(p1.x, p1.z), std::hypot(p0.x, p0.z), 1e-5f);
+    }
+}
+
+TEST(ObjectTurn, ADragAndBackAndAWholeWindowWidthGiveTheTransformBack) {
+    Scene scene = sceneWithTurnedBox();
+    const Vec3 centre = prototypeCentre(scene, 0);
+    const Affine before = scene.instances[0].transform;
+    // Out and back over several frames of uneven cursor steps.
+    for (float dx : {3.0f, 41.0f, 17.5f, 90.0f}) turnBy(scene, centre, dx);
+    for (float dx : {-60.0f, -91.5f}) turnBy(scene, centre, dx);
+    EXPECT_LT(maxDifference(scene.instances[0].transform, before), 2e-5f);
+    // Dragging across the whole window turns it once around.
+    for (int step = 0; step < 8; ++step) turnBy(scene, centre, float(kWidth) / 8.0f);
+    EXPECT_LT(maxDifference(scene.instances[0].transform, before), 5e-5f);
+}
+
+TEST(ObjectTurn, DraggingRightTurnsTheSideFacingTheCameraRight) {
+    // Seen from several directions around the object: the point of it nearest the camera moves
+    // right on the screen when the cursor does, and left when it goes left.
+    for (float heading : {0.0f, 70.0f, 180.0f, 250.0f}) {
+        Scene scene = sceneWithTurnedBox();
+        const Vec3 centre = prototypeCentre(scene, 0);
+        const Vec3 c = scene.instances[0].transform.point(centre);
+        const Vec3 toCamera = Affine::eulerDegrees({0, heading, 0}).vector(Vec3{0, 0, 1});
+        Camera cam;
+        cam.position = c + toCamera * 6.0f + Vec3{0, 2, 0};
+        cam.lookAt = c;
+        cam.fovYDegrees = 60.0f;
+        const Vec3 nearLocal = scene.instances[0].transform.inverse().point(c + toCamera);  // on the near side
+        for (float dx : {20.0f, -20.0f}) {
+            Scene turned = scene;
+            const float x0 = project(cam, turned.instances[0].transform.point(nearLocal)).x;
+            turnBy(turned, centre, dx);
+            const float x1 = project(cam, turned.instances[0].transform.point(nearLocal)).x;
+            EXPECT_GT((x1 - x0) * dx, 0.0f) << "heading " << heading << ", dx " << dx;
+        }
+    }
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "app/viewer/object_drag.h"
 
+#include "core/aabb.h"
 #include "render/scene_objects.h"
 
 namespace penumbra::viewer {
@@ -26,6 +27,25 @@ Vec3 dragOffset(const Camera& camera, std::uint32_t width, std::uint32_t height,
     const float depth = dot(grabbed - camera.position, viewForward(camera));
     if (!(depth > 0) || width == 0 || height == 0) return Vec3{0};
     return pointAtDepth(camera, width, height, x, y, depth) - grabbed;
+}
+
+float dragTurnDegrees(float dxPixels, std::uint32_t width) {
+    return width == 0 ? 0.0f : dxPixels * (kTurnDegreesPerWindowWidth / float(width));
+}
+
+InstanceTurn turnAboutCentre(const Affine& objectToWorld, Vec3 centreLocal, float yawDegrees) {
+    // moveInstance keeps the origin o and turns the linear part L: the centre o + L c would go to
+    // o + R L c. Moving the origin by d - R d (d = L c) puts it back at o + d.
+    const Vec3 d = objectToWorld.vector(centreLocal);
+    return {d - Affine::eulerDegrees({0, yawDegrees, 0}).vector(d), yawDegrees};
+}
+
+Vec3 prototypeCentre(const Scene& scene, std::uint32_t prototype) {
+    if (prototype >= scene.prototypes.size()) return Vec3{0};
+    Aabb box;
+    for (const Mesh& mesh : scene.prototypes[prototype].meshes)
+        for (const Vec3& p : mesh.positions) box.grow(p);
+    return box.empty() ? Vec3{0} : (box.lo + box.hi) * 0.5f;
 }
 
 }  // namespace penumbra::viewer

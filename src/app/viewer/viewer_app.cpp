@@ -30,6 +30,9 @@
 namespace penumbra::viewer {
 namespace {
 
+// The panel's line after an instance is selected (docs/VIEWER.md, Controls).
+constexpr const char* kInstanceControls = ": drag it (Shift+drag turns it), or I/K J/L O/U move it, comma/period turn it";
+
 // The pointer between frames: right-button drag, the captured pointer, and left clicks.
 struct PointerState {
     double lastX = 0, lastY = 0;
@@ -168,7 +171,8 @@ LeftButton trackPointer(GLFWwindow* w, PointerState& p, InputState& input, bool 
     return left;
 }
 
-// A left press on the selected instance grabs it (the CPU pick under the cursor, as a click's).
+// A left press on the selected instance grabs it (the CPU pick under the cursor, as a click's):
+// to move it, or with Shift held to turn it.
 void grabSelection(GLFWwindow* w, const Click& press, PointerState& pointer, const Scene& scene,
                    const InteractiveRenderer& renderer, const Camera& camera, std::uint32_t selectedInstance) {
     int ww = 0, wh = 0;
@@ -177,16 +181,39 @@ void grabSelection(GLFWwindow* w, const Click& press, PointerState& pointer, con
     const Pick pick = pickPixel(renderer.sceneArrays(), camera, std::uint32_t(ww), std::uint32_t(wh), float(press.x),
                                 float(press.y));
     if (pick.instance != selectedInstance) return;
-    pointer.drag = startObjectDrag(selectedInstance, scene.instances[selectedInstance].transform, camera,
-                                   std::uint32_t(ww), std::uint32_t(wh), float(press.x), float(press.y), pick.depth);
+    const Instance& instance = scene.instances[selectedInstance];
+    pointer.drag = startObjectDrag(selectedInstance, instance.transform, camera, std::uint32_t(ww),
+                                   std::uint32_t(wh), float(press.x), float(press.y), pick.depth);
+    const bool shift =
+        glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+    if (pointer.drag && shift) {
+        pointer.drag->turning = true;
+        pointer.drag->turnedAtX = float(press.x);
+        pointer.drag->centreLocal = prototypeCentre(scene, instance.prototype);
+    }
 }
 
-// Moves a grabbed instance so the grabbed point is under the cursor again; true when it moved.
-bool dragSelection(GLFWwindow* w, const PointerState& pointer, Scene& scene, const Camera& camera) {
+// Turns a grabbed instance (a Shift drag) by the cursor's horizontal motion since it was last
+// turned; true when it turned.
+bool turnSelection(int windowWidth, PointerState& pointer, Scene& scene) {
+    ObjectDrag& drag = *pointer.drag;
+    const float dx = float(pointer.lastX) - drag.turnedAtX;
+    if (dx == 0) return false;
+    drag.turnedAtX = float(pointer.lastX);
+    const InstanceTurn turn = turnAboutCentre(scene.instances[drag.instance].transform, drag.centreLocal,
+                                              dragTurnDegrees(dx, std::uint32_t(windowWidth)));
+    moveInstance(scene, drag.instance, turn.offset, turn.yawDegrees);
+    return true;
+}
+
+// Moves a grabbed instance so the grabbed point is under the cursor again (or turns it, when the
+// drag turns); true when it moved.
+bool dragSelection(GLFWwindow* w, PointerState& pointer, Scene& scene, const Camera& camera) {
     if (!pointer.drag || pointer.drag->instance >= scene.instances.size()) return false;
     int ww = 0, wh = 0;
     glfwGetWindowSize(w, &ww, &wh);
     if (ww <= 0 || wh <= 0) return false;
+    if (pointer.drag->turning) return turnSelection(ww, pointer, scene);
     const Vec3 grabbed = scene.instances[pointer.drag->instance].transform.point(pointer.drag->grabbedLocal);
     const Vec3 offset = dragOffset(camera, std::uint32_t(ww), std::uint32_t(wh), grabbed, float(pointer.lastX),
                                    float(pointer.lastY));
@@ -218,7 +245,7 @@ void handleClick(GLFWwindow* w, const Click& click, PointerState& pointer, const
         select(scene, pick.object, edit);
         selectedInstance = pick.instance;
         if (pick.instance < scene.instances.size())
-            panel.message = instanceName(scene, pick.instance) + ": drag it, or I/K J/L O/U move it, comma/period turn it";
+            panel.message = instanceName(scene, pick.instance) + kInstanceControls;
     }
 }
 
@@ -342,7 +369,7 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     if (loop.input.gridToggled) toggleGrid(loop, scene);
     if (loop.input.nextInstance && !scene.instances.empty()) {
         loop.selectedInstance = loop.selectedInstance + 1 < scene.instances.size() ? loop.selectedInstance + 1 : 0;
-        loop.panel.message = instanceName(scene, loop.selectedInstance) + ": drag it, or I/K J/L O/U move it, comma/period turn it";
+        loop.panel.message = instanceName(scene, loop.selectedInstance) + kInstanceControls;
     }
     const LeftButton left = trackPointer(w, loop.pointer, loop.input, ui.wantsMouse());
     if (left.press) grabSelection(w, *left.press, loop.pointer, scene, renderer, loop.camera(), loop.selectedInstance);

@@ -3,7 +3,10 @@
 // against the binned-SAH build's (a worse tree, but not a broken one).
 #include <gtest/gtest.h>
 
+#include <tbb/task_arena.h>
+
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "bvh/morton_build.h"
@@ -58,6 +61,29 @@ TEST(MortonBuild, TreeQualityIsWithinReachOfBinnedSah) {
     std::printf("SAH cost, one primitive per leaf: binned %.2f, Morton %.2f (x%.2f)\n", sah, morton, morton / sah);
     EXPECT_GE(morton, sah * 0.95);  // SAH-driven splits are the better tree...
     EXPECT_LE(morton, sah * 1.6);   // ...but a Morton tree is not far off on scattered boxes
+}
+
+bool sameBits(const std::vector<shader::BvhNode>& a, const std::vector<shader::BvhNode>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(shader::BvhNode)) == 0;
+}
+
+// The pooled build (keys, sort and subtrees in parallel) is the one-thread build to the bit, on
+// 4 worker threads whatever the machine has, at sizes around the parallel grain and with many
+// equal codes (median splits) and odd boxes.
+TEST(MortonBuild, ParallelBuildIsTheSerialOneToTheBit) {
+    tbb::task_arena four(4);
+    for (std::size_t n : {2 * kMortonParallelGrain - 1, 2 * kMortonParallelGrain, std::size_t(9001), std::size_t(40000)}) {
+        std::vector<Aabb> boxes = test::boxesOf(test::randomSoup(n, std::uint32_t(n) + 1));
+        for (std::size_t i = 0; i < n; i += 7) boxes[i] = boxes[0];  // a cluster of equal codes
+        boxes[5] = Aabb{};
+        boxes[11].hi.x = std::numeric_limits<float>::infinity();
+        const Bvh serial = buildMorton(boxes, BuildThreads::One);
+        Bvh pooled;
+        four.execute([&] { pooled = buildMorton(boxes, BuildThreads::Pool); });
+        EXPECT_TRUE(sameBits(serial.nodes, pooled.nodes)) << n << " boxes";
+        EXPECT_EQ(serial.primOrder, pooled.primOrder) << n << " boxes";
+        validate(pooled, boxes);
+    }
 }
 
 }  // namespace

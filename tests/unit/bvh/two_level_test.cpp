@@ -2,6 +2,9 @@
 // (mirrors and shears included), traversal against brute force over instances x triangles and
 // against one flat BVH over the transformed triangles.
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <cstring>
 
 #include "bvh/two_level.h"
 #include "bvh_test_util.h"
@@ -94,6 +97,35 @@ TEST(TwoLevel, TopLevelLeavesHoldOneInstanceEach) {
         ++seen[n.firstOrRight];
     }
     for (int s : seen) EXPECT_EQ(s, 1);
+}
+
+// The per-frame rebuild of 10,000 instances on the worker pool (boxes through the transforms and
+// the Morton build in parallel) writes the nodes the one-thread rebuild writes, to the bit, into
+// warm buffers too.
+TEST(TwoLevel, PooledTopLevelRebuildIsTheSerialOneToTheBit) {
+    std::vector<shader::Instance> instances;
+    std::vector<Aabb> objectBounds;
+    for (int k = 0; k < 10000; ++k) {
+        instances.push_back(makeInstance(Affine::translation({0.01f * float(k % 100), 0.0f, 0.02f * float(k / 100)}) *
+                                             placement(k % 16),
+                                         0, 0, 1, std::uint32_t(k)));
+        Aabb b;
+        b.grow(Vec3{-1.0f, -0.5f * float(k % 3), -0.8f});
+        b.grow(Vec3{1.0f, 1.5f, 0.8f + 0.1f * float(k % 5)});
+        objectBounds.push_back(b);
+    }
+    std::vector<shader::BvhNode> serial(37), pooled(37);  // stand-ins for bottom levels
+    TopLevelScratch serialScratch, pooledScratch;
+    tbb::task_arena four(4);
+    for (int frame = 0; frame < 2; ++frame) {
+        instances[std::size_t(frame) * 977].objectToWorld[1].w += 3.0f;  // an instance moves
+        replaceTopLevel(serial, 37, instances, objectBounds, serialScratch, BuildThreads::One);
+        four.execute([&] { replaceTopLevel(pooled, 37, instances, objectBounds, pooledScratch, BuildThreads::Pool); });
+        ASSERT_EQ(serial.size(), pooled.size());
+        EXPECT_EQ(serial.size(), 37u + 2 * instances.size() - 1);
+        EXPECT_EQ(std::memcmp(serial.data(), pooled.data(), serial.size() * sizeof(shader::BvhNode)), 0)
+            << "frame " << frame;
+    }
 }
 
 }  // namespace
