@@ -4,8 +4,7 @@
 // moving camera: history is fetched where the motion vector says this surface was, taps whose
 // previous G-buffer shows another surface are rejected (disocclusion), the result is clamped to
 // the current frame's neighbourhood in YCoCg, then blended with weight >= 1/maxHistory.
-// Also writes the denoiser's input texel: its guide (normal, depth) and signal, illumination
-// (radiance / albedo) and luminance variance, as half floats.
+// Also writes the denoiser's input: illumination (radiance / albedo) and luminance variance.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/types.h"
@@ -19,7 +18,8 @@ layout(std430, set = 0, binding = PN_BINDING_GBUFFER) readonly buffer GBufferIn 
 layout(std430, set = 0, binding = PN_BINDING_GBUFFER_PREV) readonly buffer GBufferPrev { GBufferTexel gbufferPrev[]; };
 layout(std430, set = 0, binding = PN_BINDING_HISTORY) readonly buffer HistoryIn { HistoryTexel history[]; };
 layout(std430, set = 0, binding = PN_BINDING_HISTORY_OUT) writeonly buffer HistoryOut { HistoryTexel historyOut[]; };
-layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) writeonly buffer FilterIn { uvec4 filterIn[]; };
+layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) writeonly buffer FilterIn { vec4 filterIn[]; };
+layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) writeonly buffer GuideOut { uvec2 guide[]; };
 
 // This frame's mean radiance at a pixel.
 vec3 currentRadiance(uint i) { return accum[i].rgb / float(viewer.samplesPerFrame); }
@@ -125,6 +125,6 @@ void main() {
                                             : sigma.x * sigma.x;
     vec3 albedo = demodulationAlbedo(g);
     float albedoLuminance = max(luminance(albedo), 1e-3);
-    filterIn[i] = packDenoiseTexel(g.normal, g.surfaceId != 0u ? g.depth : 0.0,
-                                   vec4(o.color / albedo, variance / (albedoLuminance * albedoLuminance)));
+    filterIn[i] = vec4(o.color / albedo, variance / (albedoLuminance * albedoLuminance));
+    guide[i] = packDenoiseGuide(g.normal, g.surfaceId != 0u ? g.depth : 0.0);
 }

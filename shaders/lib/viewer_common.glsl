@@ -51,24 +51,9 @@ vec3 octDecode(vec2 e) {
     return normalize(n);
 }
 
-// The denoiser's texel (shared/types.h, PN_DENOISE_TEXEL_BYTES): guide and signal in one uvec4.
-// signal = (illumination, variance of its luminance); depth 0 marks a miss.
-uvec4 packDenoiseSignal(uvec2 guide, vec4 signal) {
-    vec4 h = min(vec4(signal.rgb, sqrt(max(signal.a, 0.0))), vec4(PN_DENOISE_HALF_MAX));
-    return uvec4(guide, packHalf2x16(h.rg), packHalf2x16(h.ba));
+uvec2 packDenoiseGuide(vec3 normal, float depth) {
+    return uvec2(depth > 0.0 ? packSnorm2x16(octEncode(normal)) : 0u, floatBitsToUint(depth));
 }
-uvec4 packDenoiseTexel(vec3 normal, float depth, vec4 signal) {
-    uvec2 guide = uvec2(depth > 0.0 ? packSnorm2x16(octEncode(normal)) : 0u, floatBitsToUint(depth));
-    return packDenoiseSignal(guide, signal);
-}
-// Each decoder takes the one word it needs (a 4-byte read where only that word is wanted).
-vec3 denoiseNormal(uint x) { return octDecode(unpackSnorm2x16(x)); }
-float denoiseDepth(uint y) { return uintBitsToFloat(y); }
-float denoiseVariance(uint w) {
-    float deviation = unpackHalf2x16(w).y;
-    return deviation * deviation;
-}
-vec4 denoiseSignal(uvec4 t) { return vec4(unpackHalf2x16(t.z), unpackHalf2x16(t.w).x, denoiseVariance(t.w)); }
 
 // The albedo the denoiser divides out: 1 where the primary ray missed or the surface is black.
 vec3 demodulationAlbedo(GBufferTexel g) {

@@ -47,13 +47,13 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_GBUFFER_PREV 18  // GBufferTexel per pixel, last frame
 #define PN_BINDING_HISTORY 19       // HistoryTexel per pixel, last frame (read)
 #define PN_BINDING_HISTORY_OUT 20   // HistoryTexel per pixel, this frame (written)
-#define PN_BINDING_FILTER_IN 21     // uvec4 per pixel: the denoiser's input texel (PN_DENOISE_TEXEL_BYTES)
-#define PN_BINDING_FILTER_OUT 22    // uvec4 per pixel: its output (a texel, or the last pass's vec4 radiance)
+#define PN_BINDING_FILTER_IN 21     // vec4 per pixel: denoiser input (rgb illumination, a variance)
+#define PN_BINDING_FILTER_OUT 22    // vec4 per pixel: denoiser output
 #define PN_BINDING_DISPLAY 23       // uint per pixel: RGBA8 (r in the low byte), what the window shows
 #define PN_BINDING_ENV_TEXELS 24     // environment radiance, one vec4 (rgb, unused) per texel
 #define PN_BINDING_OVERLAY_BOXES 25  // BvhNode per box the viewer's box overlay outlines (bounds only)
 #define PN_BINDING_LIGHT_NODES 26    // LightNode per top-level light (the first FrameUniforms.topLightCount LightRefs)
-// Binding 27 is free (it held the denoise guide, now inside the denoiser's texel).
+#define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
 #define PN_BINDING_INSTANCES_PREV 28  // the viewer's Instance entries as the previous frame placed them (gbuffer.comp's object motion)
 #define PN_BINDING_ACTIVE_MASK 29    // uint per pixel: 0 skips the pixel in trace.comp when PN_TRACE_MASKED is set
 #define PN_BINDING_INSTANCES 30      // Instance per placed bottom level (two-level scenes; see FrameUniforms.instanceCount)
@@ -434,27 +434,10 @@ PN_STRUCT(FrameUniforms) {
 #define PN_TRACE_MASKED 1u       // PassPush.mode bit of trace.comp: read the active mask (adaptive sampling)
 #define PN_GBUFFER_SUBPIXEL 1u    // PassPush.mode bit of gbuffer.comp: trace cell passIndex of a 4x4 grid in the pixel
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
-// The denoiser's texel, one uvec4 per pixel in the buffers between the viewer's passes
-// (PN_BINDING_FILTER_IN/OUT): temporal.comp writes it, every a-trous pass but the last reads and
-// writes it, so one filter tap is one 16-byte load, guide and signal together (24 bytes in two
-// loads when the colour was a float vec4 beside an 8-byte guide). viewer_common.glsl packs it:
-//   x: the shading normal, octahedral, packSnorm2x16 (0 where the primary ray missed)
-//   y: the linear depth's float bits (0: the primary ray missed; the filter skips such taps)
-//   z: packHalf2x16(illumination r, g)
-//   w: packHalf2x16(illumination b, standard deviation of the luminance)
-// The deviation rather than the variance, so that half's range (6e-8 .. 65504) holds variances
-// from 4e-15 to 4e9. Larger values are clamped to PN_DENOISE_HALF_MAX (an emitter of radiance
-// > 65 behind a black albedo, divided by the 1e-3 floor). The last a-trous pass writes
-// vec4(radiance, variance) as 32-bit floats into the same 16 bytes: what tonemap.comp reads.
-#define PN_DENOISE_TEXEL_BYTES 16u
-#define PN_DENOISE_HALF_MAX 65504.0
-// The a-trous passes with steps up to PN_ATROUS_TILE_MAX_STEP read their 5x5 footprints (radius
-// 2 x step) from a shared-memory tile that covers the 8x8 workgroup and that radius.
-#define PN_ATROUS_TILE_MAX_STEP 2
-#define PN_ATROUS_TILE_RADIUS (2 * PN_ATROUS_TILE_MAX_STEP)
-#define PN_ATROUS_TILE_WIDTH (PN_TRACE_GROUP_X + 2 * PN_ATROUS_TILE_RADIUS)
-#define PN_ATROUS_TILE_HEIGHT (PN_TRACE_GROUP_Y + 2 * PN_ATROUS_TILE_RADIUS)
-#define PN_ATROUS_TILE_TEXELS (PN_ATROUS_TILE_WIDTH * PN_ATROUS_TILE_HEIGHT)
+// The denoiser's per-pixel guide, written by temporal.comp: x = the shading normal, octahedral,
+// packSnorm2x16; y = the linear depth's float bits (0: the primary ray missed). 8 bytes instead of
+// a 48-byte GBufferTexel per tap keeps the 25-tap filter in cache.
+#define PN_DENOISE_GUIDE_BYTES 8u
 
 // What the primary ray saw at a pixel's centre, 48 bytes.
 PN_STRUCT(GBufferTexel) {
@@ -683,7 +666,6 @@ static_assert(sizeof(ViewerUniforms) == 128 && offsetof(ViewerUniforms, prevTanH
               offsetof(ViewerUniforms, sigmaLuminance) == 96 && offsetof(ViewerUniforms, heatMax) == 108 &&
               offsetof(ViewerUniforms, denoise) == 112 && offsetof(ViewerUniforms, debugOpacity) == 116 &&
               offsetof(ViewerUniforms, debugInset) == 120);
-static_assert(PN_DENOISE_TEXEL_BYTES == 4 * sizeof(float), "the last a-trous pass writes a float vec4 per texel");
 static_assert(sizeof(HeatCounters) == 16 && offsetof(HeatCounters, maxLeafDepth) == 8 &&
               offsetof(HeatCounters, maxLeafTris) == 12);
 }  // namespace penumbra::shader

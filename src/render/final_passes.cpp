@@ -122,10 +122,11 @@ ImageRgb FinalFramePasses::denoise(const PixelAccumulator& sums, const FinalDeno
         return gpu::Buffer(ctx_, VkDeviceSize(n) * bytes, kPixelUsage, gpu::MemoryKind::DeviceLocal);
     };
     gpu::Buffer historyOut = pixelBuffer(sizeof(shader::HistoryTexel));
-    gpu::Buffer filterA = pixelBuffer(PN_DENOISE_TEXEL_BYTES), filterB = pixelBuffer(PN_DENOISE_TEXEL_BYTES);
+    gpu::Buffer filterA = pixelBuffer(sizeof(Vec4)), filterB = pixelBuffer(sizeof(Vec4));
+    gpu::Buffer guide = pixelBuffer(PN_DENOISE_GUIDE_BYTES);
     TemporalPass temporal(ctx_, TemporalBuffers{&renderer_.frameUniforms(), &viewerUniforms_, &accumulation, &gbuffer_,
-                                                &gbuffer_, &historyIn, &historyOut, &filterA});
-    DenoisePass atrous(ctx_, renderer_.frameUniforms(), viewerUniforms_, gbuffer_, filterA, filterB);
+                                                &gbuffer_, &historyIn, &historyOut, &filterA, &guide});
+    DenoisePass atrous(ctx_, renderer_.frameUniforms(), viewerUniforms_, gbuffer_, guide, filterA, filterB);
     const gpu::Buffer* result = nullptr;
     commands_.run([&](VkCommandBuffer cmd) {
         gpu::computeBarrier(cmd);

@@ -205,14 +205,15 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
     gbufferPrev_ = pixelBuffer(sizeof(shader::GBufferTexel));
     historyA_ = pixelBuffer(sizeof(shader::HistoryTexel));
     historyB_ = pixelBuffer(sizeof(shader::HistoryTexel));
-    filterA_ = pixelBuffer(PN_DENOISE_TEXEL_BYTES);
-    filterB_ = pixelBuffer(PN_DENOISE_TEXEL_BYTES);  // also the heat map's vec4 counts
+    filterA_ = pixelBuffer(sizeof(Vec4));
+    filterB_ = pixelBuffer(sizeof(Vec4));
+    guide_ = pixelBuffer(PN_DENOISE_GUIDE_BYTES);
     display_ = pixelBuffer(sizeof(std::uint32_t));
     historyIn_ = &historyA_;
     historyOut_ = &historyB_;
     // Everything starts defined, so no pass ever reads uninitialised memory.
     commands_.run([&](VkCommandBuffer cmd) {
-        for (gpu::Buffer* b : {&accumulation_, &gbuffer_, &gbufferPrev_, &historyA_, &historyB_, &filterA_, &filterB_, &display_})
+        for (gpu::Buffer* b : {&accumulation_, &gbuffer_, &gbufferPrev_, &historyA_, &historyB_, &filterA_, &filterB_, &guide_, &display_})
             vkCmdFillBuffer(cmd, b->get(), 0, VK_WHOLE_SIZE, 0);
     });
     createPasses();
@@ -228,11 +229,11 @@ void InteractiveRenderer::createPasses() {
     auto temporal = [&](const gpu::Buffer& in, const gpu::Buffer& out) {
         return std::make_unique<TemporalPass>(
             ctx_, TemporalBuffers{&frameUniforms_, &viewerUniforms_, &accumulation_, &gbuffer_, &gbufferPrev_, &in,
-                                  &out, &filterA_});
+                                  &out, &filterA_, &guide_});
     };
     temporalAB_ = temporal(historyA_, historyB_);
     temporalBA_ = temporal(historyB_, historyA_);
-    denoise_ = std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer_, filterA_, filterB_);
+    denoise_ = std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer_, guide_, filterA_, filterB_);
     tonemapA_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyA_, filterB_, gbuffer_, display_);
     tonemapB_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyB_, filterB_, gbuffer_, display_);
     heatmap_ = std::make_unique<HeatmapPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, filterB_, heatCounters_);

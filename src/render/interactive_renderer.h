@@ -104,7 +104,7 @@ private:
     std::optional<std::uint32_t> torchLight_;
     std::uint32_t seed_;
     gpu::Buffer frameUniforms_, viewerUniforms_, counters_, heatCounters_;
-    gpu::Buffer accumulation_, gbuffer_, gbufferPrev_, historyA_, historyB_, filterA_, filterB_, display_;
+    gpu::Buffer accumulation_, gbuffer_, gbufferPrev_, historyA_, historyB_, filterA_, filterB_, guide_, display_;
     // The instances as the previous frame placed them (gbuffer.comp's object motion), and the
     // staging buffer that carries moved instances and the top level up.
     gpu::Buffer instancesPrev_, instanceStaging_;

@@ -20,9 +20,10 @@ protected:
         historyA = pixels<shader::HistoryTexel>();
         historyB = pixels<shader::HistoryTexel>();
         filterIn = pixels<Vec4>();
+        guide = pixels<std::uint64_t>();
         auto make = [&](gpu::Buffer& in, gpu::Buffer& out) {
             return std::make_unique<TemporalPass>(
-                *ctx, TemporalBuffers{&frame, &viewer, &accum, &gbuffer, &gbufferPrev, &in, &out, &filterIn});
+                *ctx, TemporalBuffers{&frame, &viewer, &accum, &gbuffer, &gbufferPrev, &in, &out, &filterIn, &guide});
         };
         aToB = make(historyA, historyB);
         bToA = make(historyB, historyA);
@@ -42,7 +43,7 @@ protected:
         view<Vec4>(accum)[i] = Vec4{mean.x * spp, mean.y * spp, mean.z * spp, y * y * spp};
     }
 
-    gpu::Buffer accum, gbuffer, gbufferPrev, historyA, historyB, filterIn;
+    gpu::Buffer accum, gbuffer, gbufferPrev, historyA, historyB, filterIn, guide;
     std::unique_ptr<TemporalPass> aToB, bToA;
 };
 

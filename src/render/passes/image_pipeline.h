@@ -3,7 +3,6 @@
 #pragma once
 
 #include <memory>
-#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,8 +16,7 @@ using BufferBinding = std::pair<std::uint32_t, const gpu::Buffer*>;
 std::unique_ptr<gpu::ComputePipeline> makeImagePipeline(const gpu::Context& ctx, const std::string& shader,
                                                         const gpu::Buffer& frameUniforms,
                                                         const std::vector<BufferBinding>& storage,
-                                                        std::uint32_t pushBytes = 0,
-                                                        std::span<const std::uint32_t> specialization = {});
+                                                        std::uint32_t pushBytes = 0);
 
 // Workgroups covering a width x height image with the 8x8 groups every image pass uses.
 void dispatchImage(const gpu::ComputePipeline& pipeline, VkCommandBuffer cmd, std::uint32_t width,

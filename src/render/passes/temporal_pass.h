@@ -16,7 +16,8 @@ struct TemporalBuffers {
     const gpu::Buffer* gbufferPrev;     // GBufferTexel, last frame
     const gpu::Buffer* history;         // HistoryTexel, last frame
     const gpu::Buffer* historyOut;      // HistoryTexel, this frame
-    const gpu::Buffer* filterIn;        // PN_DENOISE_TEXEL_BYTES per pixel: the denoiser's input texel
+    const gpu::Buffer* filterIn;        // vec4: illumination and variance for the denoiser
+    const gpu::Buffer* guide;           // PN_DENOISE_GUIDE_BYTES per pixel: what the denoiser compares
 };
 
 class TemporalPass {
