@@ -119,7 +119,8 @@ float totalLightImportance(float tree, vec3 p, vec3 n) {
 
 // One level of the walk below an interior node (its childOrLight): the importance of each child
 // at p (0 past the node's 2 to 4 children) and what each child's record says of its own children,
-// so the walk goes on without reading the chosen record again.
+// so the walk goes on without reading the chosen record again. Written out with no loop and no
+// indexing by a variable, which would put the vectors in local memory.
 struct LightChildren {
     vec4 weight;
     uvec4 next;  // childOrLight of each child
@@ -130,27 +131,46 @@ LightChildren lightChildren(uint childOrLight, vec3 p, vec3 n) {
     uint first = childOrLight & PN_LIGHT_NODE_INDEX;
     uint count = ((childOrLight >> PN_LIGHT_NODE_CHILDREN_SHIFT) & 3u) + 1u;
     LightChildren c = LightChildren(vec4(0.0), uvec4(0u), 0.0);
-    for (uint slot = 0u; slot < 4u; ++slot) {
-        if (slot >= count) break;
-        LightTreeNode child = lightTree[first + slot];
-        c.weight[slot] = treeNodeImportance(child, p, n);
-        c.next[slot] = child.childOrLight;
+    LightTreeNode child = lightTree[first];
+    c.weight.x = treeNodeImportance(child, p, n);
+    c.next.x = child.childOrLight;
+    child = lightTree[first + 1u];
+    c.weight.y = treeNodeImportance(child, p, n);
+    c.next.y = child.childOrLight;
+    if (count > 2u) {
+        child = lightTree[first + 2u];
+        c.weight.z = treeNodeImportance(child, p, n);
+        c.next.z = child.childOrLight;
+    }
+    if (count > 3u) {
+        child = lightTree[first + 3u];
+        c.weight.w = treeNodeImportance(child, p, n);
+        c.next.w = child.childOrLight;
     }
     c.total = c.weight.x + c.weight.y + c.weight.z + c.weight.w;
     return c;
 }
 
-// The child taken with u in [0, 1): slot k with probability weight[k] / total (total > 0).
+// The child taken with u in [0, 1): slot k with probability weight[k] / total (total > 0). The
+// strict comparisons never land on a slot of weight 0 before the last; past the last (rounding),
+// the last child that can light p.
 uint chooseLightChild(LightChildren c, float u) {
     float x = u * c.total;
-    uint chosen = 0u;
-    for (uint slot = 0u; slot < 4u; ++slot) {
-        if (!(c.weight[slot] > 0.0)) continue;
-        chosen = slot;  // the last child that can light p, if rounding carries x past the others
-        if (x < c.weight[slot]) break;
-        x -= c.weight[slot];
-    }
-    return chosen;
+    vec4 w = c.weight;
+    if (x < w.x) return 0u;
+    if (x < w.x + w.y) return 1u;
+    if (x < w.x + w.y + w.z) return 2u;
+    return w.w > 0.0 ? 3u : (w.z > 0.0 ? 2u : (w.y > 0.0 ? 1u : 0u));
+}
+
+// What the walk keeps of slot k: its share of the level's importance and its childOrLight.
+float childShare(LightChildren c, uint slot) {
+    float w = slot == 0u ? c.weight.x : (slot == 1u ? c.weight.y : (slot == 2u ? c.weight.z : c.weight.w));
+    return w / c.total;
+}
+
+uint childNext(LightChildren c, uint slot) {
+    return slot == 0u ? c.next.x : (slot == 1u ? c.next.y : (slot == 2u ? c.next.z : c.next.w));
 }
 
 struct LightPick {
@@ -189,8 +209,8 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
         LightChildren c = lightChildren(childOrLight, p, n);
         if (!(c.total > 0.0)) break;
         uint slot = chooseLightChild(c, rngNext(rng));
-        pick.pmf *= c.weight[slot] / c.total;
-        childOrLight = c.next[slot];
+        pick.pmf *= childShare(c, slot);
+        childOrLight = childNext(c, slot);
     }
     return LightPick(PN_NO_LIGHT, 0.0);
 }
@@ -210,8 +230,8 @@ float lightPickPmf(uint ref, vec3 p, vec3 n) {
         LightChildren c = lightChildren(childOrLight, p, n);
         if (!(c.total > 0.0)) return 0.0;
         uint slot = (level < 16u ? (r.trailLo >> (2u * level)) : (r.trailHi >> (2u * level - 32u))) & 3u;
-        pmf *= c.weight[slot] / c.total;
-        childOrLight = c.next[slot];
+        pmf *= childShare(c, slot);
+        childOrLight = childNext(c, slot);
     }
     return 0.0;
 }
