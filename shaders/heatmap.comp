@@ -28,11 +28,12 @@ uint hitLeafPrimitives = 0u;  // 0: no hit (or brute force, which has no leaves)
 layout(std430, set = 0, binding = PN_BINDING_FILTER_OUT) writeonly buffer HeatOut { vec4 heat[]; };
 layout(std430, set = 0, binding = PN_BINDING_SCRATCH) buffer HeatMax { HeatCounters heatMax; };
 
-// Depth of node `target` (root: 0). Nodes are depth-first: an interior node's left subtree fills
-// the indices from the next one up to its right child, so one comparison per level descends.
+// Depth of node `target` (root: 1, as bvh::treeDepth and `penumbra info` count it, so 0 stays
+// "no hit"). Nodes are depth-first: an interior node's left subtree fills the indices from the
+// next one up to its right child, so one comparison per level descends.
 uint nodeDepth(uint target) {
-    uint n = 0u, depth = 0u;
-    while (n != target && depth < uint(PN_BVH_STACK_SIZE)) {
+    uint n = 0u, depth = 1u;
+    while (n != target && depth <= uint(PN_BVH_STACK_SIZE)) {
         BvhNode node = nodes[n];
         if (node.triCount > 0u) break;  // not reachable for a valid tree
         n = target < node.firstOrRight ? n + 1u : node.firstOrRight;

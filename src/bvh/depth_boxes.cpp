@@ -6,12 +6,13 @@
 namespace penumbra::bvh {
 namespace {
 
-// Visits (node, depth) pairs depth-first with an explicit stack (trees can be deep) until visit
-// returns false. Interior nodes: the left child follows its parent, firstOrRight is the right.
+// Visits (node, depth) pairs depth-first (root: depth 1) with an explicit stack (trees can be
+// deep); a node's children are skipped when visit returns false. Interior nodes: the left child
+// follows its parent, firstOrRight is the right.
 template <class Visit>
 void walk(std::span<const shader::BvhNode> nodes, Visit&& visit) {
     if (nodes.empty()) return;
-    std::vector<std::pair<std::uint32_t, std::size_t>> stack{{0u, 0u}};
+    std::vector<std::pair<std::uint32_t, std::size_t>> stack{{0u, 1u}};
     while (!stack.empty()) {
         const auto [index, depth] = stack.back();
         stack.pop_back();

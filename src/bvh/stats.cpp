@@ -1,8 +1,9 @@
 #include "bvh/stats.h"
 
 #include <algorithm>
-#include <utility>
 #include <vector>
+
+#include "bvh/depth_boxes.h"
 
 namespace penumbra::bvh {
 namespace {
@@ -18,16 +19,16 @@ BvhStats computeStats(const Bvh& bvh, const BuildOptions& options) {
     BvhStats stats;
     stats.nodes = bvh.nodes.size();
     if (bvh.nodes.empty()) return stats;
+    stats.maxDepth = treeDepth(bvh.nodes);  // the viewer's figure too: one convention (depth_boxes.h)
 
     double interiorArea = 0, leafCost = 0;
     std::size_t prims = 0;
-    // (node, depth) pairs; an explicit stack because foreign trees may be arbitrarily deep.
-    std::vector<std::pair<std::uint32_t, std::size_t>> stack{{0, 1}};
+    // The nodes reachable from the root; an explicit stack because foreign trees may be deep.
+    std::vector<std::uint32_t> stack{0};
     while (!stack.empty()) {
-        auto [index, depth] = stack.back();
+        const shader::BvhNode& node = bvh.nodes[stack.back()];
+        const std::uint32_t index = stack.back();
         stack.pop_back();
-        const shader::BvhNode& node = bvh.nodes[index];
-        stats.maxDepth = std::max(stats.maxDepth, depth);
         if (node.triCount > 0) {
             ++stats.leaves;
             prims += node.triCount;
@@ -35,8 +36,8 @@ BvhStats computeStats(const Bvh& bvh, const BuildOptions& options) {
             leafCost += halfArea(node) * node.triCount;
         } else {
             interiorArea += halfArea(node);
-            stack.push_back({index + 1, depth + 1});
-            stack.push_back({node.firstOrRight, depth + 1});
+            stack.push_back(index + 1);
+            stack.push_back(node.firstOrRight);
         }
     }
     double rootArea = halfArea(bvh.nodes[0]);

@@ -171,6 +171,41 @@ std::string deviceFailure(VkResult r, const std::string& name) {
     return message;
 }
 
+// The device the user named (an index, or part of a name, as `penumbra info` lists them); an
+// unknown or unsuitable one is a usage error.
+int selectedDevice(const std::vector<DeviceInfo>& infos, const std::string& selector) {
+    const bool numeric = std::all_of(selector.begin(), selector.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+    int chosen = -1;
+    for (const DeviceInfo& d : infos) {
+        const bool match = numeric ? std::to_string(d.index) == selector
+                                   : lower(d.name).find(lower(selector)) != std::string::npos;
+        if (match) {
+            chosen = static_cast<int>(d.index);
+            break;
+        }
+    }
+    if (chosen < 0)
+        throw UsageError("no Vulkan device matches '" + selector + "' (devices here: " + deviceList(infos) +
+                         "); pass an index or part of a name, as 'penumbra info' lists them");
+    if (!infos[chosen].suitable)
+        throw UsageError("device " + selector + " (" + infos[chosen].name + ") " + infos[chosen].unsuitableWhy +
+                         "; pick another with --device");
+    return chosen;
+}
+
+// The suitable device of the best type (a discrete GPU first); -1, with why none is, if none.
+int bestDevice(const std::vector<DeviceInfo>& infos, std::string& whyNone) {
+    int chosen = -1;
+    for (const DeviceInfo& d : infos)
+        if (d.suitable && (chosen < 0 || typeRank(d.type) > typeRank(infos[chosen].type)))
+            chosen = static_cast<int>(d.index);
+    if (chosen >= 0) return chosen;
+    std::string why;
+    for (const DeviceInfo& d : infos) why += (why.empty() ? "" : "; ") + d.name + " " + d.unsuitableWhy;
+    whyNone = "no Vulkan device here supports Vulkan 1.2 compute (" + why + ")";
+    return -1;
+}
+
 }  // namespace
 
 const char* deviceTypeName(VkPhysicalDeviceType type) {
@@ -226,51 +261,34 @@ ContextResult Context::create(const ContextOptions& options) {
     std::string selector = options.deviceSelector;
     if (selector.empty())
         if (const char* env = std::getenv("PENUMBRA_DEVICE")) selector = env;
-
-    int chosen = -1;
-    if (!selector.empty()) {
-        bool numeric = std::all_of(selector.begin(), selector.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
-        for (const DeviceInfo& d : infos) {
-            bool match = numeric ? std::to_string(d.index) == selector
-                                 : lower(d.name).find(lower(selector)) != std::string::npos;
-            if (match) {
-                chosen = static_cast<int>(d.index);
-                break;
-            }
-        }
-        if (chosen < 0)
-            throw UsageError("no Vulkan device matches '" + selector + "' (devices here: " + deviceList(infos) +
-                             "); pass an index or part of a name, as 'penumbra info' lists them");
-        if (!infos[chosen].suitable)
-            throw UsageError("device " + selector + " (" + infos[chosen].name + ") " +
-                             infos[chosen].unsuitableWhy + "; pick another with --device");
-    } else {
-        for (const DeviceInfo& d : infos)
-            if (d.suitable && (chosen < 0 || typeRank(d.type) > typeRank(infos[chosen].type)))
-                chosen = static_cast<int>(d.index);
-        if (chosen < 0) {
-            std::string why;
-            for (const DeviceInfo& d : infos) why += (why.empty() ? "" : "; ") + d.name + " " + d.unsuitableWhy;
-            return {nullptr, unavailable("no Vulkan device here supports Vulkan 1.2 compute (" + why + ")")};
-        }
-    }
+    std::string none;
+    const int chosen = selector.empty() ? bestDevice(infos, none) : selectedDevice(infos, selector);
+    if (chosen < 0) return {nullptr, unavailable(none)};
 
     ctx->physical_ = devices[chosen];
     ctx->info_ = infos[chosen];
-    ctx->queueFamily_ = computeQueueFamily(ctx->physical_, &ctx->timestampBits_);
+    ctx->createDevice(ctx->chooseQueueFamily());
+    return {std::move(ctx), {}};
+}
+
+std::vector<const char*> Context::chooseQueueFamily() {
+    queueFamily_ = computeQueueFamily(physical_, &timestampBits_);
     std::vector<const char*> deviceExtensions;
-    if (ctx->surface_) {
-        ctx->queueFamily_ = presentQueueFamily(ctx->physical_, ctx->surface_, &ctx->timestampBits_);
-        if (ctx->queueFamily_ == UINT32_MAX)
-            throw Error("device " + ctx->info_.name + " cannot present to this window (no queue with graphics, "
+    if (surface_) {
+        queueFamily_ = presentQueueFamily(physical_, surface_, &timestampBits_);
+        if (queueFamily_ == UINT32_MAX)
+            throw Error("device " + info_.name + " cannot present to this window (no queue with graphics, "
                         "compute and present); pick another with --device");
         deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     }
-    vkGetPhysicalDeviceMemoryProperties(ctx->physical_, &ctx->memory_);
+    vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+    return deviceExtensions;
+}
 
+void Context::createDevice(std::vector<const char*> deviceExtensions) {
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-    queueInfo.queueFamilyIndex = ctx->queueFamily_;
+    queueInfo.queueFamilyIndex = queueFamily_;
     queueInfo.queueCount = 1;
     queueInfo.pQueuePriorities = &priority;
     VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
@@ -278,21 +296,21 @@ ContextResult Context::create(const ContextOptions& options) {
     // Query, then enable only what we use (host query reset lets the timer reset from the CPU).
     VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
     VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported12};
-    vkGetPhysicalDeviceFeatures2(ctx->physical_, &supported);
+    vkGetPhysicalDeviceFeatures2(physical_, &supported);
     features12.hostQueryReset = supported12.hostQueryReset;
-    if (!supported12.hostQueryReset) ctx->timestampBits_ = 0;
+    if (!supported12.hostQueryReset) timestampBits_ = 0;
 
     // Registers and spills per pipeline, where the driver can tell (asked for, never required).
     VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR executableFeatures{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
-    if (hasDeviceExtension(ctx->physical_, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME)) {
+    if (hasDeviceExtension(physical_, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME)) {
         VkPhysicalDeviceFeatures2 query{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &executableFeatures};
-        vkGetPhysicalDeviceFeatures2(ctx->physical_, &query);
+        vkGetPhysicalDeviceFeatures2(physical_, &query);
         if (executableFeatures.pipelineExecutableInfo) {
             deviceExtensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
             executableFeatures.pNext = features.pNext;
             features.pNext = &executableFeatures;
-            ctx->pipelineStatistics_ = true;
+            pipelineStatistics_ = true;
         }
     }
 
@@ -301,12 +319,11 @@ ContextResult Context::create(const ContextOptions& options) {
     deviceInfo.pQueueCreateInfos = &queueInfo;
     deviceInfo.enabledExtensionCount = static_cast<std::uint32_t>(deviceExtensions.size());
     deviceInfo.ppEnabledExtensionNames = deviceExtensions.data();
-    VkResult r = vkCreateDevice(ctx->physical_, &deviceInfo, nullptr, &ctx->device_);
-    if (r != VK_SUCCESS) throw Error(deviceFailure(r, ctx->info_.name));
+    VkResult r = vkCreateDevice(physical_, &deviceInfo, nullptr, &device_);
+    if (r != VK_SUCCESS) throw Error(deviceFailure(r, info_.name));
     tally::deviceCreated();
-    vkGetDeviceQueue(ctx->device_, ctx->queueFamily_, 0, &ctx->queue_);
-    if (ctx->messenger_) ctx->messenger_->setDevice(ctx->device_, ctx->queue_);
-    return {std::move(ctx), {}};
+    vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+    if (messenger_) messenger_->setDevice(device_, queue_);
 }
 
 // The device goes first, while the messenger still listens: the validation layer reports the

@@ -93,6 +93,11 @@ public:
 
 private:
     Context() = default;
+    // create's last steps, once the physical device is chosen: its queue family (one that can
+    // present too when there is a surface; returns the device extensions that needs), then the
+    // logical device with the features and extensions Penumbra uses.
+    std::vector<const char*> chooseQueueFamily();
+    void createDevice(std::vector<const char*> deviceExtensions);
 
     std::shared_ptr<SharedInstance> instance_;
     std::shared_ptr<ValidationLog> log_ = std::make_shared<ValidationLog>();

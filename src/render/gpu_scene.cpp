@@ -8,6 +8,7 @@
 #include <string_view>
 #include <numeric>
 #include <optional>
+#include <span>
 
 #include "bvh/cache.h"
 #include "bvh/sphere.h"
@@ -160,117 +161,167 @@ void addLightList(const Scene& scene, std::span<const EmissiveTriangle> emissive
     out.topLightCount = list.topCount;
 }
 
-}  // namespace
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
 
-SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& options, Accel accel) {
-    input.validate();
-    // Emitters stay world-space triangles in the light BVH: instances of emissive meshes are baked.
+// The scene the arrays are built from, when it is not the input itself. Emitters stay world-space
+// triangles in the light BVH, so instances of emissive meshes are baked into the world (keptFrom:
+// the input's number of each instance left); PENUMBRA_FORCE_INSTANCES=1 instead makes the world's
+// meshes one instance, to measure the two-level traversal on any scene.
+std::optional<Scene> sceneToBuild(const Scene& input, std::vector<std::uint32_t>& keptFrom) {
     std::optional<Scene> baked;
-    std::vector<std::uint32_t> keptFrom;  // the input's number of each instance left after baking
     if (const char* force = std::getenv("PENUMBRA_FORCE_INSTANCES"); force && std::string_view(force) == "1") {
-        baked = input;  // measuring the two-level traversal on any scene: its meshes as one instance
+        baked = input;
         instanceWorldMeshes(*baked);
         bakeEmissiveInstances(*baked);
     } else if (std::any_of(input.instances.begin(), input.instances.end(), [&](const Instance& i) {
-            return prototypeIsEmissive(input, input.prototypes[i.prototype]);
-        })) {
+                   return prototypeIsEmissive(input, input.prototypes[i.prototype]);
+               })) {
         baked = input;
         bakeEmissiveInstances(*baked, &keptFrom);
     }
-    const Scene& scene = baked ? *baked : input;
-    std::vector<SceneTriangle> tris = flattenTriangles(scene);
-    const RenderSpheres spheres = renderSpheres(scene);
-    std::vector<Material> materials = scene.materials;
-    materials.insert(materials.end(), spheres.extraMaterials.begin(), spheres.extraMaterials.end());
-    const std::size_t firstSprite = tris.size() + spheres.spheres.size();
-    const std::size_t primCount = firstSprite + scene.sprites.size();
-    if (primCount >= PN_NO_HIT) throw Error("scene '" + scene.name + "' has too many triangles");
+    return baked;
+}
 
-    std::vector<bvh::Triangle> geometry(tris.size());
-    for (std::size_t i = 0; i < tris.size(); ++i) geometry[i] = {tris[i].p[0], tris[i].p[1], tris[i].p[2]};
+// The primitives in the numbering the builder sees: the triangles, then the spheres, then the
+// sprites.
+struct Primitives {
+    std::vector<SceneTriangle> tris;
+    std::vector<bvh::Triangle> geometry;  // tris' corners
+    RenderSpheres spheres;
+    std::vector<Material> materials;  // the scene's, then the spheres' extra ones
+    std::size_t firstSprite = 0, count = 0;
+};
 
-    SceneArrays out;
-    auto start = std::chrono::steady_clock::now();
-    // Spheres, then sprites, follow the triangles in the primitive numbering the builder sees.
-    // The build goes through the BVH cache, which the command line turns on (bvh/cache.h).
-    std::vector<Aabb> extraBounds;
-    extraBounds.reserve(spheres.spheres.size() + scene.sprites.size());
-    for (const Sphere& s : spheres.spheres) extraBounds.push_back(bvh::sphereBounds(s.center, s.radius));
+Primitives gatherPrimitives(const Scene& scene) {
+    Primitives p;
+    p.tris = flattenTriangles(scene);
+    p.spheres = renderSpheres(scene);
+    p.materials = scene.materials;
+    p.materials.insert(p.materials.end(), p.spheres.extraMaterials.begin(), p.spheres.extraMaterials.end());
+    p.firstSprite = p.tris.size() + p.spheres.spheres.size();
+    p.count = p.firstSprite + scene.sprites.size();
+    if (p.count >= PN_NO_HIT) throw Error("scene '" + scene.name + "' has too many triangles");
+    p.geometry.resize(p.tris.size());
+    for (std::size_t i = 0; i < p.tris.size(); ++i) p.geometry[i] = {p.tris[i].p[0], p.tris[i].p[1], p.tris[i].p[2]};
+    return p;
+}
+
+// Builds the BVH (through the BVH cache, which the command line turns on: bvh/cache.h), the wide
+// tree when asked for, and the statistics, into out; returns the primitive of each leaf slot.
+std::vector<std::uint32_t> buildTree(const Scene& scene, const Primitives& prims, const bvh::BuildOptions& options,
+                                     Accel accel, SceneArrays& out) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<Aabb> extraBounds;  // the spheres', then the sprites'
+    extraBounds.reserve(prims.spheres.spheres.size() + scene.sprites.size());
+    for (const Sphere& s : prims.spheres.spheres) extraBounds.push_back(bvh::sphereBounds(s.center, s.radius));
     for (const Sprite& s : scene.sprites) extraBounds.push_back(spriteBounds(s));
-    bvh::CachedBuild built = bvh::buildCached(geometry, extraBounds, options);
+    bvh::CachedBuild built = bvh::buildCached(prims.geometry, extraBounds, options);
     bvh::Bvh tree = std::move(built.bvh);
     out.bvhFromCache = built.fromCache;
-    out.buildMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    out.buildMilliseconds = millisecondsSince(start);
     if (accel == Accel::Wide && scene.instances.empty()) {
         // The wide tree reorders the primitives, so it comes before anything indexes them.
         const auto wideStart = std::chrono::steady_clock::now();
         bvh::WideBvh wide = bvh::collapseToWide(tree);
         out.wideNodes = std::move(wide.nodes);
         out.wideDepth = wide.maxDepth;
-        out.wideMilliseconds =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wideStart).count();
+        out.wideMilliseconds = millisecondsSince(wideStart);
         out.binaryNodesOnGpu = out.wideNodes.empty();  // an empty scene's walk is the binary one
     }
     out.stats = bvh::computeStats(tree, options);
     out.nodes = std::move(tree.nodes);
+    return std::move(tree.primOrder);
+}
 
-    out.triVerts.resize(primCount);
-    out.triAttribs.resize(primCount);
-    out.primitiveObject.assign(primCount, kNoObject);
+// The luminance of a sampled emissive triangle's material: the light tree's power estimate.
+// Emission textures scale the light by their mean (over an animation's frames, computed once per
+// texture); a sky portal passes on the environment's mean from above.
+class EmitterLuminance {
+public:
+    explicit EmitterLuminance(const Scene& scene)
+        : scene_(scene),
+          textureMeans_(scene.textures.size(), -1.0f),
+          skyPortal_(skyPortalRadiance(scene.environment, scene.background)) {}
+
+    float operator()(const Material& m) {
+        if (m.skyPortal) return luminance(skyPortal_ + m.emission);
+        float texture = 1.0f;
+        if (m.emissionTexture.present()) {
+            float& mean = textureMeans_[std::size_t(m.emissionTexture.texture)];
+            if (mean < 0) mean = meanLuminanceOverFrames(scene_.textures, std::size_t(m.emissionTexture.texture));
+            texture = mean;
+        }
+        return luminance(m.emission) * texture;
+    }
+
+private:
+    const Scene& scene_;
+    std::vector<float> textureMeans_;  // -1: not computed yet
+    Vec3 skyPortal_;
+};
+
+void putSprite(const Sprite& sprite, std::size_t slot, SceneArrays& out) {
+    out.triVerts[slot] = toSpriteVerts(sprite);
+    out.triAttribs[slot] = {};
+    out.triAttribs[slot].materialId = sprite.material;
+    out.triAttribs[slot].area = (sprite.right - sprite.left) * (sprite.top - sprite.bottom);
+    // Not an object the viewer edits, and never a sampled light.
+}
+
+// Sphere k of the render spheres: those past the scene's own are light spheres, not objects the
+// user can edit.
+void putSphere(const Scene& scene, const Sphere& sphere, std::size_t k, std::size_t slot, SceneArrays& out) {
+    if (k < scene.spheres.size()) out.primitiveObject[slot] = sphereObject(scene, k);
+    out.triVerts[slot] = bvh::toSphereVerts(sphere.center, sphere.radius);
+    out.triAttribs[slot] = {};
+    out.triAttribs[slot].materialId = sphere.material;
+    out.triAttribs[slot].area = 4.0f * kPiF * sphere.radius * sphere.radius;
+}
+
+// What filling the leaf slots gathers for the lights.
+struct LeafSlots {
+    std::vector<EmissiveTriangle> emissive;  // the sampled emissive triangles
+    std::vector<std::uint32_t> sphereSlots;  // the slot of each render sphere
+};
+
+// Fills out's per-primitive arrays in leaf order (primOrder[i]: the primitive in slot i).
+LeafSlots fillLeafSlots(const Scene& scene, const Primitives& prims, std::span<const std::uint32_t> primOrder,
+                        SceneArrays& out) {
+    out.triVerts.resize(prims.count);
+    out.triAttribs.resize(prims.count);
+    out.primitiveObject.assign(prims.count, kNoObject);
     std::vector<std::uint32_t> triangleMesh;  // mesh of each triangle, in flattenTriangles' order
-    triangleMesh.reserve(tris.size());
+    triangleMesh.reserve(prims.tris.size());
     for (std::size_t m = 0; m < scene.meshes.size(); ++m)
         triangleMesh.insert(triangleMesh.end(), scene.meshes[m].triangleCount(), std::uint32_t(m));
-    std::vector<float> textureLuminance(scene.textures.size(), -1.0f);  // emission textures' means, on demand
-    std::vector<EmissiveTriangle> emissive;
-    std::vector<std::uint32_t> sphereSlots(spheres.spheres.size());
-    const Vec3 skyPortal = skyPortalRadiance(scene.environment, scene.background);
-    for (std::size_t i = 0; i < tree.primOrder.size(); ++i) {
-        if (tree.primOrder[i] >= firstSprite) {
-            const Sprite& sprite = scene.sprites[tree.primOrder[i] - firstSprite];
-            out.triVerts[i] = toSpriteVerts(sprite);
-            out.triAttribs[i] = {};
-            out.triAttribs[i].materialId = sprite.material;
-            out.triAttribs[i].area = (sprite.right - sprite.left) * (sprite.top - sprite.bottom);
-            continue;  // not an object the viewer edits, and never a sampled light
-        }
-        if (tree.primOrder[i] >= tris.size()) {
-            const std::size_t k = tree.primOrder[i] - tris.size();
-            const Sphere& sphere = spheres.spheres[k];
-            sphereSlots[k] = static_cast<std::uint32_t>(i);
-            // Spheres past the scene's own are light spheres: not objects the user can edit.
-            if (k < scene.spheres.size()) out.primitiveObject[i] = sphereObject(scene, k);
-            out.triVerts[i] = bvh::toSphereVerts(sphere.center, sphere.radius);
-            out.triAttribs[i] = {};
-            out.triAttribs[i].materialId = sphere.material;
-            out.triAttribs[i].area = 4.0f * kPiF * sphere.radius * sphere.radius;
-            continue;
-        }
-        const SceneTriangle& t = tris[tree.primOrder[i]];
-        out.primitiveObject[i] = triangleMesh[tree.primOrder[i]];
-        out.triVerts[i] = bvh::toTriVerts(geometry[tree.primOrder[i]]);
-        shader::TriAttribs& a = out.triAttribs[i];
-        a = bvh::toTriAttribs(t);
-        const Material& m = scene.materials[t.material];
-        if (m.isEmissive() && m.lightSampled && a.area > 0) {
-            // Emission textures scale the light by their mean (over an animation's frames): the
-            // tree's power estimate. A sky portal passes on the environment's mean from above.
-            float texture = 1.0f;
-            if (m.emissionTexture.present()) {
-                float& mean = textureLuminance[std::size_t(m.emissionTexture.texture)];
-                if (mean < 0) mean = meanLuminanceOverFrames(scene.textures, std::size_t(m.emissionTexture.texture));
-                texture = mean;
-            }
-            const float radiance = m.skyPortal ? luminance(skyPortal + m.emission) : luminance(m.emission) * texture;
-            emissive.push_back({static_cast<std::uint32_t>(i), {t.p[0], t.p[1], t.p[2]}, radiance});
+    EmitterLuminance emitterLuminance(scene);
+    LeafSlots found;
+    found.sphereSlots.resize(prims.spheres.spheres.size());
+    for (std::size_t i = 0; i < primOrder.size(); ++i) {
+        const std::uint32_t prim = primOrder[i];
+        if (prim >= prims.firstSprite) {
+            putSprite(scene.sprites[prim - prims.firstSprite], i, out);
+        } else if (prim >= prims.tris.size()) {
+            const std::size_t k = prim - prims.tris.size();
+            found.sphereSlots[k] = static_cast<std::uint32_t>(i);
+            putSphere(scene, prims.spheres.spheres[k], k, i, out);
+        } else {
+            const SceneTriangle& t = prims.tris[prim];
+            out.primitiveObject[i] = triangleMesh[prim];
+            out.triVerts[i] = bvh::toTriVerts(prims.geometry[prim]);
+            out.triAttribs[i] = bvh::toTriAttribs(t);
+            const Material& m = scene.materials[t.material];
+            if (m.isEmissive() && m.lightSampled && out.triAttribs[i].area > 0)
+                found.emissive.push_back({static_cast<std::uint32_t>(i), {t.p[0], t.p[1], t.p[2]}, emitterLuminance(m)});
         }
     }
-    std::vector<bool> punctualMoves;
-    addPunctualLights(scene, out.punctual, punctualMoves);
-    out.sphereLights = buildSphereLightTable(scene, spheres, materials, sphereSlots);
-    addLightList(scene, emissive, punctualMoves, out);
-    out.sphereCount = static_cast<std::uint32_t>(spheres.spheres.size());
+    return found;
+}
 
+// Every texture's texels, one RGBA8 texel per word, in one array.
+void addTextures(const Scene& scene, SceneArrays& out) {
     for (const Texture& t : scene.textures) {
         const std::size_t texels = std::size_t(t.width) * std::size_t(t.height);
         if (out.texels.size() + texels > std::size_t(UINT32_MAX))
@@ -288,23 +339,47 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
         out.texels.resize(first + texels);
         std::memcpy(out.texels.data() + first, t.rgba.data(), texels * 4);
     }
+}
+
+// Traversal checks alpha only where the flag says so, keeping the common path cheap.
+void markAlphaTested(SceneArrays& out) {
+    for (std::size_t i = 0; i < out.triVerts.size(); ++i)
+        if (!bvh::isSphere(out.triVerts[i]) && !bvh::isSprite(out.triVerts[i]) &&
+            out.materials[out.triAttribs[i].materialId].flags & PN_MATERIAL_ALPHA_TESTED)
+            out.triVerts[i].flags |= PN_TRI_ALPHA_TESTED;
+}
+
+}  // namespace
+
+SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& options, Accel accel) {
+    input.validate();
+    std::vector<std::uint32_t> keptFrom;  // the input's number of each instance left after baking
+    const std::optional<Scene> baked = sceneToBuild(input, keptFrom);
+    const Scene& scene = baked ? *baked : input;
+    const Primitives prims = gatherPrimitives(scene);
+
+    SceneArrays out;
+    const std::vector<std::uint32_t> primOrder = buildTree(scene, prims, options, accel, out);
+    const LeafSlots slots = fillLeafSlots(scene, prims, primOrder, out);
+    std::vector<bool> punctualMoves;
+    addPunctualLights(scene, out.punctual, punctualMoves);
+    out.sphereLights = buildSphereLightTable(scene, prims.spheres, prims.materials, slots.sphereSlots);
+    addLightList(scene, slots.emissive, punctualMoves, out);
+    out.sphereCount = static_cast<std::uint32_t>(prims.spheres.spheres.size());
+
+    addTextures(scene, out);
     if (scene.environment.map) {
-        start = std::chrono::steady_clock::now();
+        const auto start = std::chrono::steady_clock::now();
         out.env = buildEnvTable(*scene.environment.map);
-        out.envBuildMilliseconds =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        out.envBuildMilliseconds = millisecondsSince(start);
     }
-    for (const Material& m : materials) out.materials.push_back(toGpuMaterial(m));
+    for (const Material& m : prims.materials) out.materials.push_back(toGpuMaterial(m));
     appendInstanceLevels(scene, out, options);
     // Instances keep the input scene's numbers (what the viewer moves them by).
     if (!keptFrom.empty())
         for (shader::Instance& i : out.instances)
             if (i.id != PN_NO_HIT) i.id = keptFrom.at(i.id);
-    // Traversal checks alpha only where the flag says so, keeping the common path cheap.
-    for (std::size_t i = 0; i < out.triVerts.size(); ++i)
-        if (!bvh::isSphere(out.triVerts[i]) && !bvh::isSprite(out.triVerts[i]) &&
-            out.materials[out.triAttribs[i].materialId].flags & PN_MATERIAL_ALPHA_TESTED)
-            out.triVerts[i].flags |= PN_TRI_ALPHA_TESTED;
+    markAlphaTested(out);
     return out;
 }
 

@@ -50,6 +50,9 @@ std::uint32_t heatScaleMax(DebugView v, const shader::HeatCounters& c) {
     }
 }
 
+// The box overlay draws over the ordinary image, so the other passes see no debug view.
+DebugView shownDebugView(const ViewSettings& s) { return s.debug == DebugView::BvhBoxes ? DebugView::None : s.debug; }
+
 // Settings whose change makes the running mean mix two different images.
 bool changesTheImage(const ViewSettings& a, const ViewSettings& b) {
     auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
@@ -244,12 +247,51 @@ void InteractiveRenderer::createPasses() {
 void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& s) {
     PN_CHECK(width_ > 0 && height_ > 0);
     trace_->reserve(width_, height_, s.samplesPerFrame);  // before this frame records anything
+    startHistory(s);
+    const shader::FrameUniforms f = frameUniforms(camera, s);
+    // An animated texture that turned to its next frame changed the image: blend history as for a
+    // moving camera. Between its ticks the image holds still and the mean keeps converging.
+    const bool animating = previousFrame_ && animationTicked(arrays_.textures, previousFrame_->time, f.time);
+    // Moved instances change the image too (and their light and shadows move with them).
+    const bool instancesMoved =
+        !arrays_.instances.empty() && std::memcmp(lastFrameInstances_.data(), arrays_.instances.data(),
+                                                  arrays_.instances.size() * sizeof(shader::Instance)) != 0;
+    const bool moved = previousFrame_ && (!sameCamera(*previousFrame_, f) || animating || instancesMoved);
+    const shader::ViewerUniforms v = viewerUniforms(s, f, moved);
+    const bool heat = isHeatView(s.debug);
+    std::memcpy(frameUniforms_.mapped(), &f, sizeof(f));
+    std::memcpy(viewerUniforms_.mapped(), &v, sizeof(v));
+    std::memset(counters_.mapped(), 0, sizeof(shader::RayCounters));
+    heatFrame_ = heat;
+
+    timer_.reset();
+    recorded_ = 0;
+    timer_.begin(cmd, std::uint32_t(ViewerPass::Frame));
+    recordUploads(cmd, camera, s, instancesMoved, heat);
+    recordPasses(cmd, s, heat, v.denoise != 0);
+    if (s.debug == DebugView::BvhBoxes) recordBoxOverlay(cmd, s);
+    // This frame's G-buffer is the next frame's previous one.
+    VkBufferCopy copy{0, 0, gbuffer_.size()};
+    vkCmdCopyBuffer(cmd, gbuffer_.get(), gbufferPrev_.get(), 1, &copy);
+    gpu::computeBarrier(cmd);
+    timer_.end(cmd, std::uint32_t(ViewerPass::Frame));
+    recorded_ |= 1u << std::uint32_t(ViewerPass::Frame);
+
+    previousFrame_ = f;
+    historyValid_ = true;
+    ++frameIndex_;
+    stats_.samplesPerPixel = frameIndex_ * s.samplesPerFrame;
+}
+
+void InteractiveRenderer::startHistory(const ViewSettings& s) {
     if (previousSettings_ && changesTheImage(*previousSettings_, s)) historyValid_ = false;
     if (!s.temporal) historyValid_ = false;
     previousSettings_ = s;
     if (!historyValid_) frameIndex_ = 0;
     if (frameIndex_ > 0) std::swap(historyIn_, historyOut_);
+}
 
+shader::FrameUniforms InteractiveRenderer::frameUniforms(const Camera& camera, const ViewSettings& s) const {
     RenderSettings rs;
     rs.width = width_;
     rs.height = height_;
@@ -264,22 +306,15 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     shader::FrameUniforms f = makeSceneFrameUniforms(lens, background_, environment_, rs, *gpuScene_);
     // The torch is the last punctual light, so switching it off is leaving it out of the count.
     if (torchLight_ && !s.torch) --f.punctualCount;
-    // The box overlay draws over the ordinary image, so the other passes see no debug view.
-    const bool boxes = s.debug == DebugView::BvhBoxes;
-    const DebugView shown = boxes ? DebugView::None : s.debug;
-    f.debugMode = std::uint32_t(shown);
-    // An animated texture that turned to its next frame changed the image: blend history as for a
-    // moving camera. Between its ticks the image holds still and the mean keeps converging.
-    const bool animating = previousFrame_ && animationTicked(arrays_.textures, previousFrame_->time, f.time);
-    // Moved instances change the image too (and their light and shadows move with them).
-    const bool instancesMoved =
-        !arrays_.instances.empty() && std::memcmp(lastFrameInstances_.data(), arrays_.instances.data(),
-                                                  arrays_.instances.size() * sizeof(shader::Instance)) != 0;
-    const bool moved = previousFrame_ && (!sameCamera(*previousFrame_, f) || animating || instancesMoved);
-    const shader::FrameUniforms& prev = previousFrame_ ? *previousFrame_ : f;
+    f.debugMode = std::uint32_t(shownDebugView(s));
+    return f;
+}
 
+shader::ViewerUniforms InteractiveRenderer::viewerUniforms(const ViewSettings& s, const shader::FrameUniforms& f,
+                                                           bool moved) const {
+    const DebugView shown = shownDebugView(s);
     shader::ViewerUniforms v{};
-    setPreviousCamera(v, prev);
+    setPreviousCamera(v, previousFrame_ ? *previousFrame_ : f);
     v.historyValid = historyValid_ ? 1u : 0u;
     v.cameraMoved = moved ? 1u : 0u;
     v.exposure = s.exposure;
@@ -301,16 +336,12 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     // The image shows under a see-through or small debug view; the heat counts use the buffer
     // the denoiser writes, so under a heat map the image is not denoised.
     const bool imageShown = shown == DebugView::None || v.debugOpacity < 1.0f || s.debugInset;
-    const bool denoise = s.denoise && s.denoiseIterations > 0 && imageShown && !heat;
-    v.denoise = denoise ? 1u : 0u;
-    std::memcpy(frameUniforms_.mapped(), &f, sizeof(f));
-    std::memcpy(viewerUniforms_.mapped(), &v, sizeof(v));
-    std::memset(counters_.mapped(), 0, sizeof(shader::RayCounters));
-    heatFrame_ = heat;
+    v.denoise = s.denoise && s.denoiseIterations > 0 && imageShown && !heat ? 1u : 0u;
+    return v;
+}
 
-    timer_.reset();
-    recorded_ = 0;
-    timer_.begin(cmd, std::uint32_t(ViewerPass::Frame));
+void InteractiveRenderer::recordUploads(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& s,
+                                        bool instancesMoved, bool heat) {
     if (torchLight_ && s.torch) {
         // attachTorch's placement: 15 cm below the eye.
         shader::PunctualLight light = arrays_.punctual[*torchLight_];
@@ -324,50 +355,37 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0);
     if (heat) vkCmdFillBuffer(cmd, heatCounters_.get(), 0, VK_WHOLE_SIZE, 0);
     transferToComputeBarrier(cmd);
+}
 
-    auto timed = [&](ViewerPass pass, auto&& body) {
-        timer_.begin(cmd, std::uint32_t(pass));
-        body();
-        timer_.end(cmd, std::uint32_t(pass));
-        recorded_ |= 1u << std::uint32_t(pass);
-    };
-    timed(ViewerPass::Trace, [&] { trace_->record(cmd, width_, height_, s.samplesPerFrame, tracedFrames_++, s.maxBounces, true); });
-    timed(ViewerPass::GBuffer, [&] { gbufferPass_->record(cmd, width_, height_); });
-    if (heat) timed(ViewerPass::Heatmap, [&] { heatmap_->record(cmd, width_, height_); });
+void InteractiveRenderer::recordPasses(VkCommandBuffer cmd, const ViewSettings& s, bool heat, bool denoise) {
+    timed(cmd, ViewerPass::Trace,
+          [&] { trace_->record(cmd, width_, height_, s.samplesPerFrame, tracedFrames_++, s.maxBounces, true); });
+    timed(cmd, ViewerPass::GBuffer, [&] { gbufferPass_->record(cmd, width_, height_); });
+    if (heat) timed(cmd, ViewerPass::Heatmap, [&] { heatmap_->record(cmd, width_, height_); });
     gpu::computeBarrier(cmd);
     const bool fromA = historyIn_ == &historyA_;
-    timed(ViewerPass::Temporal, [&] { (fromA ? temporalAB_ : temporalBA_)->record(cmd, width_, height_); });
+    timed(cmd, ViewerPass::Temporal, [&] { (fromA ? temporalAB_ : temporalBA_)->record(cmd, width_, height_); });
     gpu::computeBarrier(cmd);
     TonemapPass& tonemap = fromA ? *tonemapB_ : *tonemapA_;
     if (denoise) {
-        timed(ViewerPass::Denoise, [&] { denoise_->record(cmd, width_, height_, s.denoiseIterations); });
+        timed(cmd, ViewerPass::Denoise, [&] { denoise_->record(cmd, width_, height_, s.denoiseIterations); });
         denoised_ = &denoise_->output(s.denoiseIterations);
         tonemap.setFiltered(*denoised_);
     } else {
         denoised_ = nullptr;
         tonemap.setFiltered(filterB_);  // the heat map's counts, when it ran
     }
-    timed(ViewerPass::Tonemap, [&] { tonemap.record(cmd, width_, height_); });
+    timed(cmd, ViewerPass::Tonemap, [&] { tonemap.record(cmd, width_, height_); });
     gpu::computeBarrier(cmd);
-    if (boxes) {
-        if (boxesDepth_ != s.boxDepth) {  // the previous frame has finished, so its boxes are free
-            boxes_->setBoxes(bvh::nodesAtDepth(arrays_.nodes, s.boxDepth, PN_MAX_OVERLAY_BOXES));
-            boxesDepth_ = s.boxDepth;
-        }
-        timed(ViewerPass::Boxes, [&] { boxes_->record(cmd, width_, height_, s.boxLineWidth); });
-        gpu::computeBarrier(cmd);
-    }
-    // This frame's G-buffer is the next frame's previous one.
-    VkBufferCopy copy{0, 0, gbuffer_.size()};
-    vkCmdCopyBuffer(cmd, gbuffer_.get(), gbufferPrev_.get(), 1, &copy);
-    gpu::computeBarrier(cmd);
-    timer_.end(cmd, std::uint32_t(ViewerPass::Frame));
-    recorded_ |= 1u << std::uint32_t(ViewerPass::Frame);
+}
 
-    previousFrame_ = f;
-    historyValid_ = true;
-    ++frameIndex_;
-    stats_.samplesPerPixel = frameIndex_ * s.samplesPerFrame;
+void InteractiveRenderer::recordBoxOverlay(VkCommandBuffer cmd, const ViewSettings& s) {
+    if (boxesDepth_ != s.boxDepth) {  // the previous frame has finished, so its boxes are free
+        boxes_->setBoxes(bvh::nodesAtDepth(arrays_.nodes, s.boxDepth, PN_MAX_OVERLAY_BOXES));
+        boxesDepth_ = s.boxDepth;
+    }
+    timed(cmd, ViewerPass::Boxes, [&] { boxes_->record(cmd, width_, height_, s.boxLineWidth); });
+    gpu::computeBarrier(cmd);
 }
 
 void InteractiveRenderer::finishFrame() {

@@ -94,6 +94,22 @@ private:
     // Sends moved instances, the rebuilt top level and the previous frame's instances up before
     // this frame's passes; `moved`: the instances differ from the last frame's.
     void uploadInstances(VkCommandBuffer cmd, bool moved);
+    // record's steps: the history's reset and swap, the two uniform blocks, the uploads before
+    // the passes (torch, instances, cleared counters), the passes, and the box overlay.
+    void startHistory(const ViewSettings& s);
+    shader::FrameUniforms frameUniforms(const Camera& camera, const ViewSettings& s) const;
+    shader::ViewerUniforms viewerUniforms(const ViewSettings& s, const shader::FrameUniforms& f, bool moved) const;
+    void recordUploads(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& s, bool instancesMoved, bool heat);
+    void recordPasses(VkCommandBuffer cmd, const ViewSettings& s, bool heat, bool denoise);
+    void recordBoxOverlay(VkCommandBuffer cmd, const ViewSettings& s);
+    // Records body between the pass's timestamps and notes that the pass ran this frame.
+    template <class Body>
+    void timed(VkCommandBuffer cmd, ViewerPass pass, Body&& body) {
+        timer_.begin(cmd, std::uint32_t(pass));
+        body();
+        timer_.end(cmd, std::uint32_t(pass));
+        recorded_ |= 1u << std::uint32_t(pass);
+    }
 
     const gpu::Context& ctx_;
     SceneArrays arrays_;

@@ -45,7 +45,7 @@ struct ViewSettings {
     DebugView debug = DebugView::None;
     float debugOpacity = 1.0f;  // of the debug view over the image: 1 shows only the view, 0 only the image
     bool debugInset = false;    // the debug view in a small window over the image (picture-in-picture)
-    std::uint32_t boxDepth = 0;   // BvhBoxes: the BVH depth whose boxes are outlined (root: 0)
+    std::uint32_t boxDepth = 1;   // BvhBoxes: the BVH depth whose boxes are outlined (root: 1)
     float boxLineWidth = 1.5f;    // BvhBoxes: pixels
     // Depth of field, overriding the camera's own (a thin lens; radius 0 is a pinhole).
     float apertureRadius = 0.0f;  // metres

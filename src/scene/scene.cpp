@@ -42,13 +42,10 @@ Aabb spriteBounds(const Sprite& s) {
     return box;
 }
 
-void Scene::validate() const {
-    if (materials.empty()) throw Error("scene '" + name + "' has no materials");
-    auto checkTexture = [&](const Material& mat, const TextureRef& ref) {
-        if (ref.texture >= static_cast<int>(textures.size()))
-            throw Error("material '" + mat.name + "' uses texture " + std::to_string(ref.texture) +
-                        ", which does not exist");
-    };
+namespace {
+
+// Each texture's pixels match its size, and an animated texture's frames are all in the scene.
+void validateTextures(const std::vector<Texture>& textures) {
     for (std::size_t i = 0; i < textures.size(); ++i) {
         const Texture& tex = textures[i];
         if (tex.width <= 0 || tex.height <= 0 ||
@@ -63,76 +60,105 @@ void Scene::validate() const {
             throw Error("texture '" + tex.name + "' is frame " + std::to_string(a.frame) + " of " +
                         std::to_string(a.frames) + " of an animation whose frames are not all in the scene");
     }
-    for (const Material& mat : materials) {
+}
+
+void validateMaterials(const Scene& scene) {
+    for (const Material& mat : scene.materials) {
         for (const TextureRef* ref : {&mat.albedoTexture, &mat.emissionTexture, &mat.normalTexture,
                                       &mat.metallicRoughnessTexture})
-            checkTexture(mat, *ref);
+            if (ref->texture >= static_cast<int>(scene.textures.size()))
+                throw Error("material '" + mat.name + "' uses texture " + std::to_string(ref->texture) +
+                            ", which does not exist");
         if (!isFinite(mat.albedo) || minComponent(mat.albedo) < 0 || maxComponent(mat.albedo) > 1)
             throw Error("material '" + mat.name + "': albedo must be finite and within [0, 1]");
         if (!isFinite(mat.emission) || minComponent(mat.emission) < 0)
             throw Error("material '" + mat.name + "': emission must be finite and >= 0");
     }
-    auto checkMesh = [&](const Mesh& m, const std::string& where) {
-        if (m.indices.size() % 3 != 0)
-            throw Error(where + ": index count " + std::to_string(m.indices.size()) +
-                        " is not a multiple of 3");
-        if (m.material >= materials.size())
-            throw Error(where + ": material " + std::to_string(m.material) + " does not exist");
-        if (!m.normals.empty() && m.normals.size() != m.positions.size())
-            throw Error(where + ": normal count differs from position count");
-        if (!m.uvs.empty() && m.uvs.size() != m.positions.size())
-            throw Error(where + ": uv count differs from position count");
-        for (std::uint32_t i : m.indices)
-            if (i >= m.positions.size())
-                throw Error(where + ": index " + std::to_string(i) + " is past the " +
-                            std::to_string(m.positions.size()) + " vertices");
-        for (Vec3 p : m.positions)
-            if (!isFinite(p)) throw Error(where + ": a vertex position is not finite");
-    };
-    for (const Mesh& m : meshes) checkMesh(m, "mesh '" + m.name + "' in scene '" + name + "'");
-    for (const Prototype& p : prototypes)
-        for (const Mesh& m : p.meshes) checkMesh(m, "mesh '" + m.name + "' of instanced '" + p.name + "'");
-    for (std::size_t i = 0; i < instances.size(); ++i) {
-        const std::string where = "instance " + std::to_string(i) + " in scene '" + name + "'";
-        if (instances[i].prototype >= prototypes.size())
-            throw Error(where + ": it places prototype " + std::to_string(instances[i].prototype) +
+}
+
+void validateMesh(const Mesh& m, std::size_t materialCount, const std::string& where) {
+    if (m.indices.size() % 3 != 0)
+        throw Error(where + ": index count " + std::to_string(m.indices.size()) + " is not a multiple of 3");
+    if (m.material >= materialCount)
+        throw Error(where + ": material " + std::to_string(m.material) + " does not exist");
+    if (!m.normals.empty() && m.normals.size() != m.positions.size())
+        throw Error(where + ": normal count differs from position count");
+    if (!m.uvs.empty() && m.uvs.size() != m.positions.size())
+        throw Error(where + ": uv count differs from position count");
+    for (std::uint32_t i : m.indices)
+        if (i >= m.positions.size())
+            throw Error(where + ": index " + std::to_string(i) + " is past the " +
+                        std::to_string(m.positions.size()) + " vertices");
+    for (Vec3 p : m.positions)
+        if (!isFinite(p)) throw Error(where + ": a vertex position is not finite");
+}
+
+// Instances place prototypes that exist with finite, invertible transforms; their animations move
+// instances that exist, along valid tracks.
+void validateInstances(const Scene& scene) {
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& instance = scene.instances[i];
+        const std::string where = "instance " + std::to_string(i) + " in scene '" + scene.name + "'";
+        if (instance.prototype >= scene.prototypes.size())
+            throw Error(where + ": it places prototype " + std::to_string(instance.prototype) +
                         ", which does not exist");
-        for (const auto& row : instances[i].transform.m)
+        for (const auto& row : instance.transform.m)
             for (float v : row)
                 if (!std::isfinite(v)) throw Error(where + ": its transform is not finite");
-        const float det = instances[i].transform.determinant();
+        const float det = instance.transform.determinant();
         if (!(std::abs(det) > 1e-12f) || !std::isfinite(1.0f / det))
             throw Error(where + ": its transform flattens it (determinant 0); give it a nonzero scale");
     }
-    for (std::size_t i = 0; i < instanceAnimations.size(); ++i) {
-        const InstanceAnimation& a = instanceAnimations[i];
-        const std::string where = "animation " + std::to_string(i) + " in scene '" + name + "'";
-        if (a.instance >= instances.size()) throw Error(where + ": it moves an instance that does not exist");
+    for (std::size_t i = 0; i < scene.instanceAnimations.size(); ++i) {
+        const InstanceAnimation& a = scene.instanceAnimations[i];
+        const std::string where = "animation " + std::to_string(i) + " in scene '" + scene.name + "'";
+        if (a.instance >= scene.instances.size()) throw Error(where + ": it moves an instance that does not exist");
         for (const NodeMotion& m : a.chain) {
             if (m.scripted) validateMotion(*m.scripted, where);
             for (const Track* t : {&m.translationTrack, &m.rotationTrack, &m.scaleTrack}) validateTrack(*t, where);
         }
     }
-    for (std::size_t i = 0; i < spheres.size(); ++i) {
-        const Sphere& s = spheres[i];
-        const std::string where = "sphere " + std::to_string(i) + " in scene '" + name + "'";
+}
+
+void validateSpheres(const Scene& scene) {
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        const std::string where = "sphere " + std::to_string(i) + " in scene '" + scene.name + "'";
         if (!isFinite(s.center)) throw Error(where + ": centre is not finite");
         if (!(s.radius > 0) || !std::isfinite(s.radius)) throw Error(where + ": radius must be a finite number > 0");
-        if (s.material >= materials.size())
+        if (s.material >= scene.materials.size())
             throw Error(where + ": material " + std::to_string(s.material) + " does not exist");
     }
-    for (std::size_t i = 0; i < sprites.size(); ++i) {
-        const Sprite& s = sprites[i];
-        const std::string where = "sprite " + std::to_string(i) + " in scene '" + name + "'";
+}
+
+void validateSprites(const Scene& scene) {
+    for (std::size_t i = 0; i < scene.sprites.size(); ++i) {
+        const Sprite& s = scene.sprites[i];
+        const std::string where = "sprite " + std::to_string(i) + " in scene '" + scene.name + "'";
         const float extents[] = {s.left, s.right, s.bottom, s.top};
         if (!isFinite(s.position) || !isFinite(s.facing)) throw Error(where + ": position or facing is not finite");
         for (float e : extents)
             if (!std::isfinite(e) || std::abs(e) > 1e6f) throw Error(where + ": an extent is not a finite size");
         if (!(s.left < s.right) || !(s.bottom < s.top)) throw Error(where + ": its card has no area");
         if (s.rotations != 1 && s.rotations != 8) throw Error(where + ": it must have 1 or 8 views");
-        if (s.material >= materials.size())
+        if (s.material >= scene.materials.size())
             throw Error(where + ": material " + std::to_string(s.material) + " does not exist");
     }
+}
+
+}  // namespace
+
+void Scene::validate() const {
+    if (materials.empty()) throw Error("scene '" + name + "' has no materials");
+    validateTextures(textures);
+    validateMaterials(*this);
+    for (const Mesh& m : meshes) validateMesh(m, materials.size(), "mesh '" + m.name + "' in scene '" + name + "'");
+    for (const Prototype& p : prototypes)
+        for (const Mesh& m : p.meshes)
+            validateMesh(m, materials.size(), "mesh '" + m.name + "' of instanced '" + p.name + "'");
+    validateInstances(*this);
+    validateSpheres(*this);
+    validateSprites(*this);
     for (const Light& l : lights)
         if (!(l.angularRadius >= 0 && l.angularRadius <= kMaxAngularRadius))
             throw Error("light '" + l.name + "': angular radius must be within [0, 45] degrees");

@@ -1,4 +1,4 @@
-// The BVH box overlay at depth 0 outlines the root box's projection: pixels on its projected
+// The BVH box overlay at depth 1 (the root) outlines the root box's projection: pixels on its projected
 // edges turn the overlay colour, pixels well away from every edge (the centre) keep the image.
 #include <algorithm>
 #include <cmath>
@@ -39,7 +39,7 @@ double distanceToBoxEdges(const shader::FrameUniforms& f, const shader::BvhNode&
     return best;
 }
 
-TEST_F(ViewerBoxesTest, DepthZeroOutlinesTheRootBox) {
+TEST_F(ViewerBoxesTest, DepthOneOutlinesTheRootBox) {
     Scene scene;
     scene.name = "one sphere";
     scene.materials.push_back(Material{});
@@ -53,7 +53,7 @@ TEST_F(ViewerBoxesTest, DepthZeroOutlinesTheRootBox) {
     ViewSettings vs;
     vs.maxBounces = 1;
     vs.debug = DebugView::BvhBoxes;
-    vs.boxDepth = 0;
+    vs.boxDepth = 1;
     vs.boxLineWidth = 1.5f;
     viewer.commands().run([&](VkCommandBuffer cmd) { viewer.record(cmd, scene.camera, vs); });
     viewer.finishFrame();

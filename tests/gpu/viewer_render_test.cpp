@@ -106,6 +106,7 @@ std::pair<std::uint32_t, std::uint32_t> hitLeaf(const SceneArrays& a, const Ray&
     const bvh::Hit hit = bvh::closestHit(a.nodes, a.triVerts, ray);
     if (hit.triangle == PN_NO_HIT) return {0, 0};
     std::vector<std::uint32_t> depth(a.nodes.size(), 0);
+    depth[0] = 1;  // the root, as bvh::treeDepth counts
     for (std::size_t n = 0; n < a.nodes.size(); ++n) {
         const shader::BvhNode& node = a.nodes[n];
         if (node.triCount == 0) {

@@ -32,8 +32,16 @@ namespace fs = std::filesystem;
         GTEST_SKIP() << "xvfb-run is not installed";                                                   \
     } while (0)
 
+// Under Xvfb, xvfb-run keeps its X authority file and the server's messages in the test's own
+// folder (-f, -e): left to itself it makes a temporary folder per run and exits 5 ("problem while
+// cleaning up temporary directory") when removing it fails, which happened with several runs at
+// once. A display number taken by another Xvfb meanwhile is retried by -a.
 RunResult runViewer(const fs::path& dir, const std::string& args, bool underXvfb, const std::string& env = "") {
-    return runPenumbra(dir, args, env, underXvfb ? "xvfb-run -a -s '-screen 0 640x480x24'" : "");
+    if (!underXvfb) return runPenumbra(dir, args, env);
+    std::ofstream(dir / "Xauthority").flush();  // xauth warns when the file is missing
+    return runPenumbra(dir, args, env,
+                       "xvfb-run -a -f '" + (dir / "Xauthority").string() + "' -e '" + (dir / "xvfb.log").string() +
+                           "' -s '-screen 0 640x480x24'");
 }
 
 class ViewerSmokeTest : public ::testing::Test {

@@ -150,8 +150,8 @@ void display(ViewSettings& s, const PanelState& state, const ViewerStats& stats)
     if (s.debug == DebugView::LeafTriangles) heatLegend("leaf primitives", stats.heatMaxLeafTriangles);
     if (s.debug == DebugView::BvhBoxes) {
         int depth = int(s.boxDepth);
-        if (ImGui::SliderInt("box depth (root: 0)", &depth, 0, int(state.bvhDepth)))
-            s.boxDepth = std::uint32_t(std::max(depth, 0));
+        if (ImGui::SliderInt("box depth (root: 1)", &depth, 1, std::max(int(state.bvhDepth), 1)))
+            s.boxDepth = std::uint32_t(std::max(depth, 1));
         ImGui::SliderFloat("line width (px)", &s.boxLineWidth, 1.0f, 5.0f, "%.1f");
         ImGui::Text("at most %u boxes are drawn", PN_MAX_OVERLAY_BOXES);
     }

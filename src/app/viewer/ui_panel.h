@@ -29,7 +29,7 @@ struct PanelState {
     double fps = 0;
     float cameraSpeed = 0;
     std::size_t triangles = 0, bvhNodes = 0;
-    std::size_t bvhDepth = 0;  // the slider's range in the box overlay
+    std::size_t bvhDepth = 0;  // bvh::treeDepth, as `penumbra info` prints it: the box slider's top
     bool hasTorch = false;
     bool walking = false, canWalk = false, pointerCaptured = false;
     std::string message;  // last screenshot path or error

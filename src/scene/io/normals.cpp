@@ -73,24 +73,11 @@ std::uint32_t weldPositions(const std::vector<Vec3>& positions, std::vector<std:
     return ids;
 }
 
-}  // namespace
-
-void generateCreaseNormals(Mesh& mesh, float creaseDegrees) {
-    const std::size_t vertexCount = mesh.positions.size();
+// Unit face normals (zero for degenerate faces) and the angle at each corner.
+void faceNormalsAndAngles(const Mesh& mesh, std::vector<Vec3>& faceNormal, std::vector<float>& angle) {
     const std::size_t triCount = mesh.indices.size() / 3;
-    if (vertexCount == 0 || triCount == 0) {
-        mesh.normals.clear();
-        return;
-    }
-    const float cosCrease = std::cos(degreesToRadians(creaseDegrees));
-
-    // 1. Weld: vertices with bit-identical positions share a position id.
-    std::vector<std::uint32_t> posId;
-    const std::size_t idCount = weldPositions(mesh.positions, posId);
-
-    // 2. Unit face normals and corner angles.
-    std::vector<Vec3> faceNormal = hugeVector<Vec3>(triCount);
-    std::vector<float> angle = hugeVector<float>(triCount * 3);
+    faceNormal = hugeVector<Vec3>(triCount);
+    angle = hugeVector<float>(triCount * 3);
     parallelFor(triCount, 16 * 1024, [&](std::size_t lo, std::size_t hi) {
         for (std::size_t t = lo; t < hi; ++t) {
             const Vec3 p0 = mesh.positions[mesh.indices[3 * t]];
@@ -103,24 +90,35 @@ void generateCreaseNormals(Mesh& mesh, float creaseDegrees) {
             angle[3 * t + 2] = cornerAngle(p2, p0, p1);
         }
     });
+}
 
-    // 3. Corners around each position id (compressed rows).
-    std::vector<std::uint32_t> start = hugeVector<std::uint32_t>(idCount + 1, 0);
-    for (std::uint32_t v : mesh.indices) ++start[posId[v] + 1];
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    std::vector<std::uint32_t> corners = hugeVector<std::uint32_t>(mesh.indices.size());
-    {
-        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-        for (std::size_t c = 0; c < mesh.indices.size(); ++c)
-            corners[fill[posId[mesh.indices[c]]]++] = static_cast<std::uint32_t>(c);
-    }
+// The corners (index-buffer positions) around each welded position, as compressed rows: those of
+// position id i are corners[start[i] .. start[i + 1]).
+struct CornerFans {
+    std::vector<std::uint32_t> start, corners;
+};
 
-    // 4. One normal per corner: the angle-weighted sum of the faces around it within the crease.
-    std::vector<Vec3> cornerNormal = hugeVector<Vec3>(mesh.indices.size());
-    parallelFor(idCount, 16 * 1024, [&](std::size_t lo, std::size_t hi) {
+CornerFans cornersAroundPositions(const std::vector<std::uint32_t>& indices, const std::vector<std::uint32_t>& posId,
+                                  std::size_t idCount) {
+    CornerFans fans;
+    fans.start = hugeVector<std::uint32_t>(idCount + 1, 0);
+    for (std::uint32_t v : indices) ++fans.start[posId[v] + 1];
+    std::partial_sum(fans.start.begin(), fans.start.end(), fans.start.begin());
+    fans.corners = hugeVector<std::uint32_t>(indices.size());
+    std::vector<std::uint32_t> fill(fans.start.begin(), fans.start.end() - 1);
+    for (std::size_t c = 0; c < indices.size(); ++c) fans.corners[fill[posId[indices[c]]]++] = static_cast<std::uint32_t>(c);
+    return fans;
+}
+
+// One normal per corner: the angle-weighted sum of the faces around its position within the
+// crease (flat beyond kMaxFan faces).
+std::vector<Vec3> smoothCornerNormals(const CornerFans& fans, const std::vector<Vec3>& faceNormal,
+                                      const std::vector<float>& angle, float cosCrease) {
+    std::vector<Vec3> cornerNormal = hugeVector<Vec3>(fans.corners.size());
+    parallelFor(fans.start.size() - 1, 16 * 1024, [&](std::size_t lo, std::size_t hi) {
         for (std::size_t id = lo; id < hi; ++id) {
-            const std::uint32_t* begin = corners.data() + start[id];
-            const std::uint32_t* end = corners.data() + start[id + 1];
+            const std::uint32_t* begin = fans.corners.data() + fans.start[id];
+            const std::uint32_t* end = fans.corners.data() + fans.start[id + 1];
             const bool tooMany = std::size_t(end - begin) > kMaxFan;
             for (const std::uint32_t* c = begin; c != end; ++c) {
                 const Vec3 fn = faceNormal[*c / 3];
@@ -139,9 +137,13 @@ void generateCreaseNormals(Mesh& mesh, float creaseDegrees) {
             }
         }
     });
+    return cornerNormal;
+}
 
-    // 5. Split vertices whose corners ended up with different normals.
-    struct Entry {
+// Gives every corner its normal, splitting vertices whose corners ended up with different ones.
+void splitVerticesByNormal(Mesh& mesh, const std::vector<Vec3>& cornerNormal) {
+    const std::size_t vertexCount = mesh.positions.size();
+    struct Entry {  // one of a vertex's normals so far, in a list per vertex
         Vec3 normal;
         std::uint32_t index;
         std::uint32_t next;
@@ -178,6 +180,24 @@ void generateCreaseNormals(Mesh& mesh, float creaseDegrees) {
     mesh.positions = std::move(positions);
     mesh.normals = std::move(normals);
     mesh.uvs = std::move(uvs);
+}
+
+}  // namespace
+
+void generateCreaseNormals(Mesh& mesh, float creaseDegrees) {
+    if (mesh.positions.empty() || mesh.indices.size() < 3) {
+        mesh.normals.clear();
+        return;
+    }
+    // Vertices with bit-identical positions share a position id, so smoothing crosses seams.
+    std::vector<std::uint32_t> posId;
+    const std::size_t idCount = weldPositions(mesh.positions, posId);
+    std::vector<Vec3> faceNormal;
+    std::vector<float> angle;
+    faceNormalsAndAngles(mesh, faceNormal, angle);
+    const CornerFans fans = cornersAroundPositions(mesh.indices, posId, idCount);
+    const float cosCrease = std::cos(degreesToRadians(creaseDegrees));
+    splitVerticesByNormal(mesh, smoothCornerNormals(fans, faceNormal, angle, cosCrease));
 }
 
 Camera cameraFittingBounds(const Aabb& bounds, float fovYDegrees) {

@@ -469,15 +469,9 @@ CameraPath readCameraPath(const Reader& r, const Json& j, const Camera& camera) 
     return path;
 }
 
-Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& baseDir, const std::string& name,
-                            SceneFileSettings* settings) {
-    Reader r(name);
-    if (g_nesting >= kMaxNesting) r.fail("assets", "scene files nest more than 8 deep (does one include itself?)");
-    struct Nest {
-        Nest() { ++g_nesting; }
-        ~Nest() { --g_nesting; }
-    } nest;
+namespace {
 
+Json parseDocument(const Reader& r, std::string_view text, const std::string& name) {
     Json doc;
     try {
         doc = Json::parse(text.begin(), text.end());
@@ -485,71 +479,61 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
         throw Error(name + ": not valid JSON: " + e.what());
     }
     if (!doc.is_object()) r.fail("top level", "expected an object");
+    return doc;
+}
 
-    Scene scene;
-    scene.name = std::filesystem::path(name).stem().string();
-    const std::vector<AssetMaterial> assetMaterials = readAssets(r, doc, baseDir, scene);
-    if (doc.contains("materials")) readMaterials(r, doc["materials"], scene);
-    assignAssetMaterials(r, assetMaterials, scene);
-    if (doc.contains("meshes")) {
-        const Json& meshes = doc["meshes"];
-        if (!meshes.is_array()) r.fail("meshes", "expected an array");
-        for (std::size_t i = 0; i < meshes.size(); ++i)
-            scene.meshes.push_back(readInlineMesh(r, meshes[i], "meshes[" + std::to_string(i) + "]", scene));
-    }
-    if (doc.contains("quads")) {
-        const Json& quads = doc["quads"];
-        if (!quads.is_array()) r.fail("quads", "expected an array");
-        for (std::size_t i = 0; i < quads.size(); ++i)
-            scene.meshes.push_back(readQuad(r, quads[i], "quads[" + std::to_string(i) + "]", scene));
-    }
-    if (doc.contains("spheres")) {
-        const Json& spheres = doc["spheres"];
-        if (!spheres.is_array()) r.fail("spheres", "expected an array");
-        for (std::size_t i = 0; i < spheres.size(); ++i)
-            scene.spheres.push_back(readSphere(r, spheres[i], "spheres[" + std::to_string(i) + "]", scene));
-    }
-    if (doc.contains("lights")) {
-        const Json& lights = doc["lights"];
-        if (!lights.is_array()) r.fail("lights", "expected an array");
-        for (std::size_t i = 0; i < lights.size(); ++i)
-            scene.lights.push_back(readLight(r, lights[i], "lights[" + std::to_string(i) + "]"));
-    }
-    if (doc.contains("background")) scene.background = r.vec3(doc["background"], "background", 0, 1e9f);
-    if (doc.contains("environment")) {
-        try {
-            applyEnvironment(scene, readEnvironment(r, doc["environment"], baseDir));
-        } catch (const Error& e) {
-            r.fail("environment", e.what());
-        }
-    }
-    if (doc.contains("camera")) {
-        const Json& c = doc["camera"];
-        if (!c.is_object()) r.fail("camera", "expected an object");
-        if (c.contains("position")) scene.camera.position = r.vec3(c["position"], "camera.position");
-        if (c.contains("look_at")) scene.camera.lookAt = r.vec3(c["look_at"], "camera.look_at");
-        if (c.contains("up")) scene.camera.up = r.vec3(c["up"], "camera.up");
-        if (c.contains("fov")) scene.camera.fovYDegrees = r.number(c["fov"], "camera.fov", 0.01f, 179.99f);
-        if (c.contains("aperture")) scene.camera.apertureRadius = r.number(c["aperture"], "camera.aperture", 0, 1e6f);
-        if (c.contains("focus_distance"))
-            scene.camera.focusDistance = r.number(c["focus_distance"], "camera.focus_distance", 1e-6f, 1e9f);
-    }
-    if (doc.contains("camera_path")) scene.cameraPath = readCameraPath(r, doc["camera_path"], scene.camera);
-    if (doc.contains("render")) {
-        // Checked even when the caller does not want them: a bad file is bad either way.
-        SceneFileSettings read;
-        const Json& s = doc["render"];
-        if (!s.is_object()) r.fail("render", "expected an object");
-        if (s.contains("spp")) read.samplesPerPixel = r.count(s["spp"], "render.spp", 1u << 20);
-        if (s.contains("bounces")) read.maxBounces = r.count(s["bounces"], "render.bounces", 1024);
-        if (s.contains("width")) read.width = r.count(s["width"], "render.width", 16384);
-        if (s.contains("height")) read.height = r.count(s["height"], "render.height", 16384);
-        if (s.contains("exposure")) read.exposure = r.number(s["exposure"], "render.exposure", -64, 64);
-        if (settings) *settings = read;
-    }
-    if (scene.meshes.empty() && scene.spheres.empty() && scene.instances.empty())
-        r.fail("top level", "the scene has no geometry (add \"assets\", \"meshes\", \"quads\" or \"spheres\")");
-    // Inline meshes, and assets scaled up, can hold faces the renderer cannot use.
+// doc[key], when present, is an array: read(element, "key[i]") for each element.
+template <class Read>
+void forEachInArray(const Reader& r, const Json& doc, const char* key, Read&& read) {
+    if (!doc.contains(key)) return;
+    const Json& array = doc[key];
+    if (!array.is_array()) r.fail(key, "expected an array");
+    for (std::size_t i = 0; i < array.size(); ++i) read(array[i], std::string(key) + "[" + std::to_string(i) + "]");
+}
+
+// The shapes and lights written in the file itself: "meshes", "quads", "spheres", "lights".
+void readInlineGeometry(const Reader& r, const Json& doc, Scene& scene) {
+    forEachInArray(r, doc, "meshes", [&](const Json& j, const std::string& where) {
+        scene.meshes.push_back(readInlineMesh(r, j, where, scene));
+    });
+    forEachInArray(r, doc, "quads", [&](const Json& j, const std::string& where) {
+        scene.meshes.push_back(readQuad(r, j, where, scene));
+    });
+    forEachInArray(r, doc, "spheres", [&](const Json& j, const std::string& where) {
+        scene.spheres.push_back(readSphere(r, j, where, scene));
+    });
+    forEachInArray(r, doc, "lights", [&](const Json& j, const std::string& where) {
+        scene.lights.push_back(readLight(r, j, where));
+    });
+}
+
+// "camera": {"position", "look_at", "up", "fov", "aperture", "focus_distance"}, each optional.
+void readCamera(const Reader& r, const Json& c, Camera& camera) {
+    if (!c.is_object()) r.fail("camera", "expected an object");
+    if (c.contains("position")) camera.position = r.vec3(c["position"], "camera.position");
+    if (c.contains("look_at")) camera.lookAt = r.vec3(c["look_at"], "camera.look_at");
+    if (c.contains("up")) camera.up = r.vec3(c["up"], "camera.up");
+    if (c.contains("fov")) camera.fovYDegrees = r.number(c["fov"], "camera.fov", 0.01f, 179.99f);
+    if (c.contains("aperture")) camera.apertureRadius = r.number(c["aperture"], "camera.aperture", 0, 1e6f);
+    if (c.contains("focus_distance"))
+        camera.focusDistance = r.number(c["focus_distance"], "camera.focus_distance", 1e-6f, 1e9f);
+}
+
+// "render": {"spp", "bounces", "width", "height", "exposure"}, each optional.
+SceneFileSettings readRenderSettings(const Reader& r, const Json& s) {
+    SceneFileSettings read;
+    if (!s.is_object()) r.fail("render", "expected an object");
+    if (s.contains("spp")) read.samplesPerPixel = r.count(s["spp"], "render.spp", 1u << 20);
+    if (s.contains("bounces")) read.maxBounces = r.count(s["bounces"], "render.bounces", 1024);
+    if (s.contains("width")) read.width = r.count(s["width"], "render.width", 16384);
+    if (s.contains("height")) read.height = r.count(s["height"], "render.height", 16384);
+    if (s.contains("exposure")) read.exposure = r.number(s["exposure"], "render.exposure", -64, 64);
+    return read;
+}
+
+// Inline meshes, and assets scaled up, can hold faces the renderer cannot use: they are dropped
+// with a warning, and a scene left with nothing to render is an error.
+void dropUnusableFaces(Scene& scene, const std::string& name) {
     SkippedFaces skipped;
     for (Mesh& m : scene.meshes) dropBadTriangles(m, skipped);
     for (Prototype& p : scene.prototypes)
@@ -559,6 +543,44 @@ Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& 
     if (!anyFace && scene.spheres.empty() && skipped.total() > 0)
         throw Error(name + ": no face can be rendered: the scene has " + skipped.describe());
     skipped.warn(name);
+}
+
+}  // namespace
+
+Scene loadSceneJsonFromText(std::string_view text, const std::filesystem::path& baseDir, const std::string& name,
+                            SceneFileSettings* settings) {
+    Reader r(name);
+    if (g_nesting >= kMaxNesting) r.fail("assets", "scene files nest more than 8 deep (does one include itself?)");
+    struct Nest {
+        Nest() { ++g_nesting; }
+        ~Nest() { --g_nesting; }
+    } nest;
+    const Json doc = parseDocument(r, text, name);
+
+    Scene scene;
+    scene.name = std::filesystem::path(name).stem().string();
+    const std::vector<AssetMaterial> assetMaterials = readAssets(r, doc, baseDir, scene);
+    if (doc.contains("materials")) readMaterials(r, doc["materials"], scene);
+    assignAssetMaterials(r, assetMaterials, scene);
+    readInlineGeometry(r, doc, scene);
+    if (doc.contains("background")) scene.background = r.vec3(doc["background"], "background", 0, 1e9f);
+    if (doc.contains("environment")) {
+        try {
+            applyEnvironment(scene, readEnvironment(r, doc["environment"], baseDir));
+        } catch (const Error& e) {
+            r.fail("environment", e.what());
+        }
+    }
+    if (doc.contains("camera")) readCamera(r, doc["camera"], scene.camera);
+    if (doc.contains("camera_path")) scene.cameraPath = readCameraPath(r, doc["camera_path"], scene.camera);
+    if (doc.contains("render")) {
+        // Checked even when the caller does not want them: a bad file is bad either way.
+        const SceneFileSettings read = readRenderSettings(r, doc["render"]);
+        if (settings) *settings = read;
+    }
+    if (scene.meshes.empty() && scene.spheres.empty() && scene.instances.empty())
+        r.fail("top level", "the scene has no geometry (add \"assets\", \"meshes\", \"quads\" or \"spheres\")");
+    dropUnusableFaces(scene, name);
     scene.validate();
     if (doc.contains("materials")) warnUnusedMaterials(name, doc["materials"], scene);
     try {

@@ -26,54 +26,58 @@ Records records(const WadFile& wad, const MapLumps& map, long index, const char*
     return {reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size() / recordBytes};
 }
 
-}  // namespace
+// The five map lumps as records, their counts checked: at most what 16-bit indices reach (the
+// rest ignored) and what this loader accepts (else an error), and none of the four needed empty.
+struct MapRecords {
+    Records vertices, linedefs, sidedefs, sectors, things;
+};
 
-MapData parseMap(const WadFile& wad, const MapLumps& lumps) {
-    if (lumps.hexen)
-        throw Error(wad.fileName() + ": map " + lumps.name +
-                    " is in Hexen format (it has a BEHAVIOR lump), which is not supported");
-    MapData map;
-    map.name = lumps.name;
-    const std::string where = wad.fileName() + ": map " + lumps.name;
-
-    Records v = records(wad, lumps, lumps.vertexes, "VERTEXES", kVertexBytes);
-    Records l = records(wad, lumps, lumps.linedefs, "LINEDEFS", kLinedefBytes);
-    Records s = records(wad, lumps, lumps.sidedefs, "SIDEDEFS", kSidedefBytes);
-    Records sec = records(wad, lumps, lumps.sectors, "SECTORS", kSectorBytes);
-    Records t = lumps.things >= 0 ? records(wad, lumps, lumps.things, "THINGS", kThingBytes)
-                                  : Records{};
+MapRecords mapRecords(const WadFile& wad, const MapLumps& lumps, const std::string& where) {
+    MapRecords r;
+    r.vertices = records(wad, lumps, lumps.vertexes, "VERTEXES", kVertexBytes);
+    r.linedefs = records(wad, lumps, lumps.linedefs, "LINEDEFS", kLinedefBytes);
+    r.sidedefs = records(wad, lumps, lumps.sidedefs, "SIDEDEFS", kSidedefBytes);
+    r.sectors = records(wad, lumps, lumps.sectors, "SECTORS", kSectorBytes);
+    if (lumps.things >= 0) r.things = records(wad, lumps, lumps.things, "THINGS", kThingBytes);
     // Indices are 16-bit, so records past 65536 (65535 sidedefs) cannot be referenced.
-    auto capUnreferenced = [&](Records& r, std::size_t limit, const char* what) {
-        if (r.count <= limit) return;
-        logWarning(where + ": " + std::to_string(r.count) + " " + what +
+    auto capUnreferenced = [&](Records& rec, std::size_t limit, const char* what) {
+        if (rec.count <= limit) return;
+        logWarning(where + ": " + std::to_string(rec.count) + " " + what +
                    " records; those past the first " + std::to_string(limit) +
                    " cannot be referenced and are ignored");
-        r.count = limit;
+        rec.count = limit;
     };
-    capUnreferenced(v, 65536, "VERTEXES");
-    capUnreferenced(s, 65535, "SIDEDEFS");
-    capUnreferenced(sec, 65536, "SECTORS");
+    capUnreferenced(r.vertices, 65536, "VERTEXES");
+    capUnreferenced(r.sidedefs, 65535, "SIDEDEFS");
+    capUnreferenced(r.sectors, 65536, "SECTORS");
     // Bounds the geometry (and memory) a hostile map can ask for; vanilla maps stay far below.
-    if (l.count > kMaxLinedefs)
-        throw Error(where + ": " + std::to_string(l.count) + " linedefs, more than the " +
+    if (r.linedefs.count > kMaxLinedefs)
+        throw Error(where + ": " + std::to_string(r.linedefs.count) + " linedefs, more than the " +
                     std::to_string(kMaxLinedefs) + " this loader accepts");
-    if (t.count > kMaxThings)
-        throw Error(where + ": " + std::to_string(t.count) + " things, more than the " +
+    if (r.things.count > kMaxThings)
+        throw Error(where + ": " + std::to_string(r.things.count) + " things, more than the " +
                     std::to_string(kMaxThings) + " this loader accepts");
-    if (v.count == 0) throw Error(where + " is empty: it has no vertices");
-    if (l.count == 0) throw Error(where + " is empty: it has no linedefs");
-    if (sec.count == 0) throw Error(where + " is empty: it has no sectors");
-    if (s.count == 0) throw Error(where + " is empty: it has no sidedefs");
+    if (r.vertices.count == 0) throw Error(where + " is empty: it has no vertices");
+    if (r.linedefs.count == 0) throw Error(where + " is empty: it has no linedefs");
+    if (r.sectors.count == 0) throw Error(where + " is empty: it has no sectors");
+    if (r.sidedefs.count == 0) throw Error(where + " is empty: it has no sidedefs");
+    return r;
+}
 
-    map.vertices.resize(v.count);
+std::vector<Vertex> readVertices(const Records& v) {
+    std::vector<Vertex> out(v.count);
     for (std::size_t i = 0; i < v.count; ++i) {
         const unsigned char* p = v.data + i * kVertexBytes;
-        map.vertices[i] = {readI16(p), readI16(p + 2)};
+        out[i] = {readI16(p), readI16(p + 2)};
     }
-    map.sectors.resize(sec.count);
+    return out;
+}
+
+std::vector<Sector> readSectors(const Records& sec) {
+    std::vector<Sector> out(sec.count);
     for (std::size_t i = 0; i < sec.count; ++i) {
         const unsigned char* p = sec.data + i * kSectorBytes;
-        Sector& o = map.sectors[i];
+        Sector& o = out[i];
         o.floorHeight = readI16(p);
         o.ceilingHeight = readI16(p + 2);
         o.floorFlat = readName8(p + 4);
@@ -82,59 +86,90 @@ MapData parseMap(const WadFile& wad, const MapLumps& lumps) {
         o.special = readU16(p + 22);
         o.tag = readU16(p + 24);
     }
-    map.sidedefs.resize(s.count);
+    return out;
+}
+
+std::vector<Sidedef> readSidedefs(const Records& s, std::size_t sectorCount, const std::string& where) {
+    std::vector<Sidedef> out(s.count);
     for (std::size_t i = 0; i < s.count; ++i) {
         const unsigned char* p = s.data + i * kSidedefBytes;
-        Sidedef& o = map.sidedefs[i];
+        Sidedef& o = out[i];
         o.xOffset = readI16(p);
         o.yOffset = readI16(p + 2);
         o.upper = readName8(p + 4);
         o.lower = readName8(p + 12);
         o.middle = readName8(p + 20);
         o.sector = readU16(p + 28);
-        if (o.sector >= sec.count)
+        if (o.sector >= sectorCount)
             throw Error(where + ": sidedef " + std::to_string(i) + " references sector " +
                         std::to_string(o.sector) + ", but the map has " +
-                        std::to_string(sec.count) + " sectors");
+                        std::to_string(sectorCount) + " sectors");
     }
-    map.linedefs.resize(l.count);
+    return out;
+}
+
+// One linedef record, its vertex and sidedef indices checked; a line with only a back side is
+// reversed (true), so that its sector lies on the right of v1 -> v2 as for every other line.
+bool readLinedef(const unsigned char* p, std::size_t i, const MapRecords& r, const std::string& where,
+                 Linedef& o) {
+    o.v1 = readU16(p);
+    o.v2 = readU16(p + 2);
+    o.flags = readU16(p + 4);
+    o.special = readU16(p + 6);
+    o.tag = readU16(p + 8);
+    o.front = readU16(p + 10);
+    o.back = readU16(p + 12);
+    for (std::uint16_t vi : {o.v1, o.v2})
+        if (vi >= r.vertices.count)
+            throw Error(where + ": linedef " + std::to_string(i) + " references vertex " +
+                        std::to_string(vi) + ", but the map has " + std::to_string(r.vertices.count) +
+                        " vertices");
+    for (std::uint16_t si : {o.front, o.back})
+        if (si != kNoSide && si >= r.sidedefs.count)
+            throw Error(where + ": linedef " + std::to_string(i) + " references sidedef " +
+                        std::to_string(si) + ", but the map has " + std::to_string(r.sidedefs.count) +
+                        " sidedefs");
+    if (o.front != kNoSide || o.back == kNoSide) return false;
+    std::swap(o.front, o.back);
+    std::swap(o.v1, o.v2);
+    return true;
+}
+
+std::vector<Linedef> readLinedefs(const MapRecords& r, const std::string& where) {
+    std::vector<Linedef> out(r.linedefs.count);
     std::size_t frontless = 0;
-    for (std::size_t i = 0; i < l.count; ++i) {
-        const unsigned char* p = l.data + i * kLinedefBytes;
-        Linedef& o = map.linedefs[i];
-        o.v1 = readU16(p);
-        o.v2 = readU16(p + 2);
-        o.flags = readU16(p + 4);
-        o.special = readU16(p + 6);
-        o.tag = readU16(p + 8);
-        o.front = readU16(p + 10);
-        o.back = readU16(p + 12);
-        for (std::uint16_t vi : {o.v1, o.v2})
-            if (vi >= v.count)
-                throw Error(where + ": linedef " + std::to_string(i) + " references vertex " +
-                            std::to_string(vi) + ", but the map has " + std::to_string(v.count) +
-                            " vertices");
-        for (std::uint16_t si : {o.front, o.back})
-            if (si != kNoSide && si >= s.count)
-                throw Error(where + ": linedef " + std::to_string(i) + " references sidedef " +
-                            std::to_string(si) + ", but the map has " + std::to_string(s.count) +
-                            " sidedefs");
-        if (o.front == kNoSide && o.back != kNoSide) {
-            // Keep the sector on the right of v1 -> v2 by reversing the line.
-            std::swap(o.front, o.back);
-            std::swap(o.v1, o.v2);
-            ++frontless;
-        }
-    }
+    for (std::size_t i = 0; i < r.linedefs.count; ++i)
+        if (readLinedef(r.linedefs.data + i * kLinedefBytes, i, r, where, out[i])) ++frontless;
     if (frontless > 0)
         logWarning(where + ": " + std::to_string(frontless) +
                    " linedefs have no front sidedef; they were reversed");
-    map.things.resize(t.count);
+    return out;
+}
+
+std::vector<Thing> readThings(const Records& t) {
+    std::vector<Thing> out(t.count);
     for (std::size_t i = 0; i < t.count; ++i) {
         const unsigned char* p = t.data + i * kThingBytes;
-        map.things[i] = {readI16(p), readI16(p + 2), readU16(p + 4), readU16(p + 6),
-                         readU16(p + 8)};
+        out[i] = {readI16(p), readI16(p + 2), readU16(p + 4), readU16(p + 6), readU16(p + 8)};
     }
+    return out;
+}
+
+}  // namespace
+
+MapData parseMap(const WadFile& wad, const MapLumps& lumps) {
+    if (lumps.hexen)
+        throw Error(wad.fileName() + ": map " + lumps.name +
+                    " is in Hexen format (it has a BEHAVIOR lump), which is not supported");
+    const std::string where = wad.fileName() + ": map " + lumps.name;
+    const MapRecords r = mapRecords(wad, lumps, where);
+    MapData map;
+    map.name = lumps.name;
+    map.vertices = readVertices(r.vertices);
+    map.sectors = readSectors(r.sectors);
+    map.sidedefs = readSidedefs(r.sidedefs, r.sectors.count, where);
+    map.linedefs = readLinedefs(r, where);
+    map.things = readThings(r.things);
     return map;
 }
 
