@@ -1,4 +1,4 @@
-// BVH build time on random soups, and CPU reference closest-hit throughput.
+// BVH build time on random soups, the wide collapse, and CPU reference closest-hit throughput.
 // Run: bench_bvh_build (Release build); figures go to docs/PERFORMANCE.md with the machine.
 #include <benchmark/benchmark.h>
 
@@ -12,6 +12,7 @@
 #include "bvh/builder.h"
 #include "bvh/stats.h"
 #include "bvh/traverse_cpu.h"
+#include "bvh/wide.h"
 #include "core/parallel.h"
 #include "scene/io/load.h"
 
@@ -83,6 +84,44 @@ void BM_BuildMesh(benchmark::State& state) {
     state.counters["threads"] = hardwareThreads();
 }
 BENCHMARK(BM_BuildMesh)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Collapsing the binary tree of a 1M-triangle soup (range 0) or of PENUMBRA_BENCH_MESH (range 0 =
+// 0, the bunny by default) into the wide BVH; range 1 is CollapseOptions::taskPrimitives (0: one
+// thread). The copy of the binary tree that each collapse reorders is not timed.
+void BM_CollapseWide(benchmark::State& state) {
+    std::vector<Triangle> tris;
+    if (state.range(0) > 0) {
+        tris = soup(std::size_t(state.range(0)), 1);
+    } else {
+        const char* env = std::getenv("PENUMBRA_BENCH_MESH");
+        try {
+            tris = trianglesOf(flattenTriangles(loadSceneFile(env ? env : "/usr/share/glmark2/models/bunny.obj")));
+        } catch (const std::exception& e) {
+            state.SkipWithError(e.what());
+            return;
+        }
+    }
+    const Bvh tree = buildTriangles(tris);
+    const CollapseOptions options{std::uint32_t(state.range(1))};
+    std::size_t wideNodes = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        Bvh copy = tree;
+        state.ResumeTiming();
+        wideNodes = collapseToWide(copy, options).nodes.size();
+        benchmark::DoNotOptimize(wideNodes);
+    }
+    state.counters["tris"] = double(tris.size());
+    state.counters["wide nodes"] = double(wideNodes);
+    state.counters["threads"] = options.taskPrimitives ? hardwareThreads() : 1;
+}
+BENCHMARK(BM_CollapseWide)
+    ->Args({1'000'000, 0})
+    ->Args({1'000'000, CollapseOptions{}.taskPrimitives})
+    ->Args({0, 0})
+    ->Args({0, CollapseOptions{}.taskPrimitives})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // One thread, primary-like rays from outside the cube at random points inside it.
 void BM_ClosestHitCpu(benchmark::State& state) {

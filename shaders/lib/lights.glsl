@@ -24,7 +24,7 @@ TrianglePoint sampleTrianglePoint(uint tri, vec2 u) {
     tp.normal = normalize(cross(tv.e1, tv.e2));
     tp.area = ta.area;
     bool hole = (tv.flags & PN_TRI_ALPHA_TESTED) != 0u && isAlphaHole(tri, b.x, b.y);
-    tp.radiance = hole ? vec3(0.0) : materialEmission(m, interpolateUv(ta, b.x, b.y));
+    tp.radiance = hole ? vec3(0.0) : materialEmission(m, interpolateUv(tv, b.x, b.y));
     return tp;
 }
 

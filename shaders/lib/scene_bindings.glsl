@@ -5,6 +5,7 @@
 layout(std430, set = 0, binding = PN_BINDING_NODES) readonly buffer NodeBuffer { BvhNode nodes[]; };
 layout(std430, set = 0, binding = PN_BINDING_TRI_VERTS) readonly buffer TriVertBuffer { TriVerts triVerts[]; };
 layout(std430, set = 0, binding = PN_BINDING_TRI_ATTRIBS) readonly buffer TriAttribBuffer { TriAttribs triAttribs[]; };
+layout(std430, set = 0, binding = PN_BINDING_TRI_UVS) readonly buffer TriUvBuffer { TriUvs triUvs[]; };
 layout(std430, set = 0, binding = PN_BINDING_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
 layout(std430, set = 0, binding = PN_BINDING_LIGHTS) readonly buffer LightBuffer { LightRef lights[]; };
 layout(std430, set = 0, binding = PN_BINDING_LIGHT_NODES) readonly buffer LightNodeBuffer { LightNode lightNodes[]; };

@@ -30,8 +30,8 @@ vec3 normalMapped(Material m, uint triangle, uint instance, vec2 uv, vec3 front)
     if (!PN_HAS(PN_FEATURE_NORMAL_MAPS) || m.normalTexture == PN_NO_TEXTURE || triangle >= frame.triCount) return front;
     TriVerts tv = triVerts[triangle];
     if ((tv.flags & PN_TRI_SPHERE) != 0u) return front;  // spheres have no triangle UV frame
-    TriAttribs ta = triAttribs[triangle];
-    vec2 duv1 = ta.uv1 - ta.uv0, duv2 = ta.uv2 - ta.uv0;
+    TriUvs uvs = triUvs[tv.uvIndex];
+    vec2 duv1 = uvs.uv1 - uvs.uv0, duv2 = uvs.uv2 - uvs.uv0;
     float det = duv1.x * duv2.y - duv1.y * duv2.x;
     if (abs(det) < 1e-12) return front;
     vec3 dpdu = (tv.e1 * duv2.y - tv.e2 * duv1.y) / det;

@@ -64,7 +64,7 @@ Surface surfaceAt(Hit hit, vec3 o, vec3 d) {
     s.material = ta.materialId;
     s.lightIndex = ta.lightIndex;
     s.area = ta.area;
-    s.uv = interpolateUv(ta, hit.u, hit.v);
+    s.uv = interpolateUv(tv, hit.u, hit.v);
     return s;
 }
 

@@ -58,8 +58,10 @@ vec4 sampleTexture(uint index, vec2 uv, uint wrap) {
                mix(texelAt(info, x0, y1), texelAt(info, x1, y1), f.x), f.y);
 }
 
-vec2 interpolateUv(TriAttribs ta, float u, float v) {
-    return (1.0 - u - v) * ta.uv0 + u * ta.uv1 + v * ta.uv2;
+// A triangle's texture coordinates at barycentrics (u, v): all zero for one without any.
+vec2 interpolateUv(TriVerts tv, float u, float v) {
+    TriUvs t = triUvs[tv.uvIndex];
+    return (1.0 - u - v) * t.uv0 + u * t.uv1 + v * t.uv2;
 }
 
 // Base colour (rgb) and coverage (a) of a material at uv.
@@ -71,10 +73,9 @@ vec4 materialBaseColor(Material m, vec2 uv) {
 
 // For alpha-tested triangles: is the point (u, v) of triangle `tri` a hole?
 bool isAlphaHole(uint tri, float u, float v) {
-    TriAttribs ta = triAttribs[tri];
-    Material m = materials[ta.materialId];
+    Material m = materials[triAttribs[tri].materialId];
     if ((m.flags & PN_MATERIAL_ALPHA_TESTED) == 0u || m.albedoTexture == PN_NO_TEXTURE) return false;
-    return sampleTexture(m.albedoTexture, interpolateUv(ta, u, v), m.albedoWrap).a < m.alphaCutoff;
+    return sampleTexture(m.albedoTexture, interpolateUv(triVerts[tri], u, v), m.albedoWrap).a < m.alphaCutoff;
 }
 
 #endif

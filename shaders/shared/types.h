@@ -8,10 +8,16 @@
 #ifdef __cplusplus
 #include "core/gpu_types.h"
 #define PN_STRUCT(name) struct alignas(16) name
+// A struct whose widest member is a vec2 (std430 base alignment 8) or a scalar (4): std430 packs
+// its array elements at its own size, with no rounding to 16 bytes.
+#define PN_STRUCT8(name) struct alignas(8) name
+#define PN_STRUCT4(name) struct alignas(4) name
 namespace penumbra::shader {
 using namespace penumbra::gpu_types;
 #else
 #define PN_STRUCT(name) struct name
+#define PN_STRUCT8(name) struct name
+#define PN_STRUCT4(name) struct name
 #endif
 
 // ---- limits and workgroup sizes (macros so GLSL layout qualifiers can use them) ----
@@ -64,6 +70,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_WAVE_QUEUES 34   // uint x 2 x waveStride: the live path slots, this bounce's and the next's
 #define PN_BINDING_WAVE_CONTROL 35  // WaveControl
 #define PN_BINDING_LIGHT_TREE 36    // LightTreeNode per node of the light BVH (root first, children side by side)
+#define PN_BINDING_TRI_UVS 37       // TriUvs: entry 0 all zero, then the triangles that have texture coordinates
 
 // ---- kernel features: specialization constant 0 of the tracing kernels, a bit set. A pipeline
 // made for a scene leaves out what the scene does not use (render/kernel_features.h); the
@@ -213,26 +220,33 @@ PN_STRUCT(Instance) {
 // Moller-Trumbore (e1 = v1 - v0, e2 = v2 - v0).
 PN_STRUCT(TriVerts) {
     vec3 v0;
-    uint flags;  // PN_TRI_*
+    uint flags;    // PN_TRI_*
     vec3 e1;
-    float pad1;
+    uint uvIndex;  // the triangle's TriUvs entry (0: all zero, as for a mesh without UVs); fills
+                   // padding that the 16-byte loads of the walk carry anyway
     vec3 e2;
     float pad2;
 };
 
-// Cold triangle data, read once for the closest hit: 48 bytes. Shading normals are packed
-// (shared/unit_vector.h: unpackUnitVector); UVs stay full floats, since tiled surfaces (a Doom
-// wall) run to texture coordinates in the hundreds, where half floats would miss texels.
-PN_STRUCT(TriAttribs) {
+// Cold triangle data, read once for the closest hit: 24 bytes (std430 packs these at 24; the
+// texture coordinates live in TriUvs, so that meshes without them pay nothing). Shading normals
+// are packed (shared/unit_vector.h: unpackUnitVector).
+PN_STRUCT4(TriAttribs) {
     uint materialId;  //  4
     uint lightIndex;  //  4: LightRef of this emitter, or PN_NO_LIGHT
     float area;       //  4: world-space area, for converting light pdfs
     uint n0;          //  4: per-vertex shading normals, octahedral (packUnitVector)
     uint n1;          //  4
     uint n2;          //  4
-    vec2 uv0;         //  8
-    vec2 uv1;         //  8
-    vec2 uv2;         //  8
+};
+
+// A triangle's texture coordinates at its three vertices, 24 bytes, at TriVerts.uvIndex. They stay
+// full floats, since tiled surfaces (a Doom wall) run to coordinates in the hundreds, where half
+// floats would miss texels. Triangles whose coordinates are all zero share entry 0.
+PN_STRUCT8(TriUvs) {
+    vec2 uv0;  //  8
+    vec2 uv1;  //  8
+    vec2 uv2;  //  8
 };
 
 // One principled material (see docs/MATERIALS.md), 96 bytes. Lobes: a Lambertian base under a
@@ -589,10 +603,10 @@ static_assert(sizeof(WideNode) == 80 && offsetof(WideNode, exponentsMask) == 12 
               offsetof(WideNode, hiX) == 40 && offsetof(WideNode, loY) == 48 && offsetof(WideNode, loZ) == 64 &&
               offsetof(WideNode, hiZ) == 72);
 static_assert(sizeof(TriVerts) == 48 && offsetof(TriVerts, flags) == 12 && offsetof(TriVerts, e1) == 16 &&
-              offsetof(TriVerts, e2) == 32);
-static_assert(sizeof(TriAttribs) == 48 && offsetof(TriAttribs, lightIndex) == 4 && offsetof(TriAttribs, area) == 8 &&
-              offsetof(TriAttribs, n0) == 12 && offsetof(TriAttribs, n2) == 20 && offsetof(TriAttribs, uv0) == 24 &&
-              offsetof(TriAttribs, uv2) == 40);
+              offsetof(TriVerts, uvIndex) == 28 && offsetof(TriVerts, e2) == 32);
+static_assert(sizeof(TriAttribs) == 24 && offsetof(TriAttribs, lightIndex) == 4 && offsetof(TriAttribs, area) == 8 &&
+              offsetof(TriAttribs, n0) == 12 && offsetof(TriAttribs, n2) == 20);
+static_assert(sizeof(TriUvs) == 24 && offsetof(TriUvs, uv1) == 8 && offsetof(TriUvs, uv2) == 16);
 static_assert(sizeof(Material) == 96 && offsetof(Material, flags) == 12 &&
               offsetof(Material, emission) == 16 && offsetof(Material, alphaCutoff) == 28 &&
               offsetof(Material, absorption) == 32 && offsetof(Material, ior) == 44 &&

@@ -78,12 +78,13 @@ void printScene(const std::string& name, const std::string& map, const Environme
     const double wideBytes = double(arrays.wideNodes.size() * sizeof(shader::WideNode));
     const double hotBytes = double(arrays.triVerts.size() * sizeof(shader::TriVerts));
     const double coldBytes = double(arrays.triAttribs.size() * sizeof(shader::TriAttribs));
+    const double uvBytes = double(arrays.triUvs.size() * sizeof(shader::TriUvs));
     if (tris)
         std::printf("  gpu memory per triangle: binary nodes %.1f, wide nodes %.1f, triangle positions %.1f, attributes "
-                    "%.1f, the rest %.1f\n",
+                    "%.1f, texture coordinates %.1f (%zu triangles have any), the rest %.1f\n",
                     binaryBytes / double(tris), wideBytes / double(tris), hotBytes / double(tris),
-                    coldBytes / double(tris),
-                    (double(gpuBytes) - binaryBytes - wideBytes - hotBytes - coldBytes) / double(tris));
+                    coldBytes / double(tris), uvBytes / double(tris), arrays.triUvs.size() - 1,
+                    (double(gpuBytes) - binaryBytes - wideBytes - hotBytes - coldBytes - uvBytes) / double(tris));
 }
 
 void runInfo(const InfoArgs& args) {

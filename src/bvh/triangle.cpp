@@ -1,5 +1,6 @@
 #include "bvh/triangle.h"
 
+#include "core/error.h"
 #include "scene/scene.h"
 #include "shared/unit_vector.h"
 
@@ -26,13 +27,20 @@ shader::TriAttribs toTriAttribs(const SceneTriangle& t) {
     a.n0 = shader::packUnitVector(t.n[0]);
     a.n1 = shader::packUnitVector(t.n[1]);
     a.n2 = shader::packUnitVector(t.n[2]);
-    a.uv0 = t.uv[0];
-    a.uv1 = t.uv[1];
-    a.uv2 = t.uv[2];
     a.materialId = t.material;
     a.lightIndex = PN_NO_LIGHT;
     a.area = 0.5f * length(cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
     return a;
+}
+
+std::uint32_t appendTriUvs(const SceneTriangle& t, std::vector<shader::TriUvs>& uvs) {
+    if (uvs.empty()) uvs.emplace_back();
+    bool allZero = true;
+    for (const Vec2& uv : t.uv) allZero = allZero && uv.x == 0.0f && uv.y == 0.0f;
+    if (allZero) return 0;
+    PN_CHECK(uvs.size() < PN_NO_HIT);  // at most one entry per primitive, and primitives are fewer
+    uvs.push_back({t.uv[0], t.uv[1], t.uv[2]});
+    return static_cast<std::uint32_t>(uvs.size() - 1);
 }
 
 std::vector<Triangle> trianglesOf(std::span<const SceneTriangle> sceneTriangles) {

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <unordered_map>
 
+#include "core/big_buffer.h"
 #include "core/error.h"
+#include "core/parallel.h"
 
 namespace penumbra::bvh {
 namespace {
@@ -56,10 +60,20 @@ Aabb boxOf(const shader::BvhNode& n) { return Aabb{n.boundsMin, n.boundsMax}; }
 // interior child, or split between its two children. Binary leaves of more than three
 // primitives take several slots (or become a wide node of their pieces).
 // (The binary builder bounds the depth by PN_BVH_MAX_DEPTH, which bounds the recursion.)
+// With taskPrimitives > 0, subtrees of fewer primitives below larger ones are solved and counted
+// as tasks on every hardware thread; each node's results are the same either way.
 class Collapser {
 public:
-    explicit Collapser(const std::vector<shader::BvhNode>& nodes)
-        : nodes_(nodes), choice_(nodes.size()), split_(nodes.size()), rootCount_(solve(0).count) {}
+    Collapser(const std::vector<shader::BvhNode>& nodes, std::uint32_t taskPrimitives)
+        : nodes_(nodes),
+          choice_(nodes.size()),
+          split_(nodes.size()),
+          count_(nodes.size()),
+          wideCount_(nodes.size()),
+          taskPrimitives_(taskPrimitives) {
+        rootCount_ = solveAll();
+        countAll();
+    }
 
     // The wide node made from binary node b (the root, or an interior slot's subtree).
     Entries entries(std::uint32_t b) const {
@@ -74,6 +88,11 @@ public:
         }
         return out;
     }
+    std::uint32_t primitives(std::uint32_t b) const { return count_[b]; }  // below binary node b
+    // Wide nodes in the wide subtree headed by binary node b (b's own included).
+    std::uint32_t wideNodes(std::uint32_t b) const { return wideCount_[b]; }
+    // Whether the wide node headed by b hands its children to tasks.
+    bool large(std::uint32_t b) const { return taskPrimitives_ > 0 && count_[b] >= taskPrimitives_; }
 
 private:
     static constexpr float kNodeCost = 1.0f;       // visiting a wide node
@@ -86,12 +105,61 @@ private:
         std::uint32_t count;  // primitives below
     };
 
+    std::uint32_t rightChild(std::uint32_t n) const {
+        PN_CHECK(nodes_[n].firstOrRight > n + 1 && nodes_[n].firstOrRight < nodes_.size());
+        return nodes_[n].firstOrRight;
+    }
+
     // Post-order, so that only the costs along the current path are alive (the choices are kept
     // for every node); the depth is at most PN_BVH_MAX_DEPTH.
     Costs solve(std::uint32_t n) {
+        if (nodes_[n].triCount > 0) return decide(n, nullptr, nullptr);
+        const Costs l = solve(n + 1), r = solve(rightChild(n));
+        return decide(n, &l, &r);
+    }
+
+    // The top of the tree above the subtrees the tasks solved (their costs in `solved`).
+    Costs solveTop(std::uint32_t n, const std::unordered_map<std::uint32_t, Costs>& solved) {
+        if (auto it = solved.find(n); it != solved.end()) return it->second;
+        const Costs l = solveTop(n + 1, solved), r = solveTop(rightChild(n), solved);
+        return decide(n, &l, &r);
+    }
+
+    // Primitives below n, from its first and last leaves (the builder numbers leaves in order):
+    // only where to cut the tree into tasks depends on it.
+    std::uint32_t spanOf(std::uint32_t n) const {
+        std::uint32_t first = n, last = n;
+        while (nodes_[first].triCount == 0) first = rightChild(first) > 0 ? first + 1 : first;
+        while (nodes_[last].triCount == 0) last = rightChild(last);
+        return nodes_[last].firstOrRight + nodes_[last].triCount - nodes_[first].firstOrRight;
+    }
+    void collectSmallSubtrees(std::uint32_t n, std::vector<std::uint32_t>& out) const {
+        if (nodes_[n].triCount > 0 || spanOf(n) < taskPrimitives_) {
+            out.push_back(n);
+            return;
+        }
+        collectSmallSubtrees(n + 1, out);
+        collectSmallSubtrees(rightChild(n), out);
+    }
+
+    std::uint32_t solveAll() {
+        if (taskPrimitives_ == 0) return solve(0).count;
+        std::vector<std::uint32_t> subtrees;
+        collectSmallSubtrees(0, subtrees);
+        std::vector<Costs> costs(subtrees.size());
+        TaskGroup tasks;
+        tasks.run([&] {
+            for (std::size_t k = 0; k < subtrees.size(); ++k)
+                tasks.spawn([&, k] { costs[k] = solve(subtrees[k]); });
+        });
+        std::unordered_map<std::uint32_t, Costs> solved;
+        for (std::size_t k = 0; k < subtrees.size(); ++k) solved.emplace(subtrees[k], costs[k]);
+        return solveTop(0, solved).count;
+    }
+
+    // Node n's costs and choices, given its children's (null for a leaf).
+    Costs decide(std::uint32_t n, const Costs* l, const Costs* r) {
         const shader::BvhNode& node = nodes_[n];
-        PN_CHECK(node.triCount > 0 ||
-                 (node.firstOrRight > n + 1 && node.firstOrRight < nodes_.size()));
         if (node.triCount > std::uint32_t(kWideMaxBinaryLeaf))
             throw Error("the wide BVH takes binary leaves of at most " +
                         std::to_string(kWideMaxBinaryLeaf) + " primitives, not " +
@@ -100,10 +168,9 @@ private:
         int bestSplit[kWideArity] = {};
         std::uint32_t count = node.triCount;
         if (node.triCount == 0) {
-            const Costs l = solve(n + 1), r = solve(node.firstOrRight);
-            const auto& left = l.cost;
-            const auto& right = r.cost;
-            count = l.count + r.count;
+            const auto& left = l->cost;
+            const auto& right = r->cost;
+            count = l->count + r->count;
             for (int i = 1; i < kWideArity; ++i) {
                 splitCost[i] = std::numeric_limits<float>::infinity();
                 for (int k = 1; k <= i; ++k) {
@@ -115,6 +182,7 @@ private:
                 }
             }
         }
+        count_[n] = count;
         const float leafCost = area(n) * kPrimitiveCost * float(count);
         const bool canBeLeaf = node.triCount > 0 || count <= std::uint32_t(kWideLeafPrimitives);
         const int leafSlots = int((count + 2) / 3);
@@ -144,6 +212,45 @@ private:
         return {cost, count};
     }
 
+    // wideCount_ of the wide subtree headed by b, and of every head below it.
+    std::uint32_t countWide(std::uint32_t b) {
+        std::uint32_t count = 1;
+        for (const Entry& e : entries(b))
+            if (e.interior) count += countWide(e.binary);
+        wideCount_[b] = count;
+        return count;
+    }
+    // The heads below large ones as tasks, then the large heads from their counts.
+    void collectSmallHeads(std::uint32_t b, std::vector<std::uint32_t>& out) const {
+        if (!large(b)) {
+            out.push_back(b);
+            return;
+        }
+        for (const Entry& e : entries(b))
+            if (e.interior) collectSmallHeads(e.binary, out);
+    }
+    std::uint32_t sumLargeHeads(std::uint32_t b) {
+        if (!large(b)) return wideCount_[b];
+        std::uint32_t count = 1;
+        for (const Entry& e : entries(b))
+            if (e.interior) count += sumLargeHeads(e.binary);
+        wideCount_[b] = count;
+        return count;
+    }
+    void countAll() {
+        if (!large(0)) {
+            countWide(0);
+            return;
+        }
+        std::vector<std::uint32_t> heads;
+        collectSmallHeads(0, heads);
+        TaskGroup tasks;
+        tasks.run([&] {
+            for (std::uint32_t b : heads) tasks.spawn([this, b] { countWide(b); });
+        });
+        sumLargeHeads(0);
+    }
+
     // Subtree n's entries in at most `slots` slots, as the program chose.
     void expand(std::uint32_t n, int slots, Entries& out) const {
         const std::uint8_t choice = choice_[n][slots - 1];
@@ -166,9 +273,13 @@ private:
     }
 
     const std::vector<shader::BvhNode>& nodes_;
-    std::vector<std::array<std::uint8_t, kWideArity>> choice_;
-    std::vector<std::uint8_t> split_;  // the best split of a node's children over eight slots
-    std::uint32_t rootCount_;
+    // Per binary node, all written before they are read (uninitialised: no serial first touch).
+    BigBuffer<std::array<std::uint8_t, kWideArity>> choice_;
+    BigBuffer<std::uint8_t> split_;        // the best split of a node's children over eight slots
+    BigBuffer<std::uint32_t> count_;       // primitives below
+    BigBuffer<std::uint32_t> wideCount_;   // wideNodes(), for the binary nodes that head wide ones
+    std::uint32_t taskPrimitives_;
+    std::uint32_t rootCount_ = 0;
 };
 
 // Slot of each entry: slot s goes to the entry nearest a ray travelling along the diagonal with
@@ -289,66 +400,124 @@ std::uint32_t wideChildIndex(const shader::WideNode& node, int slot) {
     return node.childBase + std::uint32_t(std::popcount(interior & ((1u << slot) - 1u)));
 }
 
-WideBvh collapseToWide(Bvh& bvh) {
-    WideBvh out;
-    if (bvh.nodes.empty()) return out;
-    const Collapser collapser(bvh.nodes);
-    std::vector<std::uint32_t>
-        newOrder;  // newOrder[k] = old leaf-order position of the k-th primitive
-    newOrder.reserve(bvh.primOrder.size());
-    struct Pending {
+namespace {
+
+// Writes the wide nodes and the new primitive order. Their places are those of a serial
+// depth-first emission in which each node's interior children get consecutive indices at the end
+// of the array and are then expanded last slot first, each subtree before the next; with every
+// subtree's node and primitive counts known in advance, subtrees can be emitted in any order.
+class Emitter {
+public:
+    Emitter(const Collapser& collapser, const std::vector<shader::BvhNode>& binary,
+            std::vector<shader::WideNode>& nodes, BigBuffer<std::uint32_t>& newOrder)
+        : collapser_(collapser), binary_(binary), nodes_(nodes), newOrder_(newOrder) {}
+
+    struct Place {
         std::uint32_t wide, binary, depth;
+        std::uint32_t firstChild;      // where its subtree's nodes start (its own is already placed)
+        std::uint32_t firstPrimitive;  // where its subtree's primitives start in the new order
     };
-    std::vector<Pending> pending = {{0, 0, 1}};
-    out.nodes.reserve(bvh.nodes.size() / 6 + 1);  // about one wide node per eight binary ones
-    out.nodes.emplace_back();
-    while (!pending.empty()) {
-        const Pending p = pending.back();
-        pending.pop_back();
-        out.maxDepth = std::max(out.maxDepth, p.depth);
-        const Entries entries = collapser.entries(p.binary);
-        const SlotOf slotOf = assignSlots(entries, boxOf(bvh.nodes[p.binary]));
+
+    void emit(const Place& p, TaskGroup* tasks) {
+        const Entries entries = collapser_.entries(p.binary);
+        const SlotOf slotOf = assignSlots(entries, boxOf(binary_[p.binary]));
         shader::WideNode node = encodeNode(entries, slotOf);
         // Leaves' primitives in entry order (the pieces of one binary leaf stay together), then
         // the interior children in slot order, contiguous.
-        node.primBase = std::uint32_t(newOrder.size());
+        node.primBase = p.firstPrimitive;
+        std::uint32_t offset = 0;
         for (std::size_t k = 0; k < entries.size(); ++k) {
             if (entries[k].interior) continue;
-            const std::uint32_t offset = std::uint32_t(newOrder.size()) - node.primBase;
             PN_CHECK(offset + entries[k].count <= std::uint32_t(kWideArity * kWideLeafPrimitives));
+            PN_CHECK(std::size_t(p.firstPrimitive) + offset + entries[k].count <= newOrder_.size());
             setByte(node.meta, slotOf[k], (unaryCount(entries[k].count) << 5) | offset);
             for (std::uint32_t j = 0; j < entries[k].count; ++j)
-                newOrder.push_back(entries[k].first + j);
+                newOrder_[p.firstPrimitive + offset++] = entries[k].first + j;
         }
-        node.childBase = std::uint32_t(out.nodes.size());
-        std::uint32_t interiorMask = 0;
+        node.childBase = p.firstChild;
+        std::array<std::uint32_t, kWideArity> children{};
+        std::uint32_t childCount = 0, interiorMask = 0;
         for (int s = 0; s < kWideArity; ++s) {
             for (std::size_t k = 0; k < entries.size(); ++k) {
                 if (slotOf[k] != s || !entries[k].interior) continue;
                 interiorMask |= 1u << s;
                 setByte(node.meta, s, 0x38u | std::uint32_t(s));
-                pending.push_back(
-                    {std::uint32_t(out.nodes.size()), entries[k].binary, p.depth + 1});
-                out.nodes.emplace_back();
+                children[childCount++] = entries[k].binary;
             }
         }
         node.exponentsMask |= interiorMask << 24;
-        out.nodes[p.wide] = node;
+        nodes_[p.wide] = node;
+        std::uint32_t depth = maxDepth_.load(std::memory_order_relaxed);
+        while (p.depth > depth && !maxDepth_.compare_exchange_weak(depth, p.depth)) {
+        }
+        std::uint32_t nextNode = p.firstChild + childCount, nextPrimitive = p.firstPrimitive + offset;
+        for (std::uint32_t i = childCount; i-- > 0;) {
+            const Place child{p.firstChild + i, children[i], p.depth + 1, nextNode, nextPrimitive};
+            PN_CHECK(child.wide < nodes_.size());
+            nextNode += collapser_.wideNodes(children[i]) - 1;
+            nextPrimitive += collapser_.primitives(children[i]);
+            if (tasks && collapser_.large(p.binary))
+                tasks->spawn([this, child, tasks] { emit(child, tasks); });
+            else
+                emit(child, tasks);
+        }
     }
-    PN_CHECK(newOrder.size() == bvh.primOrder.size());
+
+    std::uint32_t maxDepth() const { return maxDepth_.load(); }
+
+private:
+    const Collapser& collapser_;
+    const std::vector<shader::BvhNode>& binary_;
+    std::vector<shader::WideNode>& nodes_;
+    BigBuffer<std::uint32_t>& newOrder_;
+    std::atomic<std::uint32_t> maxDepth_{0};
+};
+
+constexpr std::size_t kRenumberChunk = 64 * 1024;
+
+}  // namespace
+
+WideBvh collapseToWide(Bvh& bvh, const CollapseOptions& options) {
+    WideBvh out;
+    if (bvh.nodes.empty()) return out;
+    const Collapser collapser(bvh.nodes, options.taskPrimitives);
+    const std::size_t count = bvh.primOrder.size();
+    PN_CHECK(collapser.primitives(0) == count);
+    BigBuffer<std::uint32_t> newOrder(count);  // newOrder[k] = old leaf-order position of the k-th primitive
+    reserveHuge(out.nodes, collapser.wideNodes(0));
+    out.nodes.resize(collapser.wideNodes(0));
+    Emitter emitter(collapser, bvh.nodes, out.nodes, newOrder);
+    const Emitter::Place root{0, 0, 1, 1, 0};
+    if (collapser.large(0)) {
+        TaskGroup tasks;
+        tasks.run([&] { emitter.emit(root, &tasks); });
+    } else {
+        emitter.emit(root, nullptr);
+    }
+    out.maxDepth = emitter.maxDepth();
 
     // The binary tree in the new order: each binary leaf's primitives stayed consecutive.
-    std::vector<std::uint32_t> newPosition(newOrder.size());
-    for (std::uint32_t k = 0; k < newOrder.size(); ++k) newPosition[newOrder[k]] = k;
-    for (shader::BvhNode& n : bvh.nodes) {
-        if (n.triCount == 0) continue;
-        const std::uint32_t first = newPosition[n.firstOrRight];
-        for (std::uint32_t j = 1; j < n.triCount; ++j)
-            PN_CHECK(newPosition[n.firstOrRight + j] == first + j);
-        n.firstOrRight = first;
-    }
-    std::vector<std::uint32_t> primOrder(newOrder.size());
-    for (std::size_t k = 0; k < newOrder.size(); ++k) primOrder[k] = bvh.primOrder[newOrder[k]];
+    BigBuffer<std::uint32_t> newPosition(count);
+    parallelFor(count, kRenumberChunk, [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t k = lo; k < hi; ++k) {
+            PN_CHECK(newOrder[k] < count);
+            newPosition[newOrder[k]] = std::uint32_t(k);
+        }
+    });
+    parallelFor(bvh.nodes.size(), kRenumberChunk, [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t i = lo; i < hi; ++i) {
+            shader::BvhNode& n = bvh.nodes[i];
+            if (n.triCount == 0) continue;
+            const std::uint32_t first = newPosition[n.firstOrRight];
+            for (std::uint32_t j = 1; j < n.triCount; ++j)
+                PN_CHECK(newPosition[n.firstOrRight + j] == first + j);
+            n.firstOrRight = first;
+        }
+    });
+    std::vector<std::uint32_t> primOrder = hugeVector<std::uint32_t>(count);
+    parallelFor(count, kRenumberChunk, [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t k = lo; k < hi; ++k) primOrder[k] = bvh.primOrder[newOrder[k]];
+    });
     bvh.primOrder = std::move(primOrder);
     return out;
 }

@@ -25,11 +25,17 @@ struct WideBvh {
     std::uint32_t maxDepth = 0;           // wide levels (root = 1); at most the binary tree's depth
 };
 
+struct CollapseOptions {
+    // Binary subtrees of at least this many primitives hand the subtrees below them to tasks on
+    // every hardware thread; 0 collapses on the calling thread. The result does not depend on it.
+    std::uint32_t taskPrimitives = 4096;
+};
+
 // Builds the wide tree and reorders the binary tree's primitives (bvh.primOrder and its leaves'
 // first indices) so that each wide node's leaf primitives are contiguous from its primBase. The
 // binary tree stays valid and shares that primitive order, so both walk the same TriVerts.
 // Throws penumbra::Error for binary leaves of more than kWideMaxBinaryLeaf primitives.
-WideBvh collapseToWide(Bvh& bvh);
+WideBvh collapseToWide(Bvh& bvh, const CollapseOptions& options = {});
 
 // Slot i's meta byte (see shader::WideNode) and decoded box, exactly as the traversal computes it.
 std::uint32_t wideMeta(const shader::WideNode& node, int slot);

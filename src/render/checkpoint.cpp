@@ -72,6 +72,7 @@ RenderKey renderKey(const Renderer& renderer, const AdaptiveSettings& adaptive) 
     addVector(a.nodes);
     addVector(a.triVerts);
     addVector(a.triAttribs);
+    addVector(a.triUvs);
     addVector(a.materials);
     addVector(a.lightRefs);
     addVector(a.lightNodes);

@@ -311,6 +311,7 @@ LeafSlots fillLeafSlots(const Scene& scene, const Primitives& prims, std::span<c
             const SceneTriangle& t = prims.tris[prim];
             out.primitiveObject[i] = triangleMesh[prim];
             out.triVerts[i] = bvh::toTriVerts(prims.geometry[prim]);
+            out.triVerts[i].uvIndex = bvh::appendTriUvs(t, out.triUvs);
             out.triAttribs[i] = bvh::toTriAttribs(t);
             const Material& m = scene.materials[t.material];
             if (m.isEmissive() && m.lightSampled && out.triAttribs[i].area > 0)
@@ -385,7 +386,7 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
 
 std::size_t deviceBytes(const SceneArrays& a) {
     auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
-    return binaryNodesUploaded(a) * sizeof(shader::BvhNode) + bytes(a.wideNodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.materials) + bytes(a.lightRefs) +
+    return binaryNodesUploaded(a) * sizeof(shader::BvhNode) + bytes(a.wideNodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.triUvs) + bytes(a.materials) + bytes(a.lightRefs) +
            bytes(a.lightNodes) + bytes(a.lightTree) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
            bytes(a.env.alias) + bytes(a.env.radiance) + bytes(a.instances);
 }
@@ -395,6 +396,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
     : nodes((checkSceneFitsDevice(ctx, a), gpu::uploadStorageBuffer<shader::BvhNode>(ctx, commands, nodeBufferContents(a)))),
       triVerts(gpu::uploadStorageBuffer<shader::TriVerts>(ctx, commands, a.triVerts)),
       triAttribs(gpu::uploadStorageBuffer<shader::TriAttribs>(ctx, commands, a.triAttribs)),
+      triUvs(gpu::uploadStorageBuffer<shader::TriUvs>(ctx, commands, a.triUvs)),
       materials(gpu::uploadStorageBuffer<shader::Material>(ctx, commands, a.materials)),
       lightRefs(gpu::uploadStorageBuffer<shader::LightRef>(ctx, commands, a.lightRefs)),
       lightNodes(gpu::uploadStorageBuffer<shader::LightNode>(ctx, commands, a.lightNodes)),
@@ -422,7 +424,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       envLuminance(a.envLuminance) {}
 
 std::size_t GpuScene::deviceBytes() const {
-    return nodes.size() + triVerts.size() + triAttribs.size() + materials.size() + lightRefs.size() + lightNodes.size() +
+    return nodes.size() + triVerts.size() + triAttribs.size() + triUvs.size() + materials.size() + lightRefs.size() + lightNodes.size() +
            lightTree.size() + textures.size() + texels.size() + punctual.size() + sphereLights.size() + envTable.size() + envTexels.size() +
            instances.size();
 }

@@ -33,7 +33,7 @@ class GpuScene {
 public:
     GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& arrays);
 
-    gpu::Buffer nodes, triVerts, triAttribs, materials, lightRefs, lightNodes, lightTree, textures, texels, punctual, sphereLights,
+    gpu::Buffer nodes, triVerts, triAttribs, triUvs, materials, lightRefs, lightNodes, lightTree, textures, texels, punctual, sphereLights,
         envTable, envTexels, instances;
     std::uint32_t instanceCount = 0, topRoot = 0;  // 0 instances: one flat BVH (FrameUniforms.instanceCount)
     std::uint32_t nodeCount = 0, wideNodeCount = 0, triCount = 0, lightNodeCount = 0, topLightCount = 0, lightRefCount = 0, punctualCount = 0,

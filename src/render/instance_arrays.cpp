@@ -34,6 +34,7 @@ BottomLevel appendPrototype(const Prototype& prototype, SceneArrays& out, const 
     for (std::uint32_t original : tree.primOrder) {
         const SceneTriangle& t = tris[original];
         out.triVerts.push_back(bvh::toTriVerts(geometry[original]));
+        out.triVerts.back().uvIndex = bvh::appendTriUvs(t, out.triUvs);
         // Object space; never a light: emissive prototypes are baked into the world (scene/instances.h).
         shader::TriAttribs a = bvh::toTriAttribs(t);
         out.triAttribs.push_back(a);

@@ -27,6 +27,9 @@ struct SceneArrays {
     double wideMilliseconds = 0;  // collapsing the binary tree
     std::vector<shader::TriVerts> triVerts;      // leaf order; triangles and spheres (PN_TRI_SPHERE)
     std::vector<shader::TriAttribs> triAttribs;  // leaf order
+    // Texture coordinates of the triangles that have any, at TriVerts::uvIndex; entry 0 is the
+    // all-zero one the others share, so the array is never empty (bvh::appendTriUvs).
+    std::vector<shader::TriUvs> triUvs = std::vector<shader::TriUvs>(1);
     std::vector<shader::Material> materials;
     // The unified light sampler's lights and light BVH (render/light_list.h).
     std::vector<shader::LightRef> lightRefs;

@@ -19,6 +19,7 @@ std::vector<SceneBufferSize> sceneBufferSizes(const SceneArrays& a) {
     return {{"BVH nodes", (a.binaryNodesOnGpu ? bytesOf(a.nodes) : 0) + bytesOf(a.wideNodes)},  // one buffer
             {"triangle positions", bytesOf(a.triVerts)},
             {"triangle attributes", bytesOf(a.triAttribs)},
+            {"texture coordinates", bytesOf(a.triUvs)},
             {"materials", bytesOf(a.materials)},
             {"light references", bytesOf(a.lightRefs)},
             {"top-level light bounds", bytesOf(a.lightNodes)},

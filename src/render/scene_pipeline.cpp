@@ -11,7 +11,7 @@ std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx,
     constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     std::vector<gpu::BindingSpec> bindings = {
         {PN_BINDING_NODES, storage},     {PN_BINDING_TRI_VERTS, storage},
-        {PN_BINDING_TRI_ATTRIBS, storage}, {PN_BINDING_MATERIALS, storage},
+        {PN_BINDING_TRI_ATTRIBS, storage}, {PN_BINDING_TRI_UVS, storage}, {PN_BINDING_MATERIALS, storage},
         {PN_BINDING_LIGHTS, storage},    {PN_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
         {PN_BINDING_TEXTURES, storage},  {PN_BINDING_TEXELS, storage},
         {PN_BINDING_PUNCTUAL, storage},  {PN_BINDING_SPHERE_LIGHTS, storage}, {PN_BINDING_ENV_TABLE, storage},
@@ -23,6 +23,7 @@ std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx,
     pipeline->bind(PN_BINDING_NODES, scene.nodes);
     pipeline->bind(PN_BINDING_TRI_VERTS, scene.triVerts);
     pipeline->bind(PN_BINDING_TRI_ATTRIBS, scene.triAttribs);
+    pipeline->bind(PN_BINDING_TRI_UVS, scene.triUvs);
     pipeline->bind(PN_BINDING_MATERIALS, scene.materials);
     pipeline->bind(PN_BINDING_LIGHTS, scene.lightRefs);
     pipeline->bind(PN_BINDING_LIGHT_NODES, scene.lightNodes);

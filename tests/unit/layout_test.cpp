@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gpu/shaders.h"
@@ -32,6 +34,25 @@ Offsets readMemberOffsets(std::span<const std::uint32_t> spv) {
     return out;
 }
 
+// The array stride glslc gave each runtime array of a named struct (a buffer's `T items[]`).
+std::map<std::string, std::uint32_t> readArrayStrides(std::span<const std::uint32_t> spv) {
+    constexpr std::uint32_t kOpName = 5, kOpTypeRuntimeArray = 29, kOpDecorate = 71, kDecorationArrayStride = 6;
+    std::map<std::uint32_t, std::string> names;
+    std::map<std::uint32_t, std::uint32_t> elementOf, strideOf;  // array id -> element id, stride
+    for (std::size_t i = 5; i < spv.size();) {
+        std::uint32_t count = spv[i] >> 16, op = spv[i] & 0xffff;
+        if (count == 0 || i + count > spv.size()) break;
+        if (op == kOpName) names[spv[i + 1]] = reinterpret_cast<const char*>(&spv[i + 2]);
+        if (op == kOpTypeRuntimeArray) elementOf[spv[i + 1]] = spv[i + 2];
+        if (op == kOpDecorate && count == 4 && spv[i + 2] == kDecorationArrayStride) strideOf[spv[i + 1]] = spv[i + 3];
+        i += count;
+    }
+    std::map<std::string, std::uint32_t> out;
+    for (auto [array, element] : elementOf)
+        if (names.count(element) && strideOf.count(array)) out[names[element]] = strideOf[array];
+    return out;
+}
+
 void expectMembers(const Offsets& spv, const std::string& name, const std::vector<std::uint32_t>& cpp) {
     auto it = spv.find(name);
     if (it == spv.end()) return;  // not used by this shader
@@ -53,8 +74,8 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
         expectMembers(spv, "BvhNode", {0, offsetof(BvhNode, firstOrRight), offsetof(BvhNode, boundsMax), offsetof(BvhNode, triCount)});
         expectMembers(spv, "TriVerts", {0, offsetof(TriVerts, flags), offsetof(TriVerts, e1), 28, offsetof(TriVerts, e2), 44});
         expectMembers(spv, "TriAttribs", {0, offsetof(TriAttribs, lightIndex), offsetof(TriAttribs, area), offsetof(TriAttribs, n0),
-                                          offsetof(TriAttribs, n1), offsetof(TriAttribs, n2), offsetof(TriAttribs, uv0),
-                                          offsetof(TriAttribs, uv1), offsetof(TriAttribs, uv2)});
+                                          offsetof(TriAttribs, n1), offsetof(TriAttribs, n2)});
+        expectMembers(spv, "TriUvs", {0, offsetof(TriUvs, uv1), offsetof(TriUvs, uv2)});
         expectMembers(spv, "Material", {0, offsetof(Material, flags), offsetof(Material, emission), offsetof(Material, alphaCutoff),
                                         offsetof(Material, absorption), offsetof(Material, ior), offsetof(Material, metallic),
                                         offsetof(Material, roughness), offsetof(Material, transmission),
@@ -125,6 +146,20 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
     EXPECT_GE(structsChecked, 12);
     EXPECT_EQ(readMemberOffsets(gpu::shaderCode("trace")).count("SphereLight"), 1u);
     EXPECT_GE(envStructsChecked, 2);  // the tracer and the environment test kernel
+}
+
+// The structs packed below 16 bytes of alignment (PN_STRUCT8/PN_STRUCT4) must still be arrays of
+// exactly sizeof(T) in GLSL, or every element after the first would be read from the wrong place.
+TEST(Layout, TriangleArraysHaveTheCppStride) {
+    using namespace shader;
+    const std::map<std::string, std::uint32_t> strides = readArrayStrides(gpu::shaderCode("trace"));
+    const std::pair<const char*, std::size_t> expected[] = {
+        {"TriVerts", sizeof(TriVerts)}, {"TriAttribs", sizeof(TriAttribs)}, {"TriUvs", sizeof(TriUvs)}};
+    for (auto [name, size] : expected) {
+        auto it = strides.find(name);
+        ASSERT_NE(it, strides.end()) << name << " has no runtime array in the trace kernel";
+        EXPECT_EQ(it->second, size) << name;
+    }
 }
 
 TEST(Layout, ViewerStructsMatchInTheViewerShaders) {

@@ -46,6 +46,46 @@ TEST(WideArrays, OnlyTheWideWalkGetsTheWideTreeAndItAloneLeavesTheBinaryNodesOnT
     EXPECT_LT(deviceBytes(wide), deviceBytes(binary));
 }
 
+// Texture coordinates live in their own array, only for the triangles that have any: a mesh
+// without UVs adds nothing, and every triangle's slot still finds its own coordinates (matched by
+// position, after the wide tree renumbered the primitives).
+TEST(WideArrays, OnlyTrianglesWithTextureCoordinatesStoreThem) {
+    Scene scene = makeCornellBox();
+    const SceneArrays plain = buildSceneArrays(scene, {}, Accel::Wide);
+    ASSERT_EQ(plain.triUvs.size(), 1u);  // the shared all-zero entry
+    for (const shader::TriVerts& t : plain.triVerts) EXPECT_EQ(t.uvIndex, 0u);
+
+    Mesh quad;
+    quad.name = "textured quad";
+    quad.positions = {{-0.3f, 0.2f, 0.1f}, {0.3f, 0.2f, 0.1f}, {0.3f, 0.8f, 0.1f}, {-0.3f, 0.8f, 0.1f}};
+    quad.uvs = {{0.0f, 0.0f}, {250.5f, 0.0f}, {250.5f, -3.25f}, {0.0f, -3.25f}};  // tiled far past 1
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    scene.meshes.push_back(quad);
+    for (Accel accel : {Accel::Bvh, Accel::Wide}) {
+        const SceneArrays a = buildSceneArrays(scene, {}, accel);
+        ASSERT_EQ(a.triUvs.size(), 3u);
+        int found = 0;
+        for (const shader::TriVerts& t : a.triVerts) {
+            if (t.uvIndex == 0) continue;
+            ASSERT_LT(t.uvIndex, a.triUvs.size());
+            const shader::TriUvs& uv = a.triUvs[t.uvIndex];
+            // Vertex k of the slot is quad vertex j: its uv must be quad.uvs[j].
+            const Vec3 corners[3] = {t.v0, t.v0 + t.e1, t.v0 + t.e2};
+            const Vec2 uvs[3] = {uv.uv0, uv.uv1, uv.uv2};
+            for (int k = 0; k < 3; ++k) {
+                std::size_t j = 0;
+                while (j < 4 && length(quad.positions[j] - corners[k]) > 1e-5f) ++j;
+                ASSERT_LT(j, 4u) << "corner " << k << " is no quad vertex";
+                EXPECT_EQ(uvs[k].x, quad.uvs[j].x);
+                EXPECT_EQ(uvs[k].y, quad.uvs[j].y);
+            }
+            ++found;
+        }
+        EXPECT_EQ(found, 2);
+        EXPECT_EQ(deviceBytes(a), sumOfBufferSizes(a));
+    }
+}
+
 TEST(WideArrays, TwoLevelScenesKeepTheBinaryWalkUnderAccelWide) {
     const SceneArrays a = buildSceneArrays(test::instancedRoom(), {}, Accel::Wide);
     EXPECT_TRUE(a.wideNodes.empty());

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstring>
 #include <random>
 #include <string>
 
@@ -248,6 +249,31 @@ TEST(WideBvh, WalkCullsAndVisitsFewNodes) {
     EXPECT_LT(wide.trianglesTested, binary.trianglesTested * 3);
 }
 
+// Tasks only change who collapses which subtree: nodes, depth and both primitive orders must be
+// exactly the serial collapse's, down to the byte, whatever the task size.
+TEST(WideBvh, ParallelCollapseIsIdenticalToSerial) {
+    std::mt19937 rng(12);
+    for (std::size_t count : {1, 7, 2000, 30000}) {
+        BuildOptions options;
+        options.maxLeafSize = 1 + int(rng() % kWideMaxBinaryLeaf);
+        const Bvh tree = buildTriangles(randomSoup(count, std::uint32_t(count)), options);
+        Bvh serial = tree;
+        const WideBvh expected = collapseToWide(serial, CollapseOptions{0});
+        for (std::uint32_t taskPrimitives : {1u, 64u, 4096u}) {
+            SCOPED_TRACE(::testing::Message() << count << " triangles, leaves of up to " << options.maxLeafSize
+                                              << ", tasks from " << taskPrimitives << " primitives");
+            Bvh parallel = tree;
+            const WideBvh wide = collapseToWide(parallel, CollapseOptions{taskPrimitives});
+            ASSERT_EQ(wide.nodes.size(), expected.nodes.size());
+            EXPECT_EQ(std::memcmp(wide.nodes.data(), expected.nodes.data(), wide.nodes.size() * sizeof(shader::WideNode)), 0);
+            EXPECT_EQ(wide.maxDepth, expected.maxDepth);
+            EXPECT_EQ(parallel.primOrder, serial.primOrder);
+            ASSERT_EQ(parallel.nodes.size(), serial.nodes.size());
+            EXPECT_EQ(std::memcmp(parallel.nodes.data(), serial.nodes.data(), serial.nodes.size() * sizeof(shader::BvhNode)), 0);
+        }
+    }
+}
+
 TEST(WideBvh, RejectsLeavesTooBigToSpread) {
     BuildOptions options;
     options.maxLeafSize = 32;
@@ -257,7 +283,9 @@ TEST(WideBvh, RejectsLeavesTooBigToSpread) {
     for (const shader::BvhNode& n : tree.nodes)
         big |= n.triCount > std::uint32_t(kWideMaxBinaryLeaf);
     if (!big) GTEST_SKIP() << "the builder made no leaf over " << kWideMaxBinaryLeaf;
+    Bvh copy = tree;
     EXPECT_THROW(collapseToWide(tree), Error);
+    EXPECT_THROW(collapseToWide(copy, CollapseOptions{1}), Error);  // thrown in a task
 }
 
 }  // namespace
