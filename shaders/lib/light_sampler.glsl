@@ -9,10 +9,9 @@
 // them; the pick descends it choosing children in proportion to their importance (Conty Estevez
 // & Kulla 2018; pbrt-v4's BVHLightSampler): power over squared distance, times bounds on the
 // emitter's and the surface's cosines. lightPickPmf retraces the same choices along the light's
-// trail, so MIS uses exactly the probability sampling had. The tree is 4-wide: some twenty bounds
-// per pick on a Doom level, in five dependent steps rather than ten. Its nodes (LightTreeNode)
-// carry what the bound needs precomputed, and the bound spends as few square roots and
-// divisions as it can.
+// bit trail, so MIS uses exactly the probability sampling had. The walk evaluates two bounds per
+// level, some twenty per pick on a Doom level: the tree's nodes (LightTreeNode) carry what the
+// bound needs precomputed, and the bound spends as few square roots and divisions as it can.
 #ifndef PN_LIGHT_SAMPLER_GLSL
 #define PN_LIGHT_SAMPLER_GLSL
 
@@ -85,12 +84,10 @@ float treeNodeImportance(LightTreeNode node, vec3 p, vec3 n) {
                                           node.cosThetaE, (node.childOrLight & PN_LIGHT_NODE_TWO_SIDED) != 0u), p, n);
 }
 
-// The light tree root's importance at p and its childOrLight; 0 when the scene has no tree.
-float lightTreeRoot(vec3 p, vec3 n, out uint rootChildOrLight) {
-    rootChildOrLight = PN_LIGHT_NODE_LEAF | PN_LIGHT_NODE_INDEX;
+// The light tree's root and its importance at p; 0 (and no root) when the scene has no tree.
+float lightTreeRoot(vec3 p, vec3 n, out LightTreeNode root) {
     if (frame.lightNodeCount == 0u) return 0.0;
-    LightTreeNode root = lightTree[0];
-    rootChildOrLight = root.childOrLight;
+    root = lightTree[0];
     return treeNodeImportance(root, p, n);
 }
 
@@ -117,60 +114,14 @@ float totalLightImportance(float tree, vec3 p, vec3 n) {
     return total;
 }
 
-// One level of the walk below an interior node (its childOrLight): the importance of each child
-// at p (0 past the node's 2 to 4 children) and what each child's record says of its own children,
-// so the walk goes on without reading the chosen record again. Written out with no loop and no
-// indexing by a variable, which would put the vectors in local memory.
-struct LightChildren {
-    vec4 weight;
-    uvec4 next;  // childOrLight of each child
-    float total;
-};
-
-LightChildren lightChildren(uint childOrLight, vec3 p, vec3 n) {
-    uint first = childOrLight & PN_LIGHT_NODE_INDEX;
-    uint count = ((childOrLight >> PN_LIGHT_NODE_CHILDREN_SHIFT) & 3u) + 1u;
-    LightChildren c = LightChildren(vec4(0.0), uvec4(0u), 0.0);
-    LightTreeNode child = lightTree[first];
-    c.weight.x = treeNodeImportance(child, p, n);
-    c.next.x = child.childOrLight;
-    child = lightTree[first + 1u];
-    c.weight.y = treeNodeImportance(child, p, n);
-    c.next.y = child.childOrLight;
-    if (count > 2u) {
-        child = lightTree[first + 2u];
-        c.weight.z = treeNodeImportance(child, p, n);
-        c.next.z = child.childOrLight;
-    }
-    if (count > 3u) {
-        child = lightTree[first + 3u];
-        c.weight.w = treeNodeImportance(child, p, n);
-        c.next.w = child.childOrLight;
-    }
-    c.total = c.weight.x + c.weight.y + c.weight.z + c.weight.w;
-    return c;
-}
-
-// The child taken with u in [0, 1): slot k with probability weight[k] / total (total > 0). The
-// strict comparisons never land on a slot of weight 0 before the last; past the last (rounding),
-// the last child that can light p.
-uint chooseLightChild(LightChildren c, float u) {
-    float x = u * c.total;
-    vec4 w = c.weight;
-    if (x < w.x) return 0u;
-    if (x < w.x + w.y) return 1u;
-    if (x < w.x + w.y + w.z) return 2u;
-    return w.w > 0.0 ? 3u : (w.z > 0.0 ? 2u : (w.y > 0.0 ? 1u : 0u));
-}
-
-// What the walk keeps of slot k: its share of the level's importance and its childOrLight.
-float childShare(LightChildren c, uint slot) {
-    float w = slot == 0u ? c.weight.x : (slot == 1u ? c.weight.y : (slot == 2u ? c.weight.z : c.weight.w));
-    return w / c.total;
-}
-
-uint childNext(LightChildren c, uint slot) {
-    return slot == 0u ? c.next.x : (slot == 1u ? c.next.y : (slot == 2u ? c.next.z : c.next.w));
+// One level of the walk: the children of `node` (an interior node) and the probability of the
+// first; -1 when neither can light p.
+float firstChildProbability(LightTreeNode node, vec3 p, vec3 n, out LightTreeNode first, out LightTreeNode second) {
+    uint record = node.childOrLight & PN_LIGHT_NODE_INDEX;
+    first = lightTree[record];
+    second = lightTree[record + 1u];
+    float a = treeNodeImportance(first, p, n), b = treeNodeImportance(second, p, n);
+    return a + b > 0.0 ? a / (a + b) : -1.0;
 }
 
 struct LightPick {
@@ -189,8 +140,8 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
         umulExtended(rngNextUint(rng), frame.lightRefCount, k, low);  // floor(bits * count / 2^32)
         return LightPick(k, 1.0 / float(frame.lightRefCount));
     }
-    uint childOrLight;
-    float tree = lightTreeRoot(p, n, childOrLight);
+    LightTreeNode node;
+    float tree = lightTreeRoot(p, n, node);
     float total = totalLightImportance(tree, p, n);
     if (!(total > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
     float x = u * total;
@@ -204,13 +155,19 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
     }
     if (!(tree > 0.0)) return pick;  // rounding carried x past the last top-level light
     pick = LightPick(PN_NO_LIGHT, tree / total);
-    for (uint level = 0u; level < PN_LIGHT_TREE_MAX_LEVELS; ++level) {
-        if ((childOrLight & PN_LIGHT_NODE_LEAF) != 0u) return LightPick(childOrLight & PN_LIGHT_NODE_INDEX, pick.pmf);
-        LightChildren c = lightChildren(childOrLight, p, n);
-        if (!(c.total > 0.0)) break;
-        uint slot = chooseLightChild(c, rngNext(rng));
-        pick.pmf *= childShare(c, slot);
-        childOrLight = childNext(c, slot);
+    for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
+        if ((node.childOrLight & PN_LIGHT_NODE_LEAF) != 0u)
+            return LightPick(node.childOrLight & PN_LIGHT_NODE_INDEX, pick.pmf);
+        LightTreeNode first, second;
+        float p1 = firstChildProbability(node, p, n, first, second);
+        if (p1 < 0.0) break;
+        if (rngNext(rng) < p1) {
+            node = first;
+            pick.pmf *= p1;
+        } else {
+            node = second;
+            pick.pmf *= 1.0 - p1;
+        }
     }
     return LightPick(PN_NO_LIGHT, 0.0);
 }
@@ -218,20 +175,26 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
 // The probability that pickLight(p, n) returns `ref`.
 float lightPickPmf(uint ref, vec3 p, vec3 n) {
     if (frame.lightPickUniform != 0u) return 1.0 / float(frame.lightRefCount);
-    uint childOrLight;
-    float tree = lightTreeRoot(p, n, childOrLight);
+    LightTreeNode node;
+    float tree = lightTreeRoot(p, n, node);
     float total = totalLightImportance(tree, p, n);
     if (!(total > 0.0)) return 0.0;
     if (ref < frame.topLightCount) return topLightImportance(ref, p, n) / total;
     float pmf = tree / total;
     LightRef r = lights[ref];
-    for (uint level = 0u; level < PN_LIGHT_TREE_MAX_LEVELS; ++level) {
-        if ((childOrLight & PN_LIGHT_NODE_LEAF) != 0u) return (childOrLight & PN_LIGHT_NODE_INDEX) == ref ? pmf : 0.0;
-        LightChildren c = lightChildren(childOrLight, p, n);
-        if (!(c.total > 0.0)) return 0.0;
-        uint slot = (level < 16u ? (r.trailLo >> (2u * level)) : (r.trailHi >> (2u * level - 32u))) & 3u;
-        pmf *= childShare(c, slot);
-        childOrLight = childNext(c, slot);
+    for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
+        if ((node.childOrLight & PN_LIGHT_NODE_LEAF) != 0u) return (node.childOrLight & PN_LIGHT_NODE_INDEX) == ref ? pmf : 0.0;
+        LightTreeNode first, second;
+        float p1 = firstChildProbability(node, p, n, first, second);
+        if (p1 < 0.0) return 0.0;
+        bool takeSecond = (depth < 32u ? (r.trailLo >> depth) : (r.trailHi >> (depth - 32u))) % 2u != 0u;
+        if (takeSecond) {
+            node = second;
+            pmf *= 1.0 - p1;
+        } else {
+            node = first;
+            pmf *= p1;
+        }
     }
     return 0.0;
 }

@@ -151,13 +151,10 @@ using namespace penumbra::gpu_types;
 #define PN_LIGHTREF_PUNCTUAL 2u     // LightRef.index: entry of the punctual-light table
 #define PN_LIGHTREF_ENVIRONMENT 3u  // the environment (map or constant background)
 #define PN_NO_LIGHT 0xffffffffu     // TriAttribs.lightIndex of a primitive that is no light
-#define PN_LIGHT_TREE_MAX_DEPTH 64u  // levels of the binary light tree as built
-#define PN_LIGHT_TREE_MAX_LEVELS 32u // levels of the 4-wide tree the shaders walk: a light's trail
-                                     // (LightRef.trailLo/Hi) holds 2 bits per level
+#define PN_LIGHT_TREE_MAX_DEPTH 64u // the bit trail of a light has 64 bits (two uints)
 #define PN_LIGHT_NODE_LEAF 0x80000000u       // LightNode / LightTreeNode.childOrLight: a leaf
 #define PN_LIGHT_NODE_TWO_SIDED 0x40000000u  // LightTreeNode.childOrLight: emits both ways
-#define PN_LIGHT_NODE_CHILDREN_SHIFT 28u     // LightTreeNode.childOrLight, interior: child count - 1 (1-3)
-#define PN_LIGHT_NODE_INDEX 0x0fffffffu      // LightTreeNode.childOrLight: the first child's record or the LightRef
+#define PN_LIGHT_NODE_INDEX 0x3fffffffu      // LightTreeNode.childOrLight: the child record or the LightRef
 
 #define PN_NO_HIT 0xffffffffu
 
@@ -300,14 +297,13 @@ PN_STRUCT(EnvAlias) {
 
 // One light the unified sampler can pick, 16 bytes. The first FrameUniforms.topLightCount
 // entries are picked directly at every shading point (infinite lights, lights that move every
-// frame); the rest are the leaves of the light BVH. The trail (bits 2l and 2l+1: which child
-// the path took at level l of the 4-wide tree) lets MIS find the probability of picking a light
-// it hit.
+// frame); the rest are the leaves of the light BVH. The bit trail (bit d: the path took the
+// second child at depth d) lets MIS find the probability of picking a light it hit.
 PN_STRUCT(LightRef) {
     uint type;     // PN_LIGHTREF_*
     uint index;    // into the table of that type (see PN_LIGHTREF_*)
-    uint trailLo;  // levels 0-15
-    uint trailHi;  // levels 16-31
+    uint trailLo;  // depths 0-31
+    uint trailHi;  // depths 32-63
 };
 
 // The bounds of a top-level light that has a place (a moving point or spot light), 64 bytes, as
@@ -328,13 +324,10 @@ PN_STRUCT(LightNode) {
 
 // A node of the light BVH as the shaders walk it, 48 bytes: what the importance bound needs,
 // precomputed (render/light_tree.h compactLightTree). The box becomes its bounding sphere (the
-// bound only ever used the box's centre and half diagonal) and the cone's sine is stored beside
-// its cosine. The tree is 4-wide (the binary tree with every other level collapsed), so a walk
-// takes half as many dependent steps for the same number of bounds evaluated; a node's children
-// lie side by side. The root is record 0.
+// bound only ever used the box's centre and half diagonal), the cone's sine is stored beside its
+// cosine, and the two children of a node lie side by side. The root is record 0; an interior
+// node's children are records childOrLight and childOrLight + 1.
 //   childOrLight & PN_LIGHT_NODE_LEAF: a leaf holding LightRef (childOrLight & PN_LIGHT_NODE_INDEX)
-//   otherwise: children at records (childOrLight & PN_LIGHT_NODE_INDEX) + 0 .. count - 1, where
-//     count = ((childOrLight >> PN_LIGHT_NODE_CHILDREN_SHIFT) & 3) + 1, from 2 to 4
 //   childOrLight & PN_LIGHT_NODE_TWO_SIDED: emits on both sides of its normals
 PN_STRUCT(LightTreeNode) {
     vec3 center;        // of the lights' bounding box

@@ -94,13 +94,13 @@ LightList buildLightList(const LightListInput& in) {
         const bool top = isInfinite(in.punctual[i]) || (i < in.punctualMoves.size() && in.punctualMoves[i]);
         if (!top) add(PN_LIGHTREF_PUNCTUAL, i, punctualBounds(in.punctual[i]), PN_NO_HIT);
     }
-    CompactLightTree tree = compactLightTree(buildLightTree(bounds, out.topCount, 0));
+    LightTree tree = buildLightTree(bounds, out.topCount, 0);
     for (std::size_t i = 0; i < tree.trails.size(); ++i) {
         shader::LightRef& r = out.refs[out.topCount + i];
         r.trailLo = std::uint32_t(tree.trails[i]);
         r.trailHi = std::uint32_t(tree.trails[i] >> 32);
     }
-    out.tree = std::move(tree.records);
+    out.tree = compactLightTree(tree);
     return out;
 }
 

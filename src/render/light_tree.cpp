@@ -196,7 +196,6 @@ shader::LightNode toLightNode(const LightBounds& b, std::uint32_t childOrLight) 
 
 LightTree buildLightTree(std::span<const LightBounds> lights, std::uint32_t firstRef, std::uint32_t nodeBase) {
     LightTree tree;
-    tree.firstRef = firstRef;
     if (lights.empty()) return tree;
     for (const LightBounds& l : lights) PN_CHECK(l.phi > 0 && !l.bounds.empty());
     TreeBuilder builder(lights, firstRef, nodeBase, tree);
@@ -206,49 +205,31 @@ LightTree buildLightTree(std::span<const LightBounds> lights, std::uint32_t firs
 
 namespace {
 
-// Writes the binary tree as 4-wide records: a node's children are its binary children, each
-// replaced by its own two children unless it is a leaf.
+// Writes the binary tree's nodes as records of the shaders' layout, children side by side.
 class TreeCompactor {
 public:
-    explicit TreeCompactor(const LightTree& tree) : tree_(tree) {
-        out_.records.resize(1);
-        out_.trails.assign(tree.trails.size(), 0);
-    }
+    explicit TreeCompactor(const LightTree& tree) : tree_(tree) { out_.resize(1); }
 
-    CompactLightTree run() {
-        write(0, 0, 0, 0);
+    std::vector<shader::LightTreeNode> run() {
+        write(0, 0);
         return std::move(out_);
     }
 
 private:
-    bool isLeaf(std::uint32_t node) const { return (tree_.nodes[node].childOrLight & PN_LIGHT_NODE_LEAF) != 0; }
-
-    void write(std::uint32_t node, std::uint32_t record, std::uint64_t trail, std::uint32_t level) {
+    void write(std::uint32_t node, std::uint32_t record) {
         const shader::LightNode& n = tree_.nodes[node];
-        if (isLeaf(node)) {
+        if (n.childOrLight & PN_LIGHT_NODE_LEAF) {
             const std::uint32_t ref = n.childOrLight & ~PN_LIGHT_NODE_LEAF;
-            PN_CHECK(ref <= PN_LIGHT_NODE_INDEX && ref - tree_.firstRef < out_.trails.size());
-            out_.records[record] = compact(n, PN_LIGHT_NODE_LEAF | ref);
-            out_.trails[ref - tree_.firstRef] = trail;
+            PN_CHECK(ref <= PN_LIGHT_NODE_INDEX);
+            out_[record] = compact(n, PN_LIGHT_NODE_LEAF | ref);
             return;
         }
-        PN_CHECK(level < PN_LIGHT_TREE_MAX_LEVELS);
-        std::array<std::uint32_t, 4> children{};
-        std::uint32_t count = 0;
-        for (const std::uint32_t child : {node + 1, n.childOrLight}) {
-            if (isLeaf(child)) {
-                children[count++] = child;
-            } else {
-                children[count++] = child + 1;
-                children[count++] = tree_.nodes[child].childOrLight;
-            }
-        }
-        const auto first = static_cast<std::uint32_t>(out_.records.size());
-        PN_CHECK(first + count - 1 <= PN_LIGHT_NODE_INDEX);
-        out_.records.resize(out_.records.size() + count);
-        out_.records[record] = compact(n, first | ((count - 1) << PN_LIGHT_NODE_CHILDREN_SHIFT));
-        for (std::uint32_t slot = 0; slot < count; ++slot)
-            write(children[slot], first + slot, trail | (std::uint64_t(slot) << (2 * level)), level + 1);
+        const auto pair = static_cast<std::uint32_t>(out_.size());
+        PN_CHECK(pair < PN_LIGHT_NODE_INDEX);
+        out_.resize(out_.size() + 2);
+        out_[record] = compact(n, pair);
+        write(node + 1, pair);
+        write(n.childOrLight, pair + 1);
     }
 
     static shader::LightTreeNode compact(const shader::LightNode& n, std::uint32_t childOrLight) {
@@ -266,12 +247,12 @@ private:
     }
 
     const LightTree& tree_;
-    CompactLightTree out_;
+    std::vector<shader::LightTreeNode> out_;
 };
 
 }  // namespace
 
-CompactLightTree compactLightTree(const LightTree& tree) {
+std::vector<shader::LightTreeNode> compactLightTree(const LightTree& tree) {
     if (tree.nodes.empty()) return {};
     return TreeCompactor(tree).run();
 }
@@ -292,9 +273,10 @@ LightTreeDepth lightTreeDepth(std::span<const shader::LightTreeNode> records) {
             ++leaves;
             continue;
         }
-        const std::uint32_t first = child & PN_LIGHT_NODE_INDEX, count = childCount(records[record]);
-        PN_CHECK(first + count <= records.size());
-        for (std::uint32_t slot = 0; slot < count; ++slot) stack.push_back({first + slot, depth + 1});
+        const std::uint32_t pair = child & PN_LIGHT_NODE_INDEX;
+        PN_CHECK(pair + 1 < records.size());
+        stack.push_back({pair, depth + 1});
+        stack.push_back({pair + 1, depth + 1});
     }
     out.mean = sum / double(leaves);
     return out;

@@ -41,7 +41,6 @@ struct LightTree {
     // leaf indices are relative to nodes[0] plus nodeBase (see buildLightTree).
     std::vector<shader::LightNode> nodes;
     std::vector<std::uint64_t> trails;  // per input light: bit d set where the path took the second child
-    std::uint32_t firstRef = 0;         // the LightRef of input light 0
 };
 
 // Builds the tree over lights[i] (each with phi > 0); leaf i refers to LightRef firstRef + i, and
@@ -49,21 +48,12 @@ struct LightTree {
 // Splits minimise pbrt-v4's surface-area-orientation cost over 12 bins per axis.
 LightTree buildLightTree(std::span<const LightBounds> lights, std::uint32_t firstRef, std::uint32_t nodeBase);
 
-// The tree (built with nodeBase 0) as the shaders walk it (shared/types.h, LightTreeNode): 4-wide,
-// each interior node taking its binary children's places by their own children (a leaf child
-// stays), so a walk takes half the dependent steps; the root at record 0 and a node's children
-// side by side, in the binary tree's order. trails[i] leads to input light i, two bits per level.
-struct CompactLightTree {
-    std::vector<shader::LightTreeNode> records;  // empty for an empty tree
-    std::vector<std::uint64_t> trails;
-};
-CompactLightTree compactLightTree(const LightTree& tree);
+// The tree (built with nodeBase 0) as the shaders walk it (shared/types.h, LightTreeNode): the
+// root at record 0, each interior node's children side by side; same child order, so the trails
+// still lead to every light. Empty for an empty tree.
+std::vector<shader::LightTreeNode> compactLightTree(const LightTree& tree);
 
-// The slot a trail takes at `level` of a compact tree, and the child count of an interior record.
-inline std::uint32_t trailSlot(std::uint64_t trail, std::uint32_t level) { return std::uint32_t(trail >> (2 * level)) & 3u; }
-inline std::uint32_t childCount(const shader::LightTreeNode& r) { return ((r.childOrLight >> PN_LIGHT_NODE_CHILDREN_SHIFT) & 3u) + 1; }
-
-// How deep a compact tree's leaves lie (root: depth 0): the dependent steps of a shading point's walk.
+// How deep a compact tree's leaves lie (root: depth 0): what a shading point's walk costs.
 struct LightTreeDepth {
     std::uint32_t max = 0;
     double mean = 0;  // over leaves
