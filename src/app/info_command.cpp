@@ -38,7 +38,7 @@ void printScene(const std::string& name, const std::string& map, const Environme
     const std::size_t gpuBytes = deviceBytes(arrays);
     const LightTreeDepth lightDepth = lightTreeDepth(arrays.lightTree);
     std::printf("scene %s: %zu triangles, %zu materials, %zu lights (%u sampled one by one, the rest in a light BVH "
-                "of %zu nodes, leaves at depth %.1f on average, %u at most), loaded in %.0f ms\n",
+                "of %zu nodes, leaves at depth %.1f on average, %u at most, root 1), loaded in %.0f ms\n",
                 scene.name.c_str(), tris, scene.materials.size(), arrays.lightRefs.size(), arrays.topLightCount,
                 arrays.lightTree.size(), lightDepth.mean, lightDepth.max, loadMs);
     std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, %s in %.2f ms\n", s.nodes,

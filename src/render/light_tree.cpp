@@ -260,7 +260,7 @@ std::vector<shader::LightTreeNode> compactLightTree(const LightTree& tree) {
 LightTreeDepth lightTreeDepth(std::span<const shader::LightTreeNode> records) {
     LightTreeDepth out;
     if (records.empty()) return out;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0, 0}};  // (record, depth)
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0, 1}};  // (record, depth; root 1)
     double sum = 0;
     std::size_t leaves = 0;
     while (!stack.empty()) {

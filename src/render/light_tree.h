@@ -53,7 +53,8 @@ LightTree buildLightTree(std::span<const LightBounds> lights, std::uint32_t firs
 // still lead to every light. Empty for an empty tree.
 std::vector<shader::LightTreeNode> compactLightTree(const LightTree& tree);
 
-// How deep a compact tree's leaves lie (root: depth 0): what a shading point's walk costs.
+// How deep a compact tree's leaves lie, counting the root as depth 1 as bvh::treeDepth does: the
+// levels a shading point's walk visits.
 struct LightTreeDepth {
     std::uint32_t max = 0;
     double mean = 0;  // over leaves

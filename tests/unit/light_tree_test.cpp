@@ -153,9 +153,14 @@ TEST(LightTree, ShaderRecordsBoundTheirNodesAndKeepTheTrails) {
         ASSERT_EQ(records[record].childOrLight & PN_LIGHT_NODE_INDEX, firstRef + i) << "light " << i;
     }
     const LightTreeDepth depth = lightTreeDepth(records);
-    EXPECT_GE(depth.mean, std::log2(double(lights.size())) - 1e-9);  // no binary tree is shallower
+    EXPECT_GE(depth.mean, 1 + std::log2(double(lights.size())) - 1e-9);  // no binary tree is shallower (root: 1)
     EXPECT_LT(depth.max, 40u);
     EXPECT_TRUE(compactLightTree(LightTree{}).empty());
+    // Two lights: a root and two leaves, at depth 2 as bvh::treeDepth counts (root 1).
+    const std::vector<LightBounds> two{pointLightBounds({0, 0, 0}, 1.0f), pointLightBounds({1, 0, 0}, 1.0f)};
+    const LightTreeDepth small = lightTreeDepth(compactLightTree(buildLightTree(two, 0, 0)));
+    EXPECT_EQ(small.max, 2u);
+    EXPECT_EQ(small.mean, 2.0);
 }
 
 TEST(LightTree, CoincidentLightsStillSplitAndStayShallow) {
