@@ -73,6 +73,14 @@ std::vector<Vertex> readVertices(const Records& v) {
     return out;
 }
 
+// One line for a record that points past the end of a table the map gives.
+void checkReference(const std::string& where, const char* record, std::size_t i, const char* target, std::size_t index,
+                    std::size_t count, const char* targets) {
+    if (index < count) return;
+    throw Error(where + ": " + record + " " + std::to_string(i) + " references " + target + " " + std::to_string(index) +
+                ", but the map has " + std::to_string(count) + " " + targets);
+}
+
 std::vector<Sector> readSectors(const Records& sec) {
     std::vector<Sector> out(sec.count);
     for (std::size_t i = 0; i < sec.count; ++i) {
@@ -100,10 +108,7 @@ std::vector<Sidedef> readSidedefs(const Records& s, std::size_t sectorCount, con
         o.lower = readName8(p + 12);
         o.middle = readName8(p + 20);
         o.sector = readU16(p + 28);
-        if (o.sector >= sectorCount)
-            throw Error(where + ": sidedef " + std::to_string(i) + " references sector " +
-                        std::to_string(o.sector) + ", but the map has " +
-                        std::to_string(sectorCount) + " sectors");
+        checkReference(where, "sidedef", i, "sector", o.sector, sectorCount, "sectors");
     }
     return out;
 }
@@ -119,16 +124,9 @@ bool readLinedef(const unsigned char* p, std::size_t i, const MapRecords& r, con
     o.tag = readU16(p + 8);
     o.front = readU16(p + 10);
     o.back = readU16(p + 12);
-    for (std::uint16_t vi : {o.v1, o.v2})
-        if (vi >= r.vertices.count)
-            throw Error(where + ": linedef " + std::to_string(i) + " references vertex " +
-                        std::to_string(vi) + ", but the map has " + std::to_string(r.vertices.count) +
-                        " vertices");
+    for (std::uint16_t vi : {o.v1, o.v2}) checkReference(where, "linedef", i, "vertex", vi, r.vertices.count, "vertices");
     for (std::uint16_t si : {o.front, o.back})
-        if (si != kNoSide && si >= r.sidedefs.count)
-            throw Error(where + ": linedef " + std::to_string(i) + " references sidedef " +
-                        std::to_string(si) + ", but the map has " + std::to_string(r.sidedefs.count) +
-                        " sidedefs");
+        if (si != kNoSide) checkReference(where, "linedef", i, "sidedef", si, r.sidedefs.count, "sidedefs");
     if (o.front != kNoSide || o.back == kNoSide) return false;
     std::swap(o.front, o.back);
     std::swap(o.v1, o.v2);
