@@ -30,7 +30,7 @@ bool hitPrimitive(uint i, vec3 o, vec3 d, float tMax, out float t, out float u, 
     }
     if (PN_HAS(PN_FEATURE_SPRITES) && (tri.flags & PN_TRI_SPRITE) != 0u) return hitSprite(i, tri, o, d, tMax, t, u, v);
     if (!intersectTriangle(tri, o, d, tMax, t, u, v)) return false;
-    return !PN_HAS(PN_FEATURE_ALPHA_TEST) || (tri.flags & PN_TRI_ALPHA_TESTED) == 0u || !isAlphaHole(i, u, v);
+    return !PN_HAS(PN_FEATURE_ALPHA_TEST) || (tri.flags & PN_TRI_ALPHA_TESTED) == 0u || !isAlphaHole(i, tri, u, v);
 }
 
 struct Hit {

@@ -23,7 +23,7 @@ TrianglePoint sampleTrianglePoint(uint tri, vec2 u) {
     tp.position = tv.v0 + b.x * tv.e1 + b.y * tv.e2;
     tp.normal = normalize(cross(tv.e1, tv.e2));
     tp.area = ta.area;
-    bool hole = (tv.flags & PN_TRI_ALPHA_TESTED) != 0u && isAlphaHole(tri, b.x, b.y);
+    bool hole = (tv.flags & PN_TRI_ALPHA_TESTED) != 0u && isAlphaHole(tri, tv, b.x, b.y);
     tp.radiance = hole ? vec3(0.0) : materialEmission(m, interpolateUv(tv, b.x, b.y));
     return tp;
 }

@@ -71,11 +71,12 @@ vec4 materialBaseColor(Material m, vec2 uv) {
     return vec4(m.albedo * t.rgb, t.a);
 }
 
-// For alpha-tested triangles: is the point (u, v) of triangle `tri` a hole?
-bool isAlphaHole(uint tri, float u, float v) {
+// For alpha-tested triangles: is the point (u, v) of triangle `tri` (whose TriVerts the caller
+// has already read, as tv) a hole?
+bool isAlphaHole(uint tri, TriVerts tv, float u, float v) {
     Material m = materials[triAttribs[tri].materialId];
     if ((m.flags & PN_MATERIAL_ALPHA_TESTED) == 0u || m.albedoTexture == PN_NO_TEXTURE) return false;
-    return sampleTexture(m.albedoTexture, interpolateUv(triVerts[tri], u, v), m.albedoWrap).a < m.alphaCutoff;
+    return sampleTexture(m.albedoTexture, interpolateUv(tv, u, v), m.albedoWrap).a < m.alphaCutoff;
 }
 
 #endif
