@@ -4,6 +4,7 @@
 #include "gpu/commands.h"
 #include "render/passes/image_pipeline.h"
 #include "shared/types.h"
+#include "shared/atrous_tiles.h"
 
 namespace penumbra {
 
@@ -28,8 +29,10 @@ const gpu::Buffer& DenoisePass::record(VkCommandBuffer cmd, std::uint32_t width,
                                        std::uint32_t iterations) const {
     PN_CHECK(iterations >= 1);
     for (std::uint32_t i = 0; i < iterations; ++i) {
-        shader::PassPush push{1u << i, i + 1 == iterations ? PN_ATROUS_LAST : 0u, 0, 0};
-        dispatchImage(i % 2 == 0 ? *aToB_ : *bToA_, cmd, width, height, &push);
+        const std::uint32_t step = 1u << i;
+        shader::PassPush push{step, i + 1 == iterations ? PN_ATROUS_LAST : 0u, 0, 0};
+        (i % 2 == 0 ? *aToB_ : *bToA_)
+            .dispatch(cmd, shader::atrousGroupCount(width, step), shader::atrousGroupCount(height, step), 1, &push);
         gpu::computeBarrier(cmd);
     }
     return output(iterations);
