@@ -19,21 +19,7 @@ layout(std430, set = 0, binding = PN_BINDING_GBUFFER_PREV) readonly buffer GBuff
 layout(std430, set = 0, binding = PN_BINDING_HISTORY) readonly buffer HistoryIn { HistoryTexel history[]; };
 layout(std430, set = 0, binding = PN_BINDING_HISTORY_OUT) writeonly buffer HistoryOut { HistoryTexel historyOut[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) writeonly buffer FilterIn { vec4 filterIn[]; };
-layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) writeonly buffer GuideOut { DenoiseGuide guide[]; };
-
-// The primary hit's linear depth at q (0: a miss), or `fallback` outside the image.
-float depthAt(ivec2 q, float fallback) {
-    if (!insideImage(q)) return fallback;
-    GBufferTexel g = gbuffer[pixelIndex(q)];
-    return g.surfaceId != 0u ? g.depth : 0.0;
-}
-
-// Screen-space depth gradient (central differences), so the denoiser's depth test does not cut
-// slanted surfaces into strips.
-vec2 depthGradient(ivec2 p, float depth) {
-    return 0.5 * vec2(depthAt(p + ivec2(1, 0), depth) - depthAt(p - ivec2(1, 0), depth),
-                      depthAt(p + ivec2(0, 1), depth) - depthAt(p - ivec2(0, 1), depth));
-}
+layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) writeonly buffer GuideOut { uvec2 guide[]; };
 
 // This frame's mean radiance at a pixel.
 vec3 currentRadiance(uint i) { return accum[i].rgb / float(viewer.samplesPerFrame); }
@@ -140,6 +126,5 @@ void main() {
     vec3 albedo = demodulationAlbedo(g);
     float albedoLuminance = max(luminance(albedo), 1e-3);
     filterIn[i] = vec4(o.color / albedo, variance / (albedoLuminance * albedoLuminance));
-    float depth = g.surfaceId != 0u ? g.depth : 0.0;
-    guide[i] = makeDenoiseGuide(g.normal, depth, depthGradient(p, depth));
+    guide[i] = packDenoiseGuide(g.normal, g.surfaceId != 0u ? g.depth : 0.0);
 }

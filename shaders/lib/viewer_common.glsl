@@ -51,8 +51,8 @@ vec3 octDecode(vec2 e) {
     return normalize(n);
 }
 
-DenoiseGuide makeDenoiseGuide(vec3 normal, float depth, vec2 depthGradient) {
-    return DenoiseGuide(depth > 0.0 ? packSnorm2x16(octEncode(normal)) : 0u, depth, depthGradient);
+uvec2 packDenoiseGuide(vec3 normal, float depth) {
+    return uvec2(depth > 0.0 ? packSnorm2x16(octEncode(normal)) : 0u, floatBitsToUint(depth));
 }
 
 // The albedo the denoiser divides out: 1 where the primary ray missed or the surface is black.

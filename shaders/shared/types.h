@@ -59,7 +59,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_ENV_TEXELS 24     // environment radiance, one vec4 (rgb, unused) per texel
 #define PN_BINDING_OVERLAY_BOXES 25  // BvhNode per box the viewer's box overlay outlines (bounds only)
 #define PN_BINDING_LIGHT_NODES 26    // LightNode per top-level light (the first FrameUniforms.topLightCount LightRefs)
-#define PN_BINDING_DENOISE_GUIDE 27  // DenoiseGuide per pixel: what the a-trous passes compare
+#define PN_BINDING_DENOISE_GUIDE 27  // uvec2 per pixel: what the a-trous passes compare (PN_DENOISE_GUIDE_BYTES)
 #define PN_BINDING_INSTANCES_PREV 28  // the viewer's Instance entries as the previous frame placed them (gbuffer.comp's object motion)
 #define PN_BINDING_ACTIVE_MASK 29    // uint per pixel: 0 skips the pixel in trace.comp when PN_TRACE_MASKED is set
 #define PN_BINDING_INSTANCES 30      // Instance per placed bottom level (two-level scenes; see FrameUniforms.instanceCount)
@@ -441,13 +441,10 @@ PN_STRUCT(FrameUniforms) {
 #define PN_TRACE_MASKED 1u       // PassPush.mode bit of trace.comp: read the active mask (adaptive sampling)
 #define PN_GBUFFER_SUBPIXEL 1u    // PassPush.mode bit of gbuffer.comp: trace cell passIndex of a 4x4 grid in the pixel
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
-// The denoiser's per-pixel guide, written by temporal.comp, 16 bytes: what the a-trous passes
-// compare instead of 48-byte GBufferTexels.
-PN_STRUCT8(DenoiseGuide) {
-    uint normal;         // the shading normal, octahedral, packSnorm2x16
-    float depth;         // linear depth; 0 where the primary ray missed
-    vec2 depthGradient;  // d depth / d pixel (central differences), so slanted surfaces are not cut into strips
-};
+// The denoiser's per-pixel guide, written by temporal.comp: x = the shading normal, octahedral,
+// packSnorm2x16; y = the linear depth's float bits (0: the primary ray missed). 8 bytes instead of
+// a 48-byte GBufferTexel per tap keeps the 25-tap filter in cache.
+#define PN_DENOISE_GUIDE_BYTES 8u
 
 // What the primary ray saw at a pixel's centre, 48 bytes.
 PN_STRUCT(GBufferTexel) {
@@ -661,8 +658,6 @@ static_assert(sizeof(BsdfTestResult) == 32 && offsetof(BsdfTestResult, pdf) == 1
               offsetof(BsdfTestResult, value) == 16 && offsetof(BsdfTestResult, isDelta) == 28);
 static_assert(sizeof(SurfacePoint) == 32 && offsetof(SurfacePoint, valid) == 12 &&
               offsetof(SurfacePoint, normal) == 16);
-static_assert(sizeof(DenoiseGuide) == 16 && offsetof(DenoiseGuide, depth) == 4 &&
-              offsetof(DenoiseGuide, depthGradient) == 8);
 static_assert(sizeof(GBufferTexel) == 48 && offsetof(GBufferTexel, depth) == 12 &&
               offsetof(GBufferTexel, albedo) == 16 && offsetof(GBufferTexel, surfaceId) == 28 &&
               offsetof(GBufferTexel, motion) == 32);

@@ -123,7 +123,7 @@ ImageRgb FinalFramePasses::denoise(const PixelAccumulator& sums, const FinalDeno
     };
     gpu::Buffer historyOut = pixelBuffer(sizeof(shader::HistoryTexel));
     gpu::Buffer filterA = pixelBuffer(sizeof(Vec4)), filterB = pixelBuffer(sizeof(Vec4));
-    gpu::Buffer guide = pixelBuffer(sizeof(shader::DenoiseGuide));
+    gpu::Buffer guide = pixelBuffer(PN_DENOISE_GUIDE_BYTES);
     TemporalPass temporal(ctx_, TemporalBuffers{&renderer_.frameUniforms(), &viewerUniforms_, &accumulation, &gbuffer_,
                                                 &gbuffer_, &historyIn, &historyOut, &filterA, &guide});
     DenoisePass atrous(ctx_, renderer_.frameUniforms(), viewerUniforms_, gbuffer_, guide, filterA, filterB);

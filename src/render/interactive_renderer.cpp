@@ -210,7 +210,7 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
     historyB_ = pixelBuffer(sizeof(shader::HistoryTexel));
     filterA_ = pixelBuffer(sizeof(Vec4));
     filterB_ = pixelBuffer(sizeof(Vec4));
-    guide_ = pixelBuffer(sizeof(shader::DenoiseGuide));
+    guide_ = pixelBuffer(PN_DENOISE_GUIDE_BYTES);
     display_ = pixelBuffer(sizeof(std::uint32_t));
     historyIn_ = &historyA_;
     historyOut_ = &historyB_;

@@ -185,7 +185,6 @@ TEST(Layout, ViewerStructsMatchInTheViewerShaders) {
                        offsetof(ViewerUniforms, sigmaNormal), offsetof(ViewerUniforms, sigmaDepth),
                        offsetof(ViewerUniforms, heatMax), offsetof(ViewerUniforms, denoise),
                        offsetof(ViewerUniforms, debugOpacity), offsetof(ViewerUniforms, debugInset)});
-        expectMembers(spv, "DenoiseGuide", {0, offsetof(DenoiseGuide, depth), offsetof(DenoiseGuide, depthGradient)});
         expectMembers(spv, "HeatCounters", {0, offsetof(HeatCounters, maxTris), offsetof(HeatCounters, maxLeafDepth),
                                             offsetof(HeatCounters, maxLeafTris)});
         expectMembers(spv, "FrameUniforms", {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight)});
@@ -197,7 +196,7 @@ TEST(Layout, ViewerStructsMatchInTheViewerShaders) {
         for (const auto& [name, members] : spv) found[name] += 1;
     }
     // Each viewer struct is used by at least one of these shaders; the check above saw it.
-    for (const char* s : {"GBufferTexel", "HistoryTexel", "DenoiseGuide", "ViewerUniforms", "HeatCounters", "BoxOverlayPush"})
+    for (const char* s : {"GBufferTexel", "HistoryTexel", "ViewerUniforms", "HeatCounters", "BoxOverlayPush"})
         EXPECT_GE(found[s], 1) << s << " not found in any viewer shader";
 }
 

@@ -4,7 +4,6 @@
 #include "gpu/commands.h"
 #include "render/passes/image_pipeline.h"
 #include "shared/types.h"
-#include "shared/atrous_tiles.h"
 
 namespace penumbra {
 
@@ -29,10 +28,8 @@ const gpu::Buffer& DenoisePass::record(VkCommandBuffer cmd, std::uint32_t width,
                                        std::uint32_t iterations) const {
     PN_CHECK(iterations >= 1);
     for (std::uint32_t i = 0; i < iterations; ++i) {
-        const std::uint32_t step = 1u << i;
-        shader::PassPush push{step, i + 1 == iterations ? PN_ATROUS_LAST : 0u, 0, 0};
-        (i % 2 == 0 ? *aToB_ : *bToA_)
-            .dispatch(cmd, shader::atrousGroupCount(width, step), shader::atrousGroupCount(height, step), 1, &push);
+        shader::PassPush push{1u << i, i + 1 == iterations ? PN_ATROUS_LAST : 0u, 0, 0};
+        dispatchImage(i % 2 == 0 ? *aToB_ : *bToA_, cmd, width, height, &push);
         gpu::computeBarrier(cmd);
     }
     return output(iterations);

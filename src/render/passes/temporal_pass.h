@@ -17,7 +17,7 @@ struct TemporalBuffers {
     const gpu::Buffer* history;         // HistoryTexel, last frame
     const gpu::Buffer* historyOut;      // HistoryTexel, this frame
     const gpu::Buffer* filterIn;        // vec4: illumination and variance for the denoiser
-    const gpu::Buffer* guide;           // a DenoiseGuide per pixel: what the denoiser compares
+    const gpu::Buffer* guide;           // PN_DENOISE_GUIDE_BYTES per pixel: what the denoiser compares
 };
 
 class TemporalPass {
