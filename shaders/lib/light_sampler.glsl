@@ -9,9 +9,11 @@
 // them; the pick descends it choosing children in proportion to their importance (Conty Estevez
 // & Kulla 2018; pbrt-v4's BVHLightSampler): power over squared distance, times bounds on the
 // emitter's and the surface's cosines. lightPickPmf retraces the same choices along the light's
-// bit trail, so MIS uses exactly the probability sampling had. The walk evaluates two bounds per
-// level, some twenty per pick on a Doom level: the tree's nodes (LightTreeNode) carry what the
-// bound needs precomputed, and the bound spends as few square roots and divisions as it can.
+// bit trail, so MIS uses exactly the probability sampling had. The bounds are most of a pick's
+// cost (on the H200, about 0.6 of DOOM1 E1M1's 1.5 ms shading pass at 1080p), so only the first
+// PN_LIGHT_TREE_IMPORTANCE_LEVELS levels evaluate them; below, clusters are small and children
+// are chosen by power. The tree's nodes (LightTreeNode) carry what the bound needs precomputed,
+// and the bound spends as few square roots and divisions as it can.
 #ifndef PN_LIGHT_SAMPLER_GLSL
 #define PN_LIGHT_SAMPLER_GLSL
 
@@ -114,12 +116,17 @@ float totalLightImportance(float tree, vec3 p, vec3 n) {
     return total;
 }
 
-// One level of the walk: the children of `node` (an interior node) and the probability of the
-// first; -1 when neither can light p.
-float firstChildProbability(LightTreeNode node, vec3 p, vec3 n, out LightTreeNode first, out LightTreeNode second) {
+// One level of the walk: the children of `node` (an interior node at `depth`, the root's 0) and
+// the probability of the first; -1 when neither can light p. The first levels choose by the
+// children's importance at p; deeper, where clusters are small, by their power alone, which
+// spares two importance bounds per level (most of a pick's cost). pickLight and lightPickPmf
+// choose alike at every node, so the pmf stays exact.
+float firstChildProbability(LightTreeNode node, vec3 p, vec3 n, uint depth, out LightTreeNode first,
+                            out LightTreeNode second) {
     uint record = node.childOrLight & PN_LIGHT_NODE_INDEX;
     first = lightTree[record];
     second = lightTree[record + 1u];
+    if (depth >= PN_LIGHT_TREE_IMPORTANCE_LEVELS) return first.phi / (first.phi + second.phi);
     float a = treeNodeImportance(first, p, n), b = treeNodeImportance(second, p, n);
     return a + b > 0.0 ? a / (a + b) : -1.0;
 }
@@ -159,7 +166,7 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
         if ((node.childOrLight & PN_LIGHT_NODE_LEAF) != 0u)
             return LightPick(node.childOrLight & PN_LIGHT_NODE_INDEX, pick.pmf);
         LightTreeNode first, second;
-        float p1 = firstChildProbability(node, p, n, first, second);
+        float p1 = firstChildProbability(node, p, n, depth, first, second);
         if (p1 < 0.0) break;
         if (rngNext(rng) < p1) {
             node = first;
@@ -185,7 +192,7 @@ float lightPickPmf(uint ref, vec3 p, vec3 n) {
     for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
         if ((node.childOrLight & PN_LIGHT_NODE_LEAF) != 0u) return (node.childOrLight & PN_LIGHT_NODE_INDEX) == ref ? pmf : 0.0;
         LightTreeNode first, second;
-        float p1 = firstChildProbability(node, p, n, first, second);
+        float p1 = firstChildProbability(node, p, n, depth, first, second);
         if (p1 < 0.0) return 0.0;
         bool takeSecond = (depth < 32u ? (r.trailLo >> depth) : (r.trailHi >> (depth - 32u))) % 2u != 0u;
         if (takeSecond) {

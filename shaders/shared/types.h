@@ -152,6 +152,9 @@ using namespace penumbra::gpu_types;
 #define PN_LIGHTREF_ENVIRONMENT 3u  // the environment (map or constant background)
 #define PN_NO_LIGHT 0xffffffffu     // TriAttribs.lightIndex of a primitive that is no light
 #define PN_LIGHT_TREE_MAX_DEPTH 64u // the bit trail of a light has 64 bits (two uints)
+// The light-tree walk weighs children by their importance at the shading point on its first
+// levels, below them by power alone (lib/light_sampler.glsl firstChildProbability).
+#define PN_LIGHT_TREE_IMPORTANCE_LEVELS 5u
 #define PN_LIGHT_NODE_LEAF 0x80000000u       // LightNode / LightTreeNode.childOrLight: a leaf
 #define PN_LIGHT_NODE_TWO_SIDED 0x40000000u  // LightTreeNode.childOrLight: emits both ways
 #define PN_LIGHT_NODE_INDEX 0x3fffffffu      // LightTreeNode.childOrLight: the child record or the LightRef
