@@ -88,30 +88,29 @@ public:
 
     void addWritten(std::uint32_t nodes) { written_ += nodes; }
 
-    // Closes the gaps in place: a walk from the root visits the slots in increasing order and
-    // writes each node at or before its slot, patching each right link to where its target
-    // lands. Returns the node count.
-    std::uint32_t compact() {
+    // Copies the nodes into `out` without the gaps: a walk from the root visits the slots in
+    // increasing order and appends each node, patching each right link to where its target
+    // lands. Only the nodes written are touched, not the 2n - 1 slots reserved for them.
+    void compact(std::vector<shader::BvhNode>& out) const {
         struct Pending {
             std::uint32_t slot, parent;  // parent: index whose right link points here, or none
         };
         constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+        reserveHuge(out, written_.load());
         std::vector<Pending> stack{{0, kNone}};
-        std::uint32_t count = 0;
         while (!stack.empty()) {
             const Pending p = stack.back();
             stack.pop_back();
-            if (p.parent != kNone) slots_[p.parent].firstOrRight = count;
-            const shader::BvhNode node = slots_[p.slot];
-            slots_[count] = node;
+            const auto index = std::uint32_t(out.size());
+            if (p.parent != kNone) out[p.parent].firstOrRight = index;
+            const shader::BvhNode& node = slots_[p.slot];
+            out.push_back(node);
             if (node.triCount == 0) {
-                stack.push_back({node.firstOrRight, count});
+                stack.push_back({node.firstOrRight, index});
                 stack.push_back({p.slot + 1, kNone});
             }
-            ++count;
         }
-        PN_CHECK(count == written_.load());
-        return count;
+        PN_CHECK(out.size() == written_.load());
     }
 
 private:
@@ -240,15 +239,12 @@ Bvh buildFrom(std::size_t count, RefOf&& refOf, const BuildOptions& options) {
         root.centroids.grow(part.centroids);
     });
 
-    bvh.primOrder.reserve(count);
-    adviseHugePages(bvh.primOrder.data(), count * sizeof(std::uint32_t));
-    bvh.primOrder.resize(count);
-    // The tree is built in the output itself: 2n - 1 slots, the most a binary tree over n
-    // leaves can need, closed up by compact() afterwards.
-    bvh.nodes.reserve(2 * count - 1);
-    adviseHugePages(bvh.nodes.data(), bvh.nodes.capacity() * sizeof(shader::BvhNode));
-    bvh.nodes.resize(2 * count - 1);
-    Builder builder(refs, bvh.primOrder.data(), bvh.nodes.data(), options);
+    bvh.primOrder = hugeVector<std::uint32_t>(count);
+    // The tree is built in 2n - 1 slots, the most a binary tree over n leaves can need, left
+    // uninitialised (the pages of the slots never written are never touched), and compact()
+    // copies the nodes out without the gaps.
+    BigBuffer<shader::BvhNode> slots(2 * count - 1);
+    Builder builder(refs, bvh.primOrder.data(), slots.data(), options);
     auto buildRoot = [&](TaskGroup* tasks) {
         std::uint32_t nodes = 0;
         builder.subtree(root, 1, 0, 0, tasks, nodes);
@@ -260,8 +256,7 @@ Bvh buildFrom(std::size_t count, RefOf&& refOf, const BuildOptions& options) {
     } else {
         buildRoot(nullptr);
     }
-    bvh.nodes.resize(builder.compact());
-    if (bvh.nodes.size() < bvh.nodes.capacity() / 2) bvh.nodes.shrink_to_fit();
+    builder.compact(bvh.nodes);
     return bvh;
 }
 
