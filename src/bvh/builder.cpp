@@ -1,9 +1,9 @@
 #include "bvh/builder.h"
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cstddef>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -51,13 +51,34 @@ public:
           threads_(hardwareThreads()),
           sah_(options) {}
 
+    // A share of the build run as one unit: the subtree from rootSlot less the subtrees it
+    // handed on as tasks of their own. Task 0 is the root's.
+    struct Task {
+        std::uint32_t rootSlot = 0;
+        std::uint32_t parent = 0;  // the task that handed this one on
+        std::uint32_t nodes = 0;   // written by this task itself
+        std::uint32_t total = 0;   // in its whole subtree, handed-on tasks included (compact())
+    };
+
+    std::uint32_t newTask(std::uint32_t rootSlot, std::uint32_t parent) {
+        std::lock_guard lock(tasksMutex_);
+        tasks_.push_back({rootSlot, parent, 0, 0});
+        return std::uint32_t(tasks_.size() - 1);
+    }
+    void finishTask(std::uint32_t task, std::uint32_t nodes) {
+        std::lock_guard lock(tasksMutex_);
+        tasks_[task].nodes = nodes;
+    }
+
     // Writes the subtree of `range` (its primitives in refs_[side]) depth-first from `slot` and
     // returns one past the last slot it may use; adds the nodes written to `written`. A subtree
     // over m primitives has at most 2m - 1 nodes, so when the right child is handed to another
     // thread its slot is known before the left subtree is built: slot + 2 * left size. Such
     // reservations leave gaps that compact() closes; without tasks the subtree is dense.
+    // The node that hands on its right child says so (triCount kHandedOn, firstOrRight: the
+    // child's task) until compact() links it.
     std::uint32_t subtree(const Range& range, int depth, int side, std::uint32_t slot,
-                          TaskGroup* tasks, std::uint32_t& written) {
+                          TaskGroup* tasks, std::uint32_t task, std::uint32_t& written) {
         shader::BvhNode& node = slots_[slot];
         node = leaf(range);
         ++written;
@@ -71,49 +92,80 @@ public:
         node.triCount = 0;
         if (tasks && range.size() >= kParallelSubtrees) {
             const std::uint32_t rightSlot = slot + 2 * left.size();
-            node.firstOrRight = rightSlot;
-            tasks->spawn([this, right, depth, side, rightSlot, tasks] {
+            const std::uint32_t child = newTask(rightSlot, task);
+            node.triCount = kHandedOn;
+            node.firstOrRight = child;
+            tasks->spawn([this, right, depth, side, rightSlot, tasks, child] {
                 std::uint32_t nodes = 0;
-                subtree(right, depth + 1, 1 - side, rightSlot, tasks, nodes);
-                written_ += nodes;
+                subtree(right, depth + 1, 1 - side, rightSlot, tasks, child, nodes);
+                finishTask(child, nodes);
             });
-            subtree(left, depth + 1, 1 - side, slot + 1, tasks, written);
+            subtree(left, depth + 1, 1 - side, slot + 1, tasks, task, written);
             return slot + 2 * range.size() - 1;
         }
         const std::uint32_t rightSlot =
-            subtree(left, depth + 1, 1 - side, slot + 1, tasks, written);
+            subtree(left, depth + 1, 1 - side, slot + 1, tasks, task, written);
         node.firstOrRight = rightSlot;
-        return subtree(right, depth + 1, 1 - side, rightSlot, tasks, written);
+        return subtree(right, depth + 1, 1 - side, rightSlot, tasks, task, written);
     }
 
-    void addWritten(std::uint32_t nodes) { written_ += nodes; }
-
-    // Copies the nodes into `out` without the gaps: a walk from the root visits the slots in
-    // increasing order and appends each node, patching each right link to where its target
-    // lands. Only the nodes written are touched, not the 2n - 1 slots reserved for them.
-    void compact(std::vector<shader::BvhNode>& out) const {
-        struct Pending {
-            std::uint32_t slot, parent;  // parent: index whose right link points here, or none
-        };
-        constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-        reserveHuge(out, written_.load());
-        std::vector<Pending> stack{{0, kNone}};
-        while (!stack.empty()) {
-            const Pending p = stack.back();
-            stack.pop_back();
-            const auto index = std::uint32_t(out.size());
-            if (p.parent != kNone) out[p.parent].firstOrRight = index;
-            const shader::BvhNode& node = slots_[p.slot];
-            out.push_back(node);
-            if (node.triCount == 0) {
-                stack.push_back({node.firstOrRight, index});
-                stack.push_back({p.slot + 1, kNone});
-            }
-        }
-        PN_CHECK(out.size() == written_.load());
+    // Copies the nodes into `out` without the gaps, in depth-first order. Each task's subtree
+    // size follows from the counts of the tasks (children are created after their parents), so
+    // every task knows where its nodes go as soon as the task that handed it on has reached it,
+    // and the tasks copy in parallel when `pool` is given.
+    void compact(std::vector<shader::BvhNode>& out, TaskGroup* pool) {
+        for (Task& t : tasks_) t.total = t.nodes;
+        for (std::size_t id = tasks_.size(); id-- > 1;)
+            tasks_[tasks_[id].parent].total += tasks_[id].total;
+        reserveHuge(out, tasks_[0].total);
+        out.resize(tasks_[0].total);
+        if (pool)
+            pool->run([&] { place(0, 0, out.data(), pool); });
+        else
+            place(0, 0, out.data(), nullptr);
     }
 
 private:
+    static constexpr std::uint32_t kHandedOn = std::numeric_limits<std::uint32_t>::max();
+
+    // Copies task `id`'s nodes to out[first...]: a walk from its root visits its slots in
+    // increasing order, writes each node at the next index and links each right child to where
+    // it lands; a handed-on child's whole subtree is skipped over and placed by its own task.
+    void place(std::uint32_t id, std::uint32_t first, shader::BvhNode* out,
+               TaskGroup* pool) const {
+        struct Pending {
+            std::uint32_t slot;    // or the task, when handedOn
+            std::uint32_t parent;  // index whose right link points here, or none
+            bool handedOn;
+        };
+        constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+        std::vector<Pending> stack{{tasks_[id].rootSlot, kNone, false}};
+        std::uint32_t next = first;
+        while (!stack.empty()) {
+            const Pending p = stack.back();
+            stack.pop_back();
+            if (p.parent != kNone) out[p.parent].firstOrRight = next;
+            if (p.handedOn) {
+                const std::uint32_t child = p.slot, at = next;
+                next += tasks_[child].total;
+                if (pool)
+                    pool->spawn([this, child, at, out, pool] { place(child, at, out, pool); });
+                else
+                    place(child, at, out, nullptr);
+                continue;
+            }
+            shader::BvhNode node = slots_[p.slot];
+            const std::uint32_t index = next++;
+            if (node.triCount == kHandedOn || node.triCount == 0) {
+                stack.push_back({node.firstOrRight, index, node.triCount == kHandedOn});
+                stack.push_back({p.slot + 1, kNone, false});
+                node.triCount = 0;
+            }
+            out[index] = node;
+        }
+        PN_CHECK(next - first == tasks_[id].total);
+    }
+
     shader::BvhNode leaf(const Range& range) const {
         shader::BvhNode node{};
         node.boundsMin = simd::vec3(range.bounds.lo);
@@ -189,7 +241,8 @@ private:
     std::uint32_t total_;
     unsigned threads_;
     sah::SahBinning sah_;
-    std::atomic<std::uint32_t> written_{0};
+    std::mutex tasksMutex_;
+    std::deque<Task> tasks_;  // a deque: references stay valid as tasks are added
 };
 
 }  // namespace
@@ -245,18 +298,20 @@ Bvh buildFrom(std::size_t count, RefOf&& refOf, const BuildOptions& options) {
     // copies the nodes out without the gaps.
     BigBuffer<shader::BvhNode> slots(2 * count - 1);
     Builder builder(refs, bvh.primOrder.data(), slots.data(), options);
+    const std::uint32_t rootTask = builder.newTask(0, 0);
     auto buildRoot = [&](TaskGroup* tasks) {
         std::uint32_t nodes = 0;
-        builder.subtree(root, 1, 0, 0, tasks, nodes);
-        builder.addWritten(nodes);
+        builder.subtree(root, 1, 0, 0, tasks, rootTask, nodes);
+        builder.finishTask(rootTask, nodes);
     };
     if (count >= kParallelSubtrees && hardwareThreads() > 1) {
         TaskGroup tasks;
         tasks.run([&] { buildRoot(&tasks); });
+        builder.compact(bvh.nodes, &tasks);
     } else {
         buildRoot(nullptr);
+        builder.compact(bvh.nodes, nullptr);
     }
-    builder.compact(bvh.nodes);
     return bvh;
 }
 
