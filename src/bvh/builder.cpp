@@ -1,14 +1,19 @@
 #include "bvh/builder.h"
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cstddef>
+#include <cstdint>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <utility>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include "bvh/sah_binning.h"
 #include "core/big_buffer.h"
@@ -28,6 +33,26 @@ constexpr std::uint32_t kParallelSubtrees = 4 * 1024;
 // Nodes this large, and larger than one thread's share of the whole build, bin on every thread
 // (near the root, where the other threads have nothing else to do yet).
 constexpr std::uint32_t kParallelBinning = 64 * 1024;
+
+// Faults in the pages of [data, data + bytes) on all threads (Linux MADV_POPULATE_WRITE, 2 MiB
+// per call) before a serial pass first writes them: the kernel zeroes each fresh page on its
+// first touch, which for a large output costs more than the writes themselves. Contents are not
+// changed; failure (an old kernel) only means the serial pass pays for the faults.
+void prefault(void* data, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+    constexpr std::uintptr_t kPage = 4096, kStep = std::uintptr_t(2) << 20;
+    const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(data) / kPage * kPage;
+    const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(data) + bytes;
+    if (bytes < 2 * kStep) return;
+    parallelFor((end - begin + kStep - 1) / kStep, 1, [&](std::size_t lo, std::size_t hi) {
+        const std::uintptr_t from = begin + lo * kStep, to = std::min(end, begin + hi * kStep);
+        madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
+    });
+#else
+    (void)data;
+    (void)bytes;
+#endif
+}
 
 // Levels of balanced splits needed before every leaf holds at most leafSize primitives.
 int levelsNeeded(std::uint32_t count, std::uint32_t leafSize) {
@@ -51,13 +76,34 @@ public:
           threads_(hardwareThreads()),
           sah_(options) {}
 
+    // A share of the build run as one unit: the subtree from rootSlot less the subtrees it
+    // handed on as tasks of their own. Task 0 is the root's.
+    struct Task {
+        std::uint32_t rootSlot = 0;
+        std::uint32_t parent = 0;  // the task that handed this one on
+        std::uint32_t nodes = 0;   // written by this task itself
+        std::uint32_t total = 0;   // in its whole subtree, handed-on tasks included (compact())
+    };
+
+    std::uint32_t newTask(std::uint32_t rootSlot, std::uint32_t parent) {
+        std::lock_guard lock(tasksMutex_);
+        tasks_.push_back({rootSlot, parent, 0, 0});
+        return std::uint32_t(tasks_.size() - 1);
+    }
+    void finishTask(std::uint32_t task, std::uint32_t nodes) {
+        std::lock_guard lock(tasksMutex_);
+        tasks_[task].nodes = nodes;
+    }
+
     // Writes the subtree of `range` (its primitives in refs_[side]) depth-first from `slot` and
     // returns one past the last slot it may use; adds the nodes written to `written`. A subtree
     // over m primitives has at most 2m - 1 nodes, so when the right child is handed to another
     // thread its slot is known before the left subtree is built: slot + 2 * left size. Such
     // reservations leave gaps that compact() closes; without tasks the subtree is dense.
+    // The node that hands on its right child says so (triCount kHandedOn, firstOrRight: the
+    // child's task) until compact() links it.
     std::uint32_t subtree(const Range& range, int depth, int side, std::uint32_t slot,
-                          TaskGroup* tasks, std::uint32_t& written) {
+                          TaskGroup* tasks, std::uint32_t task, std::uint32_t& written) {
         shader::BvhNode& node = slots_[slot];
         node = leaf(range);
         ++written;
@@ -71,50 +117,81 @@ public:
         node.triCount = 0;
         if (tasks && range.size() >= kParallelSubtrees) {
             const std::uint32_t rightSlot = slot + 2 * left.size();
-            node.firstOrRight = rightSlot;
-            tasks->spawn([this, right, depth, side, rightSlot, tasks] {
+            const std::uint32_t child = newTask(rightSlot, task);
+            node.triCount = kHandedOn;
+            node.firstOrRight = child;
+            tasks->spawn([this, right, depth, side, rightSlot, tasks, child] {
                 std::uint32_t nodes = 0;
-                subtree(right, depth + 1, 1 - side, rightSlot, tasks, nodes);
-                written_ += nodes;
+                subtree(right, depth + 1, 1 - side, rightSlot, tasks, child, nodes);
+                finishTask(child, nodes);
             });
-            subtree(left, depth + 1, 1 - side, slot + 1, tasks, written);
+            subtree(left, depth + 1, 1 - side, slot + 1, tasks, task, written);
             return slot + 2 * range.size() - 1;
         }
         const std::uint32_t rightSlot =
-            subtree(left, depth + 1, 1 - side, slot + 1, tasks, written);
+            subtree(left, depth + 1, 1 - side, slot + 1, tasks, task, written);
         node.firstOrRight = rightSlot;
-        return subtree(right, depth + 1, 1 - side, rightSlot, tasks, written);
+        return subtree(right, depth + 1, 1 - side, rightSlot, tasks, task, written);
     }
 
-    void addWritten(std::uint32_t nodes) { written_ += nodes; }
-
-    // Closes the gaps in place: a walk from the root visits the slots in increasing order and
-    // writes each node at or before its slot, patching each right link to where its target
-    // lands. Returns the node count.
-    std::uint32_t compact() {
-        struct Pending {
-            std::uint32_t slot, parent;  // parent: index whose right link points here, or none
-        };
-        constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-        std::vector<Pending> stack{{0, kNone}};
-        std::uint32_t count = 0;
-        while (!stack.empty()) {
-            const Pending p = stack.back();
-            stack.pop_back();
-            if (p.parent != kNone) slots_[p.parent].firstOrRight = count;
-            const shader::BvhNode node = slots_[p.slot];
-            slots_[count] = node;
-            if (node.triCount == 0) {
-                stack.push_back({node.firstOrRight, count});
-                stack.push_back({p.slot + 1, kNone});
-            }
-            ++count;
-        }
-        PN_CHECK(count == written_.load());
-        return count;
+    // Copies the nodes into `out` without the gaps, in depth-first order. Each task's subtree
+    // size follows from the counts of the tasks (children are created after their parents), so
+    // every task knows where its nodes go as soon as the task that handed it on has reached it,
+    // and the tasks copy in parallel when `pool` is given.
+    void compact(std::vector<shader::BvhNode>& out, TaskGroup* pool) {
+        for (Task& t : tasks_) t.total = t.nodes;
+        for (std::size_t id = tasks_.size(); id-- > 1;)
+            tasks_[tasks_[id].parent].total += tasks_[id].total;
+        reserveHuge(out, tasks_[0].total);
+        if (pool) prefault(out.data(), tasks_[0].total * sizeof(shader::BvhNode));
+        out.resize(tasks_[0].total);
+        if (pool)
+            pool->run([&] { place(0, 0, out.data(), pool); });
+        else
+            place(0, 0, out.data(), nullptr);
     }
 
 private:
+    static constexpr std::uint32_t kHandedOn = std::numeric_limits<std::uint32_t>::max();
+
+    // Copies task `id`'s nodes to out[first...]: a walk from its root visits its slots in
+    // increasing order, writes each node at the next index and links each right child to where
+    // it lands; a handed-on child's whole subtree is skipped over and placed by its own task.
+    void place(std::uint32_t id, std::uint32_t first, shader::BvhNode* out,
+               TaskGroup* pool) const {
+        struct Pending {
+            std::uint32_t slot;    // or the task, when handedOn
+            std::uint32_t parent;  // index whose right link points here, or none
+            bool handedOn;
+        };
+        constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+        std::vector<Pending> stack{{tasks_[id].rootSlot, kNone, false}};
+        std::uint32_t next = first;
+        while (!stack.empty()) {
+            const Pending p = stack.back();
+            stack.pop_back();
+            if (p.parent != kNone) out[p.parent].firstOrRight = next;
+            if (p.handedOn) {
+                const std::uint32_t child = p.slot, at = next;
+                next += tasks_[child].total;
+                if (pool)
+                    pool->spawn([this, child, at, out, pool] { place(child, at, out, pool); });
+                else
+                    place(child, at, out, nullptr);
+                continue;
+            }
+            shader::BvhNode node = slots_[p.slot];
+            const std::uint32_t index = next++;
+            if (node.triCount == kHandedOn || node.triCount == 0) {
+                stack.push_back({node.firstOrRight, index, node.triCount == kHandedOn});
+                stack.push_back({p.slot + 1, kNone, false});
+                node.triCount = 0;
+            }
+            out[index] = node;
+        }
+        PN_CHECK(next - first == tasks_[id].total);
+    }
+
     shader::BvhNode leaf(const Range& range) const {
         shader::BvhNode node{};
         node.boundsMin = simd::vec3(range.bounds.lo);
@@ -190,7 +267,8 @@ private:
     std::uint32_t total_;
     unsigned threads_;
     sah::SahBinning sah_;
-    std::atomic<std::uint32_t> written_{0};
+    std::mutex tasksMutex_;
+    std::deque<Task> tasks_;  // a deque: references stay valid as tasks are added
 };
 
 }  // namespace
@@ -240,28 +318,28 @@ Bvh buildFrom(std::size_t count, RefOf&& refOf, const BuildOptions& options) {
         root.centroids.grow(part.centroids);
     });
 
-    bvh.primOrder.reserve(count);
-    adviseHugePages(bvh.primOrder.data(), count * sizeof(std::uint32_t));
+    reserveHuge(bvh.primOrder, count);
+    prefault(bvh.primOrder.data(), count * sizeof(std::uint32_t));
     bvh.primOrder.resize(count);
-    // The tree is built in the output itself: 2n - 1 slots, the most a binary tree over n
-    // leaves can need, closed up by compact() afterwards.
-    bvh.nodes.reserve(2 * count - 1);
-    adviseHugePages(bvh.nodes.data(), bvh.nodes.capacity() * sizeof(shader::BvhNode));
-    bvh.nodes.resize(2 * count - 1);
-    Builder builder(refs, bvh.primOrder.data(), bvh.nodes.data(), options);
+    // The tree is built in 2n - 1 slots, the most a binary tree over n leaves can need, left
+    // uninitialised (the pages of the slots never written are never touched), and compact()
+    // copies the nodes out without the gaps.
+    BigBuffer<shader::BvhNode> slots(2 * count - 1);
+    Builder builder(refs, bvh.primOrder.data(), slots.data(), options);
+    const std::uint32_t rootTask = builder.newTask(0, 0);
     auto buildRoot = [&](TaskGroup* tasks) {
         std::uint32_t nodes = 0;
-        builder.subtree(root, 1, 0, 0, tasks, nodes);
-        builder.addWritten(nodes);
+        builder.subtree(root, 1, 0, 0, tasks, rootTask, nodes);
+        builder.finishTask(rootTask, nodes);
     };
     if (count >= kParallelSubtrees && hardwareThreads() > 1) {
         TaskGroup tasks;
         tasks.run([&] { buildRoot(&tasks); });
+        builder.compact(bvh.nodes, &tasks);
     } else {
         buildRoot(nullptr);
+        builder.compact(bvh.nodes, nullptr);
     }
-    bvh.nodes.resize(builder.compact());
-    if (bvh.nodes.size() < bvh.nodes.capacity() / 2) bvh.nodes.shrink_to_fit();
     return bvh;
 }
 

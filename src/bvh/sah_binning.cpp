@@ -1,10 +1,11 @@
 #include "bvh/sah_binning.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <memory>
-#include <mutex>
+#include <vector>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -86,17 +87,26 @@ void binRange(const Binner& b, const PrimRef* refs, std::uint32_t begin, std::ui
     }
 }
 
+// Bins the range in chunks on all threads, one grid per chunk, and merges them into `grid`;
+// the chunks' grids stay in `chunks` for the split's per-chunk counts.
 void binParallel(const Binner& b, const PrimRef* refs, const Range& range, unsigned threads,
-                 BinGrid& grid) {
-    std::mutex merge;
-    const std::size_t chunk = (range.size() + threads - 1) / threads;
-    parallelFor(range.size(), chunk, [&](std::size_t lo, std::size_t hi) {
-        auto local = std::make_unique<BinGrid>();
-        local->reset(b.bins);
-        binRange(b, refs, range.begin + std::uint32_t(lo), range.begin + std::uint32_t(hi), *local);
-        std::lock_guard lock(merge);
-        grid.merge(*local, b.bins);
+                 BinGrid& grid, std::vector<std::unique_ptr<BinGrid>>& chunks,
+                 std::uint32_t& chunkSize) {
+    const std::uint32_t n = range.size();
+    const std::uint32_t wanted = std::max<std::uint32_t>(
+        1, std::min<std::uint32_t>(threads * SahBinning::kChunksPerThread,
+                                   n / SahBinning::kMinChunk));
+    chunkSize = (n + wanted - 1) / wanted;
+    chunks.resize((n + chunkSize - 1) / chunkSize);
+    parallelFor(chunks.size(), 1, [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t c = lo; c < hi; ++c) {
+            chunks[c] = std::make_unique<BinGrid>();
+            chunks[c]->reset(b.bins);
+            const std::uint32_t begin = range.begin + std::uint32_t(c) * chunkSize;
+            binRange(b, refs, begin, std::min(range.end, begin + chunkSize), *chunks[c]);
+        }
     });
+    for (const auto& c : chunks) grid.merge(*c, b.bins);
 }
 
 // The children of a chosen split, read off its axis's bins.
@@ -214,28 +224,42 @@ Split SahBinning::find(const PrimRef* refs, const Range& range, unsigned threads
 
     BinGrid grid;  // ~26 KiB of stack; this frame is gone before the recursion goes deeper
     grid.reset(b.bins);
+    std::vector<std::unique_ptr<BinGrid>> chunks;
+    std::uint32_t chunkSize = 0;
     if (threads > 1)
-        binParallel(b, refs, range, threads, grid);
+        binParallel(b, refs, range, threads, grid, chunks, chunkSize);
     else
         binRange(b, refs, range.begin, range.end, grid);
 
     sweep(grid, b, range, best);
     best.binner = b;
-    if (best.axis >= 0) fillChildren(grid, range, best);
+    if (best.axis < 0) return best;
+    fillChildren(grid, range, best);
+    if (chunks.size() > 1) {
+        best.chunkSize = chunkSize;
+        best.chunkLeft.resize(chunks.size());
+        for (std::size_t c = 0; c < chunks.size(); ++c)
+            for (int i = 0; i <= best.bin; ++i)
+                best.chunkLeft[c] += chunks[c]->count[i][best.axis];
+    }
     return best;
 }
 
-// Branch-free: left primitives fill dst from the front, right ones from the back, and the side
-// only selects the store address (by a mask, so no compiler turns it into a jump). "Index <=
-// last" is decided on the unclamped bin coordinate f: the clamped, truncated index is <= last
-// exactly when f < last + 1, NaN included (it clamps to bin 0), as binning computed it.
-std::uint32_t SahBinning::partition(const PrimRef* src, PrimRef* dst, const Range& range,
-                                    const Split& split) const {
+namespace {
+
+// Branch-free: left primitives fill dst from index l up, right ones from index r - 1 down, and
+// the side only selects the store address (by a mask, so no compiler turns it into a jump).
+// "Index <= last" is decided on the unclamped bin coordinate f: the clamped, truncated index is
+// <= last exactly when f < last + 1, NaN included (it clamps to bin 0), as binning computed it.
+// Returns how many went left.
+std::uint32_t partitionRange(const PrimRef* src, PrimRef* dst, std::uint32_t begin,
+                             std::uint32_t end, std::uint32_t l, std::uint32_t r,
+                             const Split& split) {
     const Binner& b = split.binner;
     const int axis = split.axis;
     const float origin = b.origin[axis], scale = b.scale[axis], bound = float(split.bin + 1);
-    std::uint32_t l = range.begin, r = range.end;
-    for (std::uint32_t i = range.begin; i < range.end; ++i) {
+    const std::uint32_t first = l;
+    for (std::uint32_t i = begin; i < end; ++i) {
         const PrimRef p = src[i];
         const float f = (p.centroid()[axis] - origin) * scale;
         const std::uint32_t left = !(f >= bound);
@@ -244,7 +268,37 @@ std::uint32_t SahBinning::partition(const PrimRef* src, PrimRef* dst, const Rang
         l += left;
         r -= 1 - left;
     }
-    return l - range.begin;
+    return l - first;
+}
+
+}  // namespace
+
+// In parallel, chunk c's left primitives start after those of the chunks before it, and its
+// right ones below theirs, which is where the serial pass puts them. The counts come from
+// binning; should this pass ever disagree with them, the serial pass redoes the whole range.
+std::uint32_t SahBinning::partition(const PrimRef* src, PrimRef* dst, const Range& range,
+                                    const Split& split) const {
+    const std::size_t chunks = split.chunkLeft.size();
+    if (chunks > 1) {
+        std::vector<std::uint32_t> leftBefore(chunks + 1, 0);
+        for (std::size_t c = 0; c < chunks; ++c)
+            leftBefore[c + 1] = leftBefore[c] + split.chunkLeft[c];
+        std::atomic<bool> agree{leftBefore[chunks] <= range.size()};
+        if (agree)
+            parallelFor(chunks, 1, [&](std::size_t lo, std::size_t hi) {
+                for (std::size_t c = lo; c < hi; ++c) {
+                    const std::uint32_t offset = std::uint32_t(c) * split.chunkSize;
+                    const std::uint32_t begin = range.begin + offset;
+                    const std::uint32_t end = std::min(range.end, begin + split.chunkSize);
+                    const std::uint32_t l = range.begin + leftBefore[c];
+                    const std::uint32_t r = range.end - (offset - leftBefore[c]);
+                    if (partitionRange(src, dst, begin, end, l, r, split) != split.chunkLeft[c])
+                        agree = false;
+                }
+            });
+        if (agree) return leftBefore[chunks];
+    }
+    return partitionRange(src, dst, range.begin, range.end, range.begin, range.end, split);
 }
 
 void SahBinning::medianSplit(PrimRef* refs, const Range& range, Range& left, Range& right) const {

@@ -9,6 +9,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <vector>
 
 #include "bvh/builder.h"
 #include "bvh/simd4.h"
@@ -60,6 +61,11 @@ struct Split {
     float cost = simd::kInf;
     Binner binner;
     Range left, right;  // as the bins give them
+    // Set when the node was binned in parallel: its range in chunks of chunkSize primitives
+    // (the last one shorter) and how many of each chunk go left, so that partition() can move
+    // every chunk at once to where a serial pass would have put it.
+    std::uint32_t chunkSize = 0;
+    std::vector<std::uint32_t> chunkLeft;
 };
 
 struct BinGrid;  // the bins of one node (sah_binning.cpp)
@@ -86,7 +92,9 @@ public:
     // when all centroids coincide.
     Split find(const PrimRef* refs, const Range& range, unsigned threads) const;
 
-    // Moves src[range] to dst[range], the left side of `split` first. Returns how many went
+    // Moves src[range] to dst[range], the left side of `split` first (in source order; the right
+    // side after it in reverse source order), on several threads when find() binned in
+    // parallel, with the same result as on one. Returns how many went
     // left, which is split.left.size() unless the bins and this pass disagreed on a bin (only
     // conceivable where a compiler fuses the centroid's arithmetic differently in the two);
     // then the caller must gather the children's bounds itself.
@@ -106,6 +114,11 @@ public:
     // when all centroids coincide. Each half needs one level fewer, which is what makes the
     // depth bound hold.
     void medianSplit(PrimRef* refs, const Range& range, Range& left, Range& right) const;
+
+    // Nodes binned in parallel are cut into at most this many chunks per thread (for balance
+    // when some threads are busy elsewhere), none smaller than kMinChunk primitives.
+    static constexpr std::uint32_t kChunksPerThread = 4;
+    static constexpr std::uint32_t kMinChunk = 16 * 1024;
 
 private:
     int binCount(const Range& range) const;

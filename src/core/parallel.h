@@ -1,42 +1,45 @@
-// Minimal fork-join parallelism over index ranges, using every hardware thread.
+// Fork-join parallelism over index ranges and recursive tasks, on TBB's worker pool: no thread
+// is started per call, and a call made while every worker is busy (a build nested in a parallel
+// loader, a subtree task binning its node) runs on the caller instead of oversubscribing.
 #pragma once
 
-#include <condition_variable>
 #include <cstddef>
-#include <deque>
-#include <exception>
 #include <functional>
-#include <mutex>
+#include <memory>
 
 namespace penumbra {
 
+// The threads parallel work may use here: the current TBB arena's concurrency, which by default
+// is the CPUs this process may run on (taskset, container limits), not the machine's total.
 unsigned hardwareThreads();
 
-// Calls body(begin, end) on disjoint chunks covering [0, count), on up to hardwareThreads()
-// threads; returns when all are done. Exceptions from a chunk are rethrown on the caller.
+// Calls body(begin, end) on disjoint chunks covering [0, count) and returns when all are done.
+// No chunk is shorter than minChunk unless count is; idle workers split the rest further.
+// The first exception a chunk throws is rethrown on the caller; chunks not started by then are
+// skipped.
 void parallelFor(std::size_t count, std::size_t minChunk,
                  const std::function<void(std::size_t, std::size_t)>& body);
 
 // Dynamic fork-join for recursive work whose shape is only known as it runs (BVH subtrees):
-// run() executes a root task on up to hardwareThreads() threads, tasks may spawn() more, and
-// run() returns once every task has finished. Waiting tasks are taken oldest first, which in a
-// recursion are the largest. The first exception a task throws is rethrown by run(); tasks that
-// have not started by then are dropped.
+// run() executes a root task, tasks may spawn() more, and run() returns once every task has
+// finished. A thread runs its own newest task first (depth first, warm caches) and idle threads
+// steal the oldest, which in a recursion are the largest. The first exception a task throws is
+// rethrown by run(); tasks that have not started by then are dropped. A group can run again.
 class TaskGroup {
 public:
     using Task = std::function<void()>;
+
+    TaskGroup();
+    ~TaskGroup();
+    TaskGroup(const TaskGroup&) = delete;
+    TaskGroup& operator=(const TaskGroup&) = delete;
 
     void run(Task root);
     void spawn(Task task);  // from inside a running task
 
 private:
-    void work();
-
-    std::mutex mutex_;
-    std::condition_variable changed_;
-    std::deque<Task> waiting_;
-    std::size_t unfinished_ = 0;  // waiting or running
-    std::exception_ptr failure_;
+    struct Pool;  // tbb::task_group, kept out of this header
+    std::unique_ptr<Pool> pool_;
 };
 
 }  // namespace penumbra

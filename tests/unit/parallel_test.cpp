@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <stdexcept>
 #include <vector>
@@ -24,6 +26,43 @@ TEST(Parallel, ExceptionsReachTheCaller) {
                      if (b > 0) throw std::runtime_error("chunk failed");
                  }),
                  std::runtime_error);
+}
+
+TEST(Parallel, ChunksAreNeverShorterThanMinChunk) {
+    tbb::task_arena four(4);  // splits whatever the machine has
+    for (std::size_t n : {5u, 31u, 32u, 1000u, 100003u}) {
+        std::atomic<std::size_t> shortest{n}, chunks{0};
+        four.execute([&] {
+            parallelFor(n, 16, [&](std::size_t b, std::size_t e) {
+                ++chunks;
+                std::size_t s = shortest.load();
+                while (e - b < s && !shortest.compare_exchange_weak(s, e - b)) {
+                }
+            });
+        });
+        if (n >= 1000) {
+            EXPECT_GT(chunks.load(), 1u) << "n " << n;
+        }
+        EXPECT_GE(shortest.load(), std::min<std::size_t>(n, 16)) << "n " << n;
+    }
+}
+
+// The exception's own type arrives, from one chunk among many, even when it is thrown on a
+// worker thread in a loop nested in a task.
+TEST(Parallel, NestedExceptionsKeepTheirType) {
+    struct Custom : std::runtime_error {
+        Custom() : std::runtime_error("custom") {}
+    };
+    TaskGroup tasks;
+    EXPECT_THROW(tasks.run([&] {
+                     for (int t = 0; t < 4; ++t)
+                         tasks.spawn([] {
+                             parallelFor(100000, 100, [](std::size_t b, std::size_t e) {
+                                 if (b <= 77777 && 77777 < e) throw Custom();
+                             });
+                         });
+                 }),
+                 Custom);
 }
 
 // A binary recursion spawning its right halves: every leaf index is reached exactly once.

@@ -2,6 +2,7 @@
 #include "bvh/builder.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <cmath>
 #include <cstring>
@@ -83,6 +84,21 @@ TEST(BvhBuild, LargeBuildUsesParallelPathsAndIsDeterministic) {
     ASSERT_EQ(a.nodes.size(), b.nodes.size());
     EXPECT_EQ(a.primOrder, b.primOrder);
     EXPECT_EQ(0, std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(a.nodes[0])));
+}
+
+// Subtree tasks, parallel binning and the parallel partition change no bit of the tree: one
+// thread and four (whatever the machine has) build the same one.
+TEST(BvhBuild, OneThreadAndFourBuildTheSameTree) {
+    auto tris = randomSoup(200000, 13);
+    tris[100].v0.x = std::numeric_limits<float>::quiet_NaN();
+    for (std::size_t i = 0; i < tris.size(); i += 50) tris[i] = tris[0];  // coincident centroids
+    Bvh one, four;
+    tbb::task_arena(1).execute([&] { one = buildTriangles(tris); });
+    tbb::task_arena(4).execute([&] { four = buildTriangles(tris); });
+    EXPECT_EQ(one.primOrder, four.primOrder);
+    ASSERT_EQ(one.nodes.size(), four.nodes.size());
+    EXPECT_EQ(0, std::memcmp(one.nodes.data(), four.nodes.data(),
+                             one.nodes.size() * sizeof(one.nodes[0])));
 }
 
 TEST(BvhBuild, TrianglesAndTheirBoxesGiveTheSameTree) {
