@@ -34,12 +34,13 @@ void main() {
     if (depth > 0.0) {
         // Local noise: 3x3 Gaussian of the variance (a single pixel's estimate is itself noisy).
         float variance = 0.0, kernelSum = 0.0;
+        // Branch-free (taps outside the image read the nearest pixel and weigh 0), so the
+        // loops unroll into straight-line code.
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
                 ivec2 q = p + ivec2(dx, dy);
-                if (!insideImage(q)) continue;
-                float k = (dx == 0 ? 0.5 : 0.25) * (dy == 0 ? 0.5 : 0.25);
-                variance += k * src[pixelIndex(q)].a;
+                float k = insideImage(q) ? (dx == 0 ? 0.5 : 0.25) * (dy == 0 ? 0.5 : 0.25) : 0.0;
+                variance += k * src[pixelIndex(clampToImage(q))].a;
                 kernelSum += k;
             }
         // The three edge-stopping weights, pow(max(cos, 0), sigmaNormal) * exp(-depthTerm) *
@@ -59,17 +60,16 @@ void main() {
             for (int dx = -2; dx <= 2; ++dx) {
                 ivec2 offset = ivec2(dx, dy) * step;
                 ivec2 q = p + offset;
-                if (!insideImage(q)) continue;
-                uint qi = pixelIndex(q);
+                uint qi = pixelIndex(clampToImage(q));
                 uvec2 tapGuide = guide[qi];
                 float tapDepth = uintBitsToFloat(tapGuide.y);
-                if (!(tapDepth > 0.0)) continue;
+                bool usable = insideImage(q) && tapDepth > 0.0;
                 vec4 s = src[qi];
                 float cosNormal = max(dot(normal, octDecode(unpackSnorm2x16(tapGuide.x))), 1e-30);
                 float depthScale = viewer.sigmaDepth * abs(dot(gradient, vec2(offset))) + 1e-3 * depth;
                 float exponent = viewer.sigmaNormal * log2(cosNormal) - kLog2e * abs(depth - tapDepth) / depthScale -
                                  abs(centreLum - luminance(s.rgb)) * invLumScale;
-                float w = kB3[abs(dx)] * kB3[abs(dy)] * exp2(exponent);
+                float w = usable ? kB3[abs(dx)] * kB3[abs(dy)] * exp2(exponent) : 0.0;
                 colorSum += w * s.rgb;
                 varianceSum += w * w * s.a;
                 weightSum += w;

@@ -12,6 +12,7 @@ layout(std140, set = 0, binding = PN_BINDING_FRAME) uniform FrameBuffer { FrameU
 layout(std430, set = 0, binding = PN_BINDING_VIEWER) readonly buffer ViewerBuffer { ViewerUniforms viewer; };
 
 bool insideImage(ivec2 p) { return p.x >= 0 && p.y >= 0 && p.x < int(frame.width) && p.y < int(frame.height); }
+ivec2 clampToImage(ivec2 p) { return clamp(p, ivec2(0), ivec2(frame.width, frame.height) - 1); }
 uint pixelIndex(ivec2 p) { return uint(p.y) * frame.width + uint(p.x); }
 
 #include "shared/color.h"
