@@ -13,8 +13,10 @@
 # Per build and scene it writes $OUT/<build>-<scene>-frame.json (1920x1080, 1 spp, 4 bounces,
 # temporal + 5 a-trous passes) and $OUT/<build>-<scene>-error.json: the relative MSE against the
 # build's own 2048-spp reference after ERROR_BUDGET_MS (default 30) of GPU frame time at 480x270,
-# raw (the temporal running mean) and denoised. Each build is compared with its own converged
-# image, so the figures measure noise, not the bias of an older build.
+# raw (the temporal running mean) and denoised, means of ERROR_TRIALS (default 8) runs from a
+# fresh history each (one run's error is heavy-tailed: a late firefly can double it). Each build
+# is compared with its own converged image, so the figures measure noise, not the bias of an
+# older build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode=${1:-run}
@@ -57,6 +59,14 @@ declare -A scene=(
   [engine]="scenes/engine.json"
 )
 budget=${ERROR_BUDGET_MS:-30}
+trials=${ERROR_TRIALS:-8}
+# ERROR_FRAMES=N: N frames per trial instead of the time budget, after a fixed warm-up, so builds
+# that differ only after the trace (the denoiser) filter the very same images.
+if [ -n "${ERROR_FRAMES:-}" ]; then
+  budgetFlag="--budget-frames $ERROR_FRAMES" warmup="--warmup-seconds 0 --warmup-frames 10"
+else
+  budgetFlag="--budget-ms $budget" warmup="--warmup-seconds 0.5"
+fi
 for bin in ${BINARIES:-penumbra}; do
   for name in ${SCENES:-cornell freedoom-e1m1 doom1-e1m1 bunny-cornell bunny-room materials caffeine engine}; do
     s=${scene[$name]}
@@ -70,7 +80,8 @@ for bin in ${BINARIES:-penumbra}; do
       2> "$out/$bin-$name-ref.err" || echo "$bin $name: reference failed" >&2
     # shellcheck disable=SC2086
     "$bin" bench $s --viewer --width 480 --height 270 --spp 1 --bounces 4 --denoise 5 --frames 10 \
-      --warmup-seconds 0.5 --reference "$out/$bin-$name-ref.exr" --budget-ms "$budget" --json ${VIEWER_FLAGS:-} \
+      $warmup --reference "$out/$bin-$name-ref.exr" $budgetFlag --error-trials "$trials" \
+      --json ${VIEWER_FLAGS:-} \
       > "$out/$bin-$name-error.json" 2> "$out/$bin-$name-error.err" || echo "$bin $name: error bench failed" >&2
     rm -f "$out/$bin-$name-ref.exr"
   done
@@ -87,4 +98,4 @@ for name in ${SCENES:-cornell freedoom-e1m1 doom1-e1m1 bunny-cornell bunny-room 
       "$(val "$e" rel_mse_raw)" "$(val "$e" rel_mse_denoised)"
   done
 done
-echo "(frame: 1920x1080, 1 spp, 4 bounces, temporal + 5 a-trous passes, GPU ms; error: 480x270 after $budget ms of GPU frames, raw and denoised, against the build's own 2048-spp reference)"
+echo "(frame: 1920x1080, 1 spp, 4 bounces, temporal + 5 a-trous passes, GPU ms; error: 480x270 after $budget ms of GPU frames, raw and denoised, against the build's own 2048-spp reference, means of $trials trials)"

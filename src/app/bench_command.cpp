@@ -34,6 +34,8 @@ struct BenchArgs {
     double warmupSeconds = 1.5;
     std::string reference;
     double budgetMs = 100;
+    int errorTrials = 1;
+    int budgetFrames = 0;
 };
 
 double mrays(std::uint64_t rays, double ms) { return ms > 0 ? double(rays) / (ms * 1e3) : 0.0; }
@@ -72,8 +74,8 @@ void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Conte
     }
     std::printf("\n  }");
     if (r.relMseRaw)
-        std::printf(",\n  \"budget_ms\": %.2f,\n  \"budget_frames\": %d,\n  \"rel_mse_raw\": %.6g", args.budgetMs,
-                    r.budgetFrames, *r.relMseRaw);
+        std::printf(",\n  \"budget_ms\": %.2f,\n  \"budget_frames\": %d,\n  \"error_trials\": %d,\n  \"rel_mse_raw\": %.6g",
+                    args.budgetMs, r.budgetFrames, o.errorTrials, *r.relMseRaw);
     if (r.relMseDenoised) std::printf(",\n  \"rel_mse_denoised\": %.6g", *r.relMseDenoised);
     std::printf("\n}\n");
 }
@@ -118,6 +120,10 @@ void runViewerBenchCommand(const BenchArgs& args) {
         if (!(args.budgetMs > 0 && args.budgetMs <= 1e6)) throw UsageError("--budget-ms must be within (0, 1e6]");
         o.reference = readExr(args.reference);
         o.budgetMs = args.budgetMs;
+        if (args.errorTrials < 1 || args.errorTrials > 1000) throw UsageError("--error-trials must be between 1 and 1000");
+        o.errorTrials = args.errorTrials;
+        if (args.budgetFrames < 0 || args.budgetFrames > 1000000) throw UsageError("--budget-frames must be within [0, 1000000]");
+        o.budgetFrameCount = args.budgetFrames;
     }
     Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env, args.wad);
     const bool torch = scene.torch.enabled && scene.torch.intensity > 0;
@@ -208,6 +214,12 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--reference", args->reference,
                     "--viewer: a converged EXR of the same view and size; reports the error after --budget-ms of frames");
     cmd->add_option("--budget-ms", args->budgetMs, "--viewer: GPU time budget of the equal-time error (default 100)");
+    cmd->add_option("--budget-frames", args->budgetFrames,
+                    "--viewer: measure the error after exactly this many frames instead of --budget-ms (same images "
+                    "for builds that differ only after the trace)");
+    cmd->add_option("--error-trials", args->errorTrials,
+                    "--viewer: repeat the equal-time error this many times, each from a fresh history with new random "
+                    "numbers, and report the means (default 1)");
     addDeviceOption(*cmd, args->device);
     addBvhCacheOption(*cmd);
     addEnvironmentOptions(*cmd, args->env);

@@ -44,25 +44,32 @@ ImageRgb imageFromVec4(const gpu::Context& ctx, InteractiveRenderer& r, const gp
 }
 
 // Frames from a fresh history with a still camera until their GPU time reaches the budget, then
-// the raw running mean and the denoised image against the reference.
+// the raw running mean and the denoised image against the reference; means over the trials.
 void measureEqualTimeError(const gpu::Context& ctx, InteractiveRenderer& renderer, const Camera& camera,
                            const ViewerBenchOptions& o, ViewerBenchResult& result) {
     if (!o.reference->sameSize(ImageRgb(int(o.width), int(o.height))))
         throw UsageError("the reference image is " + std::to_string(o.reference->width) + "x" +
                          std::to_string(o.reference->height) + ", the bench renders " + std::to_string(o.width) +
                          "x" + std::to_string(o.height) + "; render the reference at the bench's size");
-    renderer.resetHistory();
-    double spent = 0;
-    int frames = 0;
-    while (spent < o.budgetMs || frames == 0) {
-        renderFrame(renderer, camera, o.view);
-        spent += renderer.stats().passMilliseconds[std::size_t(ViewerPass::Frame)];
-        ++frames;
-        if (frames > 1000000) break;  // a device without timestamps reports -1 ms
+    const int trials = std::max(o.errorTrials, 1);
+    double raw = 0, denoised = 0, frames = 0;
+    for (int trial = 0; trial < trials; ++trial) {
+        renderer.resetHistory();  // the random numbers go on: every trial sees new ones
+        double spent = 0;
+        int n = 0;
+        while (o.budgetFrameCount > 0 ? n < o.budgetFrameCount : spent < o.budgetMs || n == 0) {
+            renderFrame(renderer, camera, o.view);
+            spent += renderer.stats().passMilliseconds[std::size_t(ViewerPass::Frame)];
+            ++n;
+            if (n > 1000000) break;  // a device without timestamps reports -1 ms
+        }
+        frames += n;
+        raw += relativeMse(imageFromHistory(ctx, renderer), *o.reference);
+        if (renderer.denoised()) denoised += relativeMse(imageFromVec4(ctx, renderer, *renderer.denoised()), *o.reference);
     }
-    result.budgetFrames = frames;
-    result.relMseRaw = relativeMse(imageFromHistory(ctx, renderer), *o.reference);
-    if (renderer.denoised()) result.relMseDenoised = relativeMse(imageFromVec4(ctx, renderer, *renderer.denoised()), *o.reference);
+    result.budgetFrames = int(std::lround(frames / trials));
+    result.relMseRaw = raw / trials;
+    if (renderer.denoised()) result.relMseDenoised = denoised / trials;
 }
 
 }  // namespace

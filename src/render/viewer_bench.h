@@ -33,6 +33,13 @@ struct ViewerBenchOptions {
     // summed GPU frame time reaches budgetMs, and the images are compared with the reference.
     std::optional<ImageRgb> reference;
     double budgetMs = 0;
+    // The error of one such run is heavy-tailed (a firefly in the last frames doubles it), so it
+    // can be measured this many times, each from a fresh history with new random numbers, and
+    // the means reported.
+    int errorTrials = 1;
+    // Instead of budgetMs: exactly this many frames per trial, so that builds which differ only
+    // after the trace (the denoiser) filter the same images.
+    int budgetFrameCount = 0;
 };
 
 struct ViewerBenchResult {
@@ -42,7 +49,7 @@ struct ViewerBenchResult {
     double mraysPerSecond = 0;             // rays of the median frame over its trace time
     int frames = 0;
     // Equal-time error (only with a reference): relative MSE of the raw running mean and of the
-    // denoised image, and how many frames (and samples per pixel) fitted in the budget.
+    // denoised image, and how many frames fitted in the budget (means over the trials).
     std::optional<double> relMseRaw, relMseDenoised;
     int budgetFrames = 0;
     // The trace kernel as compiled: what it was specialised for and the driver's statistics.

@@ -100,5 +100,34 @@ TEST_F(BenchCliTest, EqualTimeErrorAgainstAReference) {
     expectOneLineError(run(std::string(kTinyViewer) + " --reference small.exr"), 2, "reference");
 }
 
+// Trials repeat the measurement from a fresh history with new random numbers: a mean over three
+// is not the first trial again (the bench runs the same frames in the same order each time).
+TEST_F(BenchCliTest, EqualTimeErrorTrialsSeeNewRandomNumbers) {
+    ASSERT_EQ(run("render cornell --width 64 --height 40 --spp 64 --quiet -o ref.exr").exitCode, 0);
+    auto rawError = [&](int trials) {
+        RunResult r = run(std::string(kTinyViewer) + " --reference ref.exr --budget-ms 1 --error-trials " +
+                          std::to_string(trials));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        if (r.exitCode != 0) return -1.0;
+        const nlohmann::json j = nlohmann::json::parse(r.out);
+        EXPECT_EQ(j.at("error_trials").get<int>(), trials);
+        return j.at("rel_mse_raw").get<double>();
+    };
+    const double one = rawError(1), again = rawError(1), three = rawError(3);
+    EXPECT_EQ(one, again);  // deterministic, so a difference below is the trials' own
+    EXPECT_GT(three, 0.0);
+    EXPECT_NE(three, one);
+    expectOneLineError(run(std::string(kTinyViewer) + " --reference ref.exr --error-trials 0"), 2, "--error-trials");
+}
+
+// --budget-frames runs exactly that many frames per trial, whatever they cost.
+TEST_F(BenchCliTest, EqualFrameErrorRunsTheGivenFrames) {
+    ASSERT_EQ(run("render cornell --width 64 --height 40 --spp 16 --quiet -o ref.exr").exitCode, 0);
+    RunResult r = run(std::string(kTinyViewer) + " --reference ref.exr --budget-frames 3 --error-trials 2");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out).at("budget_frames").get<int>(), 3);
+    expectOneLineError(run(std::string(kTinyViewer) + " --reference ref.exr --budget-frames -1"), 2, "--budget-frames");
+}
+
 }  // namespace
 }  // namespace penumbra::test
