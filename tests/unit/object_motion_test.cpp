@@ -2,16 +2,14 @@
 // motion says at several times, through the scene file, applySceneTime and the baked meshes.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 
 #include "core/error.h"
 #include "scene/animation.h"
 #include "scene/io/scene_json.h"
 #include "scene/instances.h"
+#include "image/test_dir.h"
 #include "scene_json_test_util.h"
 #include "shared/constants.h"
 
@@ -27,8 +25,7 @@ const char* kMovingQuad = R"({
         "spin": {"axis": [0, 1, 0], "degrees_per_second": 90}}}]})";
 
 Scene movingQuad(const std::string& motion = "") {
-    const auto dir = std::filesystem::temp_directory_path() / ("penumbra-motion-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
+    const TempDir dir;  // removed even when loading throws (the bad motions below)
     std::ofstream(dir / "quad.json") << R"({"materials": [{"name": "m"}],
         "quads": [{"material": "m", "corners": [[1, 0, 0], [0, 0, 0], [0, 0, 1], [1, 0, 1]]}]})";
     std::string text = kMovingQuad;
@@ -37,9 +34,7 @@ Scene movingQuad(const std::string& motion = "") {
         text = text.substr(0, at) + "\"motion\": " + motion + "}]}";
     }
     std::ofstream(dir / "scene.json") << text;
-    Scene s = loadSceneJson(dir / "scene.json");
-    std::filesystem::remove_all(dir);
-    return s;
+    return loadSceneJson(dir / "scene.json");
 }
 
 // Where the quad's corner at object-space (1, 0, 0) is at `seconds`.
@@ -90,8 +85,7 @@ TEST(ObjectMotion, BackAndForthAndOnce) {
 
 // Each entry of "instances" may move on its own; the others stay put.
 TEST(ObjectMotion, InstancesMoveOneByOne) {
-    const auto dir = std::filesystem::temp_directory_path() / ("penumbra-motion-i-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
+    const TempDir dir;
     std::ofstream(dir / "quad.json") << R"({"materials": [{"name": "m"}],
         "quads": [{"material": "m", "corners": [[1, 0, 0], [0, 0, 0], [0, 0, 1], [1, 0, 1]]}]})";
     std::ofstream(dir / "scene.json") << R"({"assets": [{"file": "quad.json", "instances": [
@@ -106,7 +100,6 @@ TEST(ObjectMotion, InstancesMoveOneByOne) {
     } catch (const Error& e) {
         bothError = e.what();
     }
-    std::filesystem::remove_all(dir);
     ASSERT_EQ(s.instances.size(), 2u);
     ASSERT_EQ(s.instanceAnimations.size(), 1u);
     const Scene later = sceneAtTime(s, 2.0);
