@@ -19,6 +19,7 @@ layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) readonly buffer FilterIn
 layout(std430, set = 0, binding = PN_BINDING_FILTER_OUT) writeonly buffer FilterOut { vec4 dst[]; };
 
 const float kB3[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
+const float kLog2e = 1.4426950409;  // exp(x) = exp2(x * log2(e))
 // The 3x3 Gaussian that smooths the variance estimate: the linear B-spline (1/4, 1/2, 1/4).
 const float kB1[2] = float[2](1.0 / 2.0, 1.0 / 4.0);
 
@@ -46,7 +47,6 @@ struct FilterSums {
 // no 0 * -inf. Branch-free: a tap outside the image reads the nearest pixel and weighs 0, so the
 // loops unroll into straight-line code.
 void addTap(inout FilterSums sums, Centre c, ivec2 p, ivec2 offset, float kernel) {
-    const float kLog2e = 1.4426950409;
     ivec2 q = p + offset;
     uint qi = pixelIndex(clampToImage(q));
     uvec2 tapGuide = guide[qi];
@@ -82,7 +82,6 @@ void main() {
                 variance += k * src[pixelIndex(clampToImage(q))].a;
                 kernelSum += k;
             }
-        const float kLog2e = 1.4426950409;
         Centre c;
         c.normal = normal;
         c.depth = depth;
