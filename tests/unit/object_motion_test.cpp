@@ -6,10 +6,10 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "image/test_dir.h"
 #include "scene/animation.h"
 #include "scene/io/scene_json.h"
 #include "scene/instances.h"
-#include "image/test_dir.h"
 #include "scene_json_test_util.h"
 #include "shared/constants.h"
 
