@@ -204,8 +204,8 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
         return gpu::Buffer(ctx_, pixels * bytesPerPixel, kPixelUsage, gpu::MemoryKind::DeviceLocal);
     };
     accumulation_ = pixelBuffer(sizeof(Vec4));
-    gbuffer_ = pixelBuffer(sizeof(shader::GBufferTexel));
-    gbufferPrev_ = pixelBuffer(sizeof(shader::GBufferTexel));
+    gbufferA_ = pixelBuffer(sizeof(shader::GBufferTexel));
+    gbufferB_ = pixelBuffer(sizeof(shader::GBufferTexel));
     historyA_ = pixelBuffer(sizeof(shader::HistoryTexel));
     historyB_ = pixelBuffer(sizeof(shader::HistoryTexel));
     filterA_ = pixelBuffer(sizeof(Vec4));
@@ -216,7 +216,7 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
     historyOut_ = &historyB_;
     // Everything starts defined, so no pass ever reads uninitialised memory.
     commands_.run([&](VkCommandBuffer cmd) {
-        for (gpu::Buffer* b : {&accumulation_, &gbuffer_, &gbufferPrev_, &historyA_, &historyB_, &filterA_, &filterB_, &guide_, &display_})
+        for (gpu::Buffer* b : {&accumulation_, &gbufferA_, &gbufferB_, &historyA_, &historyB_, &filterA_, &filterB_, &guide_, &display_})
             vkCmdFillBuffer(cmd, b->get(), 0, VK_WHOLE_SIZE, 0);
     });
     createPasses();
@@ -227,18 +227,27 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
 void InteractiveRenderer::createPasses() {
     features_ = penumbra::kernelFeatures(arrays_, Accel::Bvh);
     trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, features_);
-    gbufferPass_ = std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, gbuffer_, features_,
-                                                 &instancesPrev_);
-    auto temporal = [&](const gpu::Buffer& in, const gpu::Buffer& out) {
+    auto gbufferPass = [&](const gpu::Buffer& out) {
+        return std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, out, features_,
+                                             &instancesPrev_);
+    };
+    gbufferPassA_ = gbufferPass(gbufferA_);
+    gbufferPassB_ = gbufferPass(gbufferB_);
+    auto temporal = [&](const gpu::Buffer& in, const gpu::Buffer& gbufferIn, const gpu::Buffer& out,
+                        const gpu::Buffer& gbufferOut) {
         return std::make_unique<TemporalPass>(
-            ctx_, TemporalBuffers{&frameUniforms_, &viewerUniforms_, &accumulation_, &gbuffer_, &gbufferPrev_, &in,
+            ctx_, TemporalBuffers{&frameUniforms_, &viewerUniforms_, &accumulation_, &gbufferOut, &gbufferIn, &in,
                                   &out, &filterA_, &guide_});
     };
-    temporalAB_ = temporal(historyA_, historyB_);
-    temporalBA_ = temporal(historyB_, historyA_);
-    denoise_ = std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer_, guide_, filterA_, filterB_);
-    tonemapA_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyA_, filterB_, gbuffer_, display_);
-    tonemapB_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyB_, filterB_, gbuffer_, display_);
+    temporalAB_ = temporal(historyA_, gbufferA_, historyB_, gbufferB_);
+    temporalBA_ = temporal(historyB_, gbufferB_, historyA_, gbufferA_);
+    auto denoise = [&](const gpu::Buffer& gbuffer) {
+        return std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer, guide_, filterA_, filterB_);
+    };
+    denoiseA_ = denoise(gbufferA_);
+    denoiseB_ = denoise(gbufferB_);
+    tonemapA_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyA_, filterB_, gbufferA_, display_);
+    tonemapB_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyB_, filterB_, gbufferB_, display_);
     heatmap_ = std::make_unique<HeatmapPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, filterB_, heatCounters_);
     boxes_ = std::make_unique<BoxOverlayPass>(ctx_, frameUniforms_, viewerUniforms_, display_);
     boxesDepth_.reset();
@@ -270,10 +279,6 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     recordUploads(cmd, camera, s, instancesMoved, heat);
     recordPasses(cmd, s, heat, v.denoise != 0);
     if (s.debug == DebugView::BvhBoxes) recordBoxOverlay(cmd, s);
-    // This frame's G-buffer is the next frame's previous one.
-    VkBufferCopy copy{0, 0, gbuffer_.size()};
-    vkCmdCopyBuffer(cmd, gbuffer_.get(), gbufferPrev_.get(), 1, &copy);
-    gpu::computeBarrier(cmd);
     timer_.end(cmd, std::uint32_t(ViewerPass::Frame));
     recorded_ |= 1u << std::uint32_t(ViewerPass::Frame);
 
@@ -358,18 +363,20 @@ void InteractiveRenderer::recordUploads(VkCommandBuffer cmd, const Camera& camer
 }
 
 void InteractiveRenderer::recordPasses(VkCommandBuffer cmd, const ViewSettings& s, bool heat, bool denoise) {
+    // This frame writes the letter last frame read (startHistory swapped them).
+    const bool toB = historyIn_ == &historyA_;
     timed(cmd, ViewerPass::Trace,
           [&] { trace_->record(cmd, width_, height_, s.samplesPerFrame, tracedFrames_++, s.maxBounces, true); });
-    timed(cmd, ViewerPass::GBuffer, [&] { gbufferPass_->record(cmd, width_, height_); });
+    timed(cmd, ViewerPass::GBuffer, [&] { (toB ? gbufferPassB_ : gbufferPassA_)->record(cmd, width_, height_); });
     if (heat) timed(cmd, ViewerPass::Heatmap, [&] { heatmap_->record(cmd, width_, height_); });
     gpu::computeBarrier(cmd);
-    const bool fromA = historyIn_ == &historyA_;
-    timed(cmd, ViewerPass::Temporal, [&] { (fromA ? temporalAB_ : temporalBA_)->record(cmd, width_, height_); });
+    timed(cmd, ViewerPass::Temporal, [&] { (toB ? temporalAB_ : temporalBA_)->record(cmd, width_, height_); });
     gpu::computeBarrier(cmd);
-    TonemapPass& tonemap = fromA ? *tonemapB_ : *tonemapA_;
+    TonemapPass& tonemap = toB ? *tonemapB_ : *tonemapA_;
     if (denoise) {
-        timed(cmd, ViewerPass::Denoise, [&] { denoise_->record(cmd, width_, height_, s.denoiseIterations); });
-        denoised_ = &denoise_->output(s.denoiseIterations);
+        const DenoisePass& filter = toB ? *denoiseB_ : *denoiseA_;
+        timed(cmd, ViewerPass::Denoise, [&] { filter.record(cmd, width_, height_, s.denoiseIterations); });
+        denoised_ = &filter.output(s.denoiseIterations);
         tonemap.setFiltered(*denoised_);
     } else {
         denoised_ = nullptr;

@@ -72,7 +72,7 @@ public:
     std::uint32_t height() const { return height_; }
     const gpu::Buffer& display() const { return display_; }  // uint RGBA8 per pixel
     const gpu::Buffer& history() const { return *historyOut_; }  // HistoryTexel per pixel
-    const gpu::Buffer& gbuffer() const { return gbuffer_; }
+    const gpu::Buffer& gbuffer() const { return historyOut_ == &historyA_ ? gbufferA_ : gbufferB_; }
     // After a heat view's frame: vec4 per pixel (nodes, triangles, leaf depth, leaf primitives).
     const gpu::Buffer& heatCounts() const { return filterB_; }
     // The linear image the tonemap pass read last frame (vec4 per pixel, rgb radiance): the
@@ -120,7 +120,9 @@ private:
     std::optional<std::uint32_t> torchLight_;
     std::uint32_t seed_;
     gpu::Buffer frameUniforms_, viewerUniforms_, counters_, heatCounters_;
-    gpu::Buffer accumulation_, gbuffer_, gbufferPrev_, historyA_, historyB_, filterA_, filterB_, guide_, display_;
+    // Each frame writes one history and the G-buffer of the same letter, and reads the other two as
+    // last frame's: swapping the pair every frame spares copying the G-buffer.
+    gpu::Buffer accumulation_, gbufferA_, gbufferB_, historyA_, historyB_, filterA_, filterB_, guide_, display_;
     // The instances as the previous frame placed them (gbuffer.comp's object motion), and the
     // staging buffer that carries moved instances and the top level up.
     gpu::Buffer instancesPrev_, instanceStaging_;
@@ -130,9 +132,11 @@ private:
     gpu::Buffer* historyIn_ = nullptr;  // last frame's history; the two swap every frame
     gpu::Buffer* historyOut_ = nullptr;
     std::unique_ptr<TracePass> trace_;
-    std::unique_ptr<GBufferPass> gbufferPass_;
-    std::unique_ptr<TemporalPass> temporalAB_, temporalBA_;  // one per direction of the swap
-    std::unique_ptr<DenoisePass> denoise_;
+    // One per letter of the buffers they write (the G-buffer pass, temporal: A to B reads history
+    // A and writes B) or read (denoise and tonemap: this frame's G-buffer, and history for tonemap).
+    std::unique_ptr<GBufferPass> gbufferPassA_, gbufferPassB_;
+    std::unique_ptr<TemporalPass> temporalAB_, temporalBA_;
+    std::unique_ptr<DenoisePass> denoiseA_, denoiseB_;
     std::unique_ptr<TonemapPass> tonemapA_, tonemapB_;
     std::unique_ptr<HeatmapPass> heatmap_;
     std::unique_ptr<BoxOverlayPass> boxes_;
