@@ -38,7 +38,7 @@ void tracePixel(uvec2 pixel, uint pixelIndex) {
         }
         addSample(path.result, sum, sumSquares);
     }
-    accum[pixelIndex] += vec4(sum, sumSquares);
+    storePixelSums(pixelIndex, vec4(sum, sumSquares));
 }
 
 void main() {

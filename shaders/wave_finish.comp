@@ -1,5 +1,5 @@
 #version 460
-// Wavefront trace, last step: each sampled pixel of the tile adds its paths' radiance, sample by
+// Wavefront trace, last step: each sampled pixel of the tile sums its paths' radiance, sample by
 // sample in the megakernel's order, into the accumulation buffer.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
@@ -19,5 +19,5 @@ void main() {
     vec3 sum = vec3(0.0);
     float sumSquares = 0.0;
     for (uint k = 0u; k < frame.samplesPerPass; ++k) addSample(pathResult(slotOf(pixel, k)), sum, sumSquares);
-    accum[pixel.y * frame.width + pixel.x] += vec4(sum, sumSquares);
+    storePixelSums(pixel.y * frame.width + pixel.x, vec4(sum, sumSquares));
 }

@@ -21,6 +21,15 @@ bool pixelSampled(uvec2 pixel) {
     return (push.mode & PN_TRACE_MASKED) == 0u || activeMask[pixel.y * frame.width + pixel.x] != 0u;
 }
 
+// A pixel's sums for this pass into the accumulation buffer: added to what earlier passes left,
+// or stored over it (PN_TRACE_REPLACE, which spares clearing the buffer before the pass).
+void storePixelSums(uint index, vec4 sums) {
+    if ((push.mode & PN_TRACE_REPLACE) != 0u)
+        accum[index] = sums;
+    else
+        accum[index] += sums;
+}
+
 // A finished sample into the pixel's sums. A NaN or inf sample would poison the pixel forever:
 // it is dropped, and counted so that tests (and the render summary) see it.
 void addSample(vec3 L, inout vec3 sum, inout float sumSquares) {

@@ -442,6 +442,8 @@ PN_STRUCT(FrameUniforms) {
 #define PN_DEBUG_INSET_MARGIN 8u
 #define PN_OVERLAY_COLOR 0xff00ffffu  // RGBA8 of an outlined pixel: opaque yellow
 #define PN_TRACE_MASKED 1u       // PassPush.mode bit of trace.comp: read the active mask (adaptive sampling)
+#define PN_TRACE_REPLACE 2u      // PassPush.mode bit of trace.comp and wave_finish.comp: store the pixel's sums
+                                 // instead of adding them (a pass that samples every pixel: no clear before it)
 #define PN_GBUFFER_SUBPIXEL 1u    // PassPush.mode bit of gbuffer.comp: trace cell passIndex of a 4x4 grid in the pixel
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
 // The denoiser's per-pixel guide, written by temporal.comp: x = the shading normal, octahedral,

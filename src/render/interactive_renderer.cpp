@@ -227,6 +227,7 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
 void InteractiveRenderer::createPasses() {
     features_ = penumbra::kernelFeatures(arrays_, Accel::Bvh);
     trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, features_);
+    trace_->setReplacesAccumulation(true);  // one pass per frame: no clear before it
     auto gbufferPass = [&](const gpu::Buffer& out) {
         return std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, out, features_,
                                              &instancesPrev_);
@@ -357,7 +358,6 @@ void InteractiveRenderer::recordUploads(VkCommandBuffer cmd, const Camera& camer
                           &light);
     }
     uploadInstances(cmd, instancesMoved);
-    vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0);
     if (heat) vkCmdFillBuffer(cmd, heatCounters_.get(), 0, VK_WHOLE_SIZE, 0);
     transferToComputeBarrier(cmd);
 }

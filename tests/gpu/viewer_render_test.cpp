@@ -9,13 +9,19 @@
 #include "render/renderer.h"
 #include "scene/presets/presets.h"
 #include "gpu_fixture.h"
+#include "scoped_env.h"
 
 namespace penumbra::test {
 namespace {
 
 using ViewerRenderTest = GpuTest;
 
-TEST_F(ViewerRenderTest, StillCameraConvergesToTheHeadlessRender) {
+// Both trace kernels: the viewer's passes store over the last frame's sums (no clear between
+// frames), which a kernel that added to them would show as a mean growing frame by frame.
+class ViewerRenderKernelTest : public GpuTest, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(ViewerRenderKernelTest, StillCameraConvergesToTheHeadlessRender) {
+    ScopedEnv kernel("PENUMBRA_TRACE_KERNEL", GetParam());
     Scene scene = makeCornellBox();
     const std::uint32_t w = 24, h = 18, frames = 6;
     RenderSettings rs;
@@ -51,6 +57,8 @@ TEST_F(ViewerRenderTest, StillCameraConvergesToTheHeadlessRender) {
     }
     EXPECT_GT(total, 0.0);  // the comparison was not between two black images
 }
+
+INSTANTIATE_TEST_SUITE_P(Kernels, ViewerRenderKernelTest, ::testing::Values("mega", "wavefront"));
 
 // Without history (temporal accumulation off) each frame shows only its own samples; they must
 // be new samples every frame, or the noise freezes on the screen.

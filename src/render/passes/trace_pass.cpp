@@ -101,6 +101,8 @@ void TracePass::reserve(std::uint32_t width, std::uint32_t height, std::uint32_t
 void TracePass::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, std::uint32_t samplesPerPass,
                        std::uint32_t passIndex, std::uint32_t maxBounces, bool countRays, bool masked) {
     PN_CHECK(!masked || hasMask_);
+    PN_CHECK(!masked || !replace_);  // a skipped pixel would keep the last pass's sums
+    const std::uint32_t mode = (masked ? PN_TRACE_MASKED : 0u) | (replace_ ? PN_TRACE_REPLACE : 0u);
     const std::vector<TraceTile> tiles = traceTiles(width, height, samplesPerPass, pathBudget_);
     if (kernelFor(width, height, samplesPerPass) == TraceKernel::Wavefront) {
         WavefrontPass& wave = wavefront();
@@ -108,13 +110,13 @@ void TracePass::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t h
         // The tiles share the working buffers, so each waits for the one before.
         for (std::size_t i = 0; i < tiles.size(); ++i) {
             if (i > 0) gpu::computeBarrier(cmd);
-            wave.record(cmd, tiles[i], width, height, samplesPerPass, passIndex, maxBounces, countRays, masked);
+            wave.record(cmd, tiles[i], width, height, samplesPerPass, passIndex, maxBounces, countRays, mode);
         }
         return;
     }
     const gpu::ComputePipeline& mega = megakernel();
     for (const TraceTile& tile : tiles) {  // disjoint pixels: no barrier between tiles
-        shader::PassPush push{passIndex, masked ? PN_TRACE_MASKED : 0u, 0, countRays ? 1u : 0u, tile.x, tile.y};
+        shader::PassPush push{passIndex, mode, 0, countRays ? 1u : 0u, tile.x, tile.y};
         mega.dispatch(cmd, (tile.width + PN_TRACE_GROUP_X - 1) / PN_TRACE_GROUP_X,
                       (tile.height + PN_TRACE_GROUP_Y - 1) / PN_TRACE_GROUP_Y, 1, &push);
     }

@@ -53,6 +53,11 @@ public:
     void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, std::uint32_t samplesPerPass,
                 std::uint32_t passIndex, std::uint32_t maxBounces, bool countRays, bool masked = false);
 
+    // On: each pass stores its sums over the accumulation buffer instead of adding to them, so a
+    // caller that takes one pass per frame (the viewer) need not clear the buffer first. Only for
+    // passes that sample every pixel (not masked).
+    void setReplacesAccumulation(bool on) { replace_ = on; }
+
     // Paths per dispatch: by device type unless set (0 puts the device's default back), never more
     // than the wavefront's working buffers can hold on this device.
     std::uint64_t pathBudget() const { return pathBudget_; }
@@ -71,6 +76,7 @@ private:
     TraceKernel kernel_;
     gpu::Buffer placeholderMask_;
     bool hasMask_;
+    bool replace_ = false;
     std::uint64_t defaultBudget_, pathBudget_;
     std::uint64_t maxBudget_;  // the wavefront's working buffers bound it
     std::unique_ptr<gpu::ComputePipeline> pipeline_;  // the megakernel

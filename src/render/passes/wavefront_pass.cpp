@@ -127,12 +127,12 @@ void WavefrontPass::beginPass(VkCommandBuffer cmd) { collectStageTimes(cmd); }
 
 void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint32_t width, std::uint32_t height,
                            std::uint32_t samplesPerPass, std::uint32_t passIndex, std::uint32_t maxBounces,
-                           bool countRays, bool masked) {
+                           bool countRays, std::uint32_t traceMode) {
     const TraceTile inside = clipTile(tile, width, height);
     const std::uint32_t tileWidth = inside.width, tileHeight = inside.height;
     const std::uint64_t slots = std::uint64_t(tileWidth) * tileHeight * samplesPerPass;
     reserve(slots);
-    shader::PassPush push{passIndex,        masked ? PN_TRACE_MASKED : 0u, std::uint32_t(slots),
+    shader::PassPush push{passIndex,           traceMode, std::uint32_t(slots),
                           countRays ? 1u : 0u, tile.x, tile.y, tileWidth, tileHeight, std::uint32_t(capacity_), 0u, 0u, 0u};
     vkCmdFillBuffer(cmd, control_.get(), 0, VK_WHOLE_SIZE, 0);
     gpu::computeBarrier(cmd);

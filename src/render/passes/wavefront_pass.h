@@ -40,10 +40,11 @@ public:
     void beginPass(VkCommandBuffer cmd);
 
     // One pass over `tile`: its pixels (clipped to width x height) times samplesPerPass paths,
-    // maxBounces + 1 closest-hit rays at most per path. Reserves what the tile needs first.
+    // maxBounces + 1 closest-hit rays at most per path; traceMode: PN_TRACE_MASKED and
+    // PN_TRACE_REPLACE bits. Reserves what the tile needs first.
     void record(VkCommandBuffer cmd, const TraceTile& tile, std::uint32_t width, std::uint32_t height,
                 std::uint32_t samplesPerPass, std::uint32_t passIndex, std::uint32_t maxBounces, bool countRays,
-                bool masked);
+                std::uint32_t traceMode);
 
     // The driver's statistics of the kernels that matter (extend, shade, shadow), names prefixed.
     std::vector<gpu::PipelineStatistic> statistics() const;
