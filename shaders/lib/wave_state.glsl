@@ -37,14 +37,17 @@ const uint PN_WAVE_AFTER_DELTA = 0x80000000u;
 
 // Field 3 holds the radiance gathered so far: only a vertex that adds light reads and writes it
 // (addToPathResult). Fields 5 and 6 (the previous vertex) are read only where MIS or an escape
-// needs them (loadPathForShading). The sample index is the slot's (pathSampleIndex), never stored.
+// needs them (loadPathForShading), never after a camera ray or a delta lobe, so such paths do not
+// store them. The sample index is the slot's (pathSampleIndex), never stored.
 void storePath(uint slot, Path p) {
     setPathField(0u, slot, packVec(p.origin, p.bsdfPdfPrev));
     setPathField(1u, slot, packVec(p.direction, p.depth | (p.afterDelta ? PN_WAVE_AFTER_DELTA : 0u)));
     setPathField(2u, slot, packVec(p.throughput, p.rng));
     if (PN_HAS(PN_FEATURE_ABSORPTION)) setPathField(4u, slot, packVec(p.medium, 0u));
-    setPathField(5u, slot, packVec(p.previousNormal, 0u));
-    setPathField(6u, slot, packVec(p.previousPosition, 0u));
+    if (!p.afterDelta) {
+        setPathField(5u, slot, packVec(p.previousNormal, 0u));
+        setPathField(6u, slot, packVec(p.previousPosition, 0u));
+    }
 }
 
 void startPathResult(uint slot) { setPathField(3u, slot, uvec4(0u)); }
