@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
-#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -45,32 +45,42 @@ simd::I4 Binner::indices(F4 centroid) const {
         simd::vmin(simd::vmax((centroid - origin) * scale, zero), lastBin), simd::I4);
 }
 
-// What one bin of one axis holds: the bounds of its primitives. No initialisers, so a node pays
-// only for the bins it uses (BinGrid::reset).
+// What one bin of one axis holds: the bounds of its primitives, and in lane w of `lo` how many
+// there are (as integer bits). Keeping the count in the box saves the binning loop a third of
+// its stores. No initialisers, so a node pays only for the bins it uses (BinGrid::reset).
 struct Bin {
     F4 lo, hi;
 };
 
 struct BinGrid {
     Bin bin[3][kMaxBins];
-    std::uint32_t count[kMaxBins][4];  // [i][a]: bin i of axis a; a sweep loads all axes at once
 
     void reset(int bins) {
-        for (int i = 0; i < bins; ++i) {
-            for (int a = 0; a < 3; ++a) bin[a][i] = {simd::kPosInf, simd::kNegInf};
-            for (std::uint32_t& n : count[i]) n = 0;
-        }
+        const F4 emptyLo{simd::kInf, simd::kInf, simd::kInf, 0.0f};  // w: a count of 0
+        for (int a = 0; a < 3; ++a)
+            for (int i = 0; i < bins; ++i) bin[a][i] = {emptyLo, simd::kNegInf};
     }
-    void add(int a, int i, const Bin& b, std::uint32_t n) {
+    // lo's lane w must be +inf, so that the minimum keeps the bin's count there (any count below
+    // 2^31, read as a float, is less than +inf).
+    void addOne(int a, int i, F4 lo, F4 hi) {
         Bin& x = bin[a][i];
-        x.lo = simd::vmin(x.lo, b.lo);
-        x.hi = simd::vmax(x.hi, b.hi);
-        count[i][a] += n;
+        x.lo = F4(simd::I4(simd::vmin(x.lo, lo)) + simd::I4{0, 0, 0, 1});
+        x.hi = simd::vmax(x.hi, hi);
     }
-    Box4 box(int a, int i) const { return {bin[a][i].lo, bin[a][i].hi}; }
+    std::uint32_t count(int a, int i) const {
+        return std::bit_cast<std::uint32_t>(bin[a][i].lo[3]);
+    }
+    Box4 box(int a, int i) const { return {simd::xyz(bin[a][i].lo), bin[a][i].hi}; }
     void merge(const BinGrid& other, int bins) {
         for (int a = 0; a < 3; ++a)
-            for (int i = 0; i < bins; ++i) add(a, i, other.bin[a][i], other.count[i][a]);
+            for (int i = 0; i < bins; ++i) {
+                Bin& x = bin[a][i];
+                const Bin& y = other.bin[a][i];
+                const std::uint32_t n = count(a, i) + other.count(a, i);
+                x.lo = simd::vmin(x.lo, y.lo);
+                x.lo[3] = std::bit_cast<float>(n);
+                x.hi = simd::vmax(x.hi, y.hi);
+            }
     }
 };
 
@@ -79,11 +89,12 @@ namespace {
 // The hot loop: one vector subtract-multiply-clamp gives all three bin indices.
 void binRange(const Binner& b, const PrimRef* refs, std::uint32_t begin, std::uint32_t end,
               BinGrid& grid) {
+    const simd::I4 xyz{-1, -1, -1, 0}, infW{0, 0, 0, std::bit_cast<std::int32_t>(simd::kInf)};
     for (std::uint32_t i = begin; i < end; ++i) {
-        const F4 lo = refs[i].bottom(), hi = refs[i].hi;
-        const F4 c = lo * 0.5f + hi * 0.5f;
+        const F4 lo = F4((simd::I4(refs[i].lo) & xyz) | infW), hi = refs[i].hi;
+        const F4 c = simd::xyz(lo) * 0.5f + hi * 0.5f;
         const simd::I4 bin = b.indices(c);
-        for (int a = 0; a < 3; ++a) grid.add(a, bin[a], {lo, hi}, 1);
+        for (int a = 0; a < 3; ++a) grid.addOne(a, bin[a], lo, hi);
     }
 }
 
@@ -113,10 +124,9 @@ void binParallel(const Binner& b, const PrimRef* refs, const Range& range, unsig
 void fillChildren(const BinGrid& grid, const Range& range, Split& split) {
     std::uint32_t leftCount = 0;
     for (int i = 0; i < split.binner.bins; ++i) {
-        const Bin& b = grid.bin[split.axis][i];
         Range& side = i <= split.bin ? split.left : split.right;
-        side.bounds.grow(b.lo, b.hi);
-        if (i <= split.bin) leftCount += grid.count[i][split.axis];
+        side.bounds.grow(grid.box(split.axis, i));
+        if (i <= split.bin) leftCount += grid.count(split.axis, i);
     }
     // The children's centroid bounds, which only steer their binning, are not tracked per bin
     // (that would cost a third of the binning loop): each child's box clipped to the parent's
@@ -137,9 +147,8 @@ void fillChildren(const BinGrid& grid, const Range& range, Split& split) {
 }
 
 simd::I4 counts(const BinGrid& grid, int i) {
-    simd::I4 v;
-    std::memcpy(&v, grid.count[i], sizeof v);
-    return v;
+    return simd::I4{std::int32_t(grid.count(0, i)), std::int32_t(grid.count(1, i)),
+                    std::int32_t(grid.count(2, i)), 0};
 }
 
 F4 select(simd::I4 mask, F4 a, F4 b) { return mask ? a : b; }
@@ -152,10 +161,13 @@ SahBinning::SahBinning(const BuildOptions& options)
       ct_(options.traversalCost),
       ci_(options.intersectCost) {}
 
-// Small nodes get one bin per primitive: as many candidates as sixteen bins would give them in
-// practice, at a fraction of the sweep cost, and most nodes are small.
+// Mid-sized nodes get kFewBins bins and the smallest binned ones one bin per primitive: most
+// nodes are small, and there the bins' reset and sweep outweigh the binning itself.
 int SahBinning::binCount(const Range& range) const {
-    return int(std::min<std::uint32_t>(std::uint32_t(bins_), std::max(2u, range.size())));
+    const std::uint32_t n = range.size();
+    const std::uint32_t wanted =
+        n <= kFewBinsNode ? std::min(kFewBins, std::uint32_t(bins_)) : std::uint32_t(bins_);
+    return int(std::min(wanted, std::max(2u, n)));
 }
 
 // Every candidate plane of all three axes in two passes over the bins, the axes in the lanes
@@ -205,7 +217,7 @@ void SahBinning::sweep(const BinGrid& grid, const Binner& b, const Range& range,
     for (int a = 0; a < 3 && best.axis < 0; ++a) {
         std::uint32_t n = 0;
         for (int i = 0; i < b.bins - 1; ++i) {
-            n += grid.count[i][a];
+            n += grid.count(a, i);
             if (n > 0 && n < range.size()) {
                 best.axis = a;
                 best.bin = i;
@@ -239,8 +251,7 @@ Split SahBinning::find(const PrimRef* refs, const Range& range, unsigned threads
         best.chunkSize = chunkSize;
         best.chunkLeft.resize(chunks.size());
         for (std::size_t c = 0; c < chunks.size(); ++c)
-            for (int i = 0; i <= best.bin; ++i)
-                best.chunkLeft[c] += chunks[c]->count[i][best.axis];
+            for (int i = 0; i <= best.bin; ++i) best.chunkLeft[c] += chunks[c]->count(best.axis, i);
     }
     return best;
 }
