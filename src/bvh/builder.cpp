@@ -146,6 +146,12 @@ public:
         for (std::size_t id = tasks_.size(); id-- > 1;)
             tasks_[tasks_[id].parent].total += tasks_[id].total;
         reserveHuge(out, tasks_[0].total);
+        if (tasks_.size() == 1) {
+            // Nothing was handed on, so there are no gaps: the slots from 0 are the final array,
+            // links included. A copy spares the output its zero-fill and the walk.
+            out.assign(slots_, slots_ + tasks_[0].total);
+            return;
+        }
         if (pool) prefault(out.data(), tasks_[0].total * sizeof(shader::BvhNode));
         out.resize(tasks_[0].total);
         if (pool)
