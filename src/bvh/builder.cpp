@@ -37,12 +37,13 @@ constexpr std::uint32_t kParallelBinning = 64 * 1024;
 // Faults in the pages of [data, data + bytes) on all threads (Linux MADV_POPULATE_WRITE, 2 MiB
 // per call) before a serial pass first writes them: the kernel zeroes each fresh page on its
 // first touch, which for a large output costs more than the writes themselves. Contents are not
-// changed; failure (an old kernel) only means the serial pass pays for the faults. With two
-// threads or fewer there is little to spread the faults over, and the extra pass measured slower
-// (H200 host, 1M-triangle soup: 16 threads 41.9 -> 38.3 ms with it, two 188.5 -> 195.5 ms).
+// changed; failure (an old kernel) only means the serial pass pays for the faults. Measured
+// (1M-triangle soup): H200 host, 16 threads 41.9 -> 38.3 ms with it, but two of its cores
+// 188.5 -> 195.5 ms; on the 2-core dev machine, where fresh pages cost more, two threads gain
+// (about 128 -> 123 ms, medians), so only a single thread skips it.
 void prefault(void* data, std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_POPULATE_WRITE)
-    if (hardwareThreads() <= 2) return;
+    if (hardwareThreads() < 2) return;
     constexpr std::uintptr_t kPage = 4096, kStep = std::uintptr_t(2) << 20;
     const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(data) / kPage * kPage;
     const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(data) + bytes;
