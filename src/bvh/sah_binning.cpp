@@ -155,11 +155,24 @@ F4 select(simd::I4 mask, F4 a, F4 b) { return mask ? a : b; }
 
 }  // namespace
 
+// Bin counts ride in a float lane through vmin (BinGrid::addOne), and small integers read as
+// floats are denormals: a thread that flushes denormals (DAZ, FPCR.FZ; nothing in Penumbra sets
+// them, but an embedding program might) would zero every count and build a useless tree.
+namespace {
+bool denormalsSurviveMin() {
+    volatile std::uint32_t one = 1;
+    const F4 count{0.0f, 0.0f, 0.0f, std::bit_cast<float>(std::uint32_t(one))};
+    return std::bit_cast<std::uint32_t>(simd::vmin(count, simd::kPosInf)[3]) == 1u;
+}
+}  // namespace
+
 SahBinning::SahBinning(const BuildOptions& options)
     : bins_(std::clamp(options.bins, 2, kMaxBins)),
       leafSize_(std::uint32_t(std::max(options.maxLeafSize, 1))),
       ct_(options.traversalCost),
-      ci_(options.intersectCost) {}
+      ci_(options.intersectCost) {
+    PN_CHECK(denormalsSurviveMin());
+}
 
 // Mid-sized nodes get kFewBins bins and the smallest binned ones one bin per primitive: most
 // nodes are small, and there the bins' reset and sweep outweigh the binning itself.
