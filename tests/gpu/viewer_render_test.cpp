@@ -1,6 +1,8 @@
 // The viewer's frame loop as a whole: with a still camera its running mean is the image
 // `penumbra render` makes with the same samples; debug views show what they claim.
+#include <map>
 #include <set>
+#include <string>
 #include <utility>
 
 #include "bvh/traverse_cpu.h"
@@ -59,6 +61,44 @@ TEST_P(ViewerRenderKernelTest, StillCameraConvergesToTheHeadlessRender) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Kernels, ViewerRenderKernelTest, ::testing::Values("mega", "wavefront"));
+
+// The wavefront's stage timer (PENUMBRA_WAVE_STAGE_TIMES=1) reports each step per round of the
+// bounce loop as well as in total; after one timed pass the medians are that pass's figures, so
+// a step's rounds add up to its total.
+TEST_F(ViewerRenderTest, WavefrontStageTimesPerRoundAddUpToEachStep) {
+    ScopedEnv kernel("PENUMBRA_TRACE_KERNEL", "wavefront");
+    ScopedEnv stages("PENUMBRA_WAVE_STAGE_TIMES", "1");
+    Scene scene = makeCornellBox();
+    InteractiveRenderer viewer(*ctx, scene, false, 7);
+    viewer.resize(16, 12);
+    ViewSettings vs;
+    vs.maxBounces = 3;
+    for (int frame = 0; frame < 2; ++frame) {  // the second collects the first's timestamps
+        viewer.commands().run([&](VkCommandBuffer cmd) { viewer.record(cmd, scene.camera, vs); });
+        viewer.finishFrame();
+    }
+    const std::map<std::string, double> ms = viewer.traceStageMilliseconds();
+    ASSERT_FALSE(ms.empty()) << "no stage times: are timestamps supported?";
+    auto sumOfRounds = [&](const std::string& step) {
+        double sum = 0;
+        int rounds = 0;
+        for (const auto& [name, value] : ms)
+            if (name.rfind(step + ".b", 0) == 0) {
+                sum += value;
+                ++rounds;
+            }
+        return std::pair{sum, rounds};
+    };
+    const std::pair<const char*, int> steps[] = {{"start", 1}, {"extend", 4}, {"shade", 4}, {"shadow", 4}, {"finish", 1}};
+    for (const auto& [step, rounds] : steps) {
+        ASSERT_TRUE(ms.count(step)) << step;
+        const auto [sum, found] = sumOfRounds(step);
+        EXPECT_EQ(found, rounds) << step;  // bounces 0-3 trace closest hits; shadows follow rounds 0-3's shading
+        EXPECT_NEAR(sum, ms.at(step), 1e-9 * (1 + ms.at(step))) << step;
+        EXPECT_GE(ms.at(step), 0.0) << step;
+    }
+    EXPECT_TRUE(ms.count("extend.b0") && ms.count("shadow.b1") && ms.count("shadow.b4") && !ms.count("shadow.b0"));
+}
 
 // Without history (temporal accumulation off) each frame shows only its own samples; they must
 // be new samples every frame, or the noise freezes on the screen.

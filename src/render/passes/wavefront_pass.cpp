@@ -56,13 +56,13 @@ WavefrontPass::WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, con
 }
 
 template <typename Dispatch>
-void WavefrontPass::timed(VkCommandBuffer cmd, std::uint32_t stage, Dispatch&& dispatch) {
-    if (!stageTimes_ || stageTimes_->sectionStage.size() >= StageTimes::kSections) {
+void WavefrontPass::timed(VkCommandBuffer cmd, std::uint32_t stage, std::uint32_t round, Dispatch&& dispatch) {
+    if (!stageTimes_ || stageTimes_->sections.size() >= StageTimes::kSections) {
         dispatch();
         return;
     }
-    const auto section = std::uint32_t(stageTimes_->sectionStage.size());
-    stageTimes_->sectionStage.push_back(stage);
+    const auto section = std::uint32_t(stageTimes_->sections.size());
+    stageTimes_->sections.push_back({stage, round});
     gpu::computeBarrier(cmd);  // the step runs alone
     stageTimes_->timer.begin(cmd, section);
     dispatch();
@@ -73,15 +73,21 @@ void WavefrontPass::collectStageTimes(VkCommandBuffer cmd) {
     if (!stageTimes_) return;
     StageTimes& st = *stageTimes_;
     double sums[kStageCount] = {};
-    bool landed = !st.sectionStage.empty();
-    for (std::uint32_t i = 0; i < st.sectionStage.size() && landed; ++i) {
+    std::map<std::string, double> perRound;
+    bool landed = !st.sections.empty();
+    for (std::uint32_t i = 0; i < st.sections.size() && landed; ++i) {
         const std::optional<double> ms = st.timer.millisecondsIfReady(i);
         landed = ms.has_value();
-        if (landed) sums[st.sectionStage[i]] += *ms;
+        if (!landed) break;
+        const StageTimes::Section s = st.sections[i];
+        sums[s.stage] += *ms;
+        perRound[std::string(kStageNames[s.stage]) + ".b" + std::to_string(s.round)] += *ms;
     }
-    if (landed)
+    if (landed) {
         for (std::uint32_t k = 0; k < kStageCount; ++k) st.perPass[kStageNames[k]].push_back(sums[k]);
-    st.sectionStage.clear();
+        for (const auto& [name, ms] : perRound) st.perPass[name].push_back(ms);
+    }
+    st.sections.clear();
     st.timer.reset(cmd);
 }
 
@@ -136,7 +142,7 @@ void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint
                           countRays ? 1u : 0u, tile.x, tile.y, tileWidth, tileHeight, std::uint32_t(capacity_), 0u, 0u, 0u};
     vkCmdFillBuffer(cmd, control_.get(), 0, VK_WHOLE_SIZE, 0);
     gpu::computeBarrier(cmd);
-    timed(cmd, kStart, [&] { start_->dispatch(cmd, groupsFor(slots), 1, 1, &push); });
+    timed(cmd, kStart, 0, [&] { start_->dispatch(cmd, groupsFor(slots), 1, 1, &push); });
     gpu::computeBarrier(cmd);
     // Bounce b traces the live paths' closest hits and shades them, while the shadow rays that
     // bounce b - 1 queued are traced alongside the closest hits (they touch disjoint state).
@@ -146,15 +152,15 @@ void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint
         push.waveBounce = b;
         args_->dispatch(cmd, 1, 1, 1, &push);
         gpu::indirectBarrier(cmd);
-        if (b <= maxBounces) timed(cmd, kExtend, [&] { extend_->dispatchIndirect(cmd, control_, extendArgs, &push); });
-        if (b >= 1) timed(cmd, kShadow, [&] { shadow_->dispatchIndirect(cmd, control_, shadowArgs, &push); });
+        if (b <= maxBounces) timed(cmd, kExtend, b, [&] { extend_->dispatchIndirect(cmd, control_, extendArgs, &push); });
+        if (b >= 1) timed(cmd, kShadow, b, [&] { shadow_->dispatchIndirect(cmd, control_, shadowArgs, &push); });
         gpu::computeBarrier(cmd);
         if (b <= maxBounces) {
-            timed(cmd, kShade, [&] { shade_->dispatchIndirect(cmd, control_, extendArgs, &push); });
+            timed(cmd, kShade, b, [&] { shade_->dispatchIndirect(cmd, control_, extendArgs, &push); });
             gpu::computeBarrier(cmd);
         }
     }
-    timed(cmd, kFinish, [&] { finish_->dispatch(cmd, groupsFor(std::uint64_t(tileWidth) * tileHeight), 1, 1, &push); });
+    timed(cmd, kFinish, maxBounces + 1, [&] { finish_->dispatch(cmd, groupsFor(std::uint64_t(tileWidth) * tileHeight), 1, 1, &push); });
 }
 
 std::vector<gpu::PipelineStatistic> WavefrontPass::statistics() const {

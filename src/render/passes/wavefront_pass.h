@@ -50,16 +50,19 @@ public:
     std::vector<gpu::PipelineStatistic> statistics() const;
 
     // Diagnostics, with PENUMBRA_WAVE_STAGE_TIMES=1: the median GPU milliseconds per pass of each
-    // step (start, extend, shade, shadow, finish; summed over bounces and tiles), over the passes
-    // whose timestamps had landed when the next pass was recorded. The steps are then separated
-    // by barriers to be timed alone, so the pass itself is a little slower. Empty otherwise.
+    // step (start, extend, shade, shadow, finish; summed over bounces and tiles), and of each step
+    // at each round of the bounce loop ("extend.b1": its second round; a round's shadow step
+    // traces the rays the previous round's shading queued; finish counts with the last round), over
+    // the passes whose timestamps had
+    // landed when the next pass was recorded. The steps are then separated by barriers to be
+    // timed alone, so the pass itself is a little slower. Empty otherwise.
     std::map<std::string, double> stageMilliseconds() const;
 
 private:
     void bindWorkingBuffers();
-    // Around one dispatch of `stage` when stage timing is on.
+    // Around one dispatch of `stage` in round `round` of the bounce loop when stage timing is on.
     template <typename Dispatch>
-    void timed(VkCommandBuffer cmd, std::uint32_t stage, Dispatch&& dispatch);
+    void timed(VkCommandBuffer cmd, std::uint32_t stage, std::uint32_t round, Dispatch&& dispatch);
     void collectStageTimes(VkCommandBuffer cmd);
 
     const gpu::Context& ctx_;
@@ -70,7 +73,10 @@ private:
         explicit StageTimes(const gpu::Context& ctx) : timer(ctx, kSections) {}
         static constexpr std::uint32_t kSections = 256;
         gpu::GpuTimer timer;
-        std::vector<std::uint32_t> sectionStage;   // the stage of each section recorded since the last reset
+        struct Section {
+            std::uint32_t stage, round;
+        };
+        std::vector<Section> sections;  // what each timer section recorded since the last reset timed
         std::map<std::string, std::vector<double>> perPass;
     };
     std::unique_ptr<StageTimes> stageTimes_;
