@@ -17,25 +17,14 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 uint closestRays = 0u;
 uint shadowRays = 0u;
 
-// The pixel's samplesPerPass paths. Each vertex samples its light and its BSDF before the light's
-// shadow ray is traced, so that the shading point's state is dead during that traversal.
+// The pixel's samplesPerPass paths, each followed to its end before the next starts.
 void tracePixel(uvec2 pixel, uint pixelIndex) {
     uint firstSample = push.passIndex * frame.samplesPerPass;
     vec3 sum = vec3(0.0);
     float sumSquares = 0.0;
     for (uint k = 0u; k < frame.samplesPerPass; ++k) {
         Path path = startPath(pixel, pixelIndex, firstSample + k);
-        bool alive = true;
-        while (alive) {
-            ++closestRays;
-            Hit hit = traceClosest(path.origin, path.direction, PN_INFINITY);
-            PendingShadow shadow;
-            alive = extendPath(path, hit, pixelIndex, shadow);
-            if (shadow.pending) {
-                ++shadowRays;
-                if (!traceOccluded(shadow.ray.origin, shadow.ray.direction, shadow.ray.tMax)) path.result += shadow.light;
-            }
-        }
+        finishPath(path, pixelIndex, closestRays, shadowRays);
         addSample(path.result, sum, sumSquares);
     }
     storePixelSums(pixelIndex, vec4(sum, sumSquares));

@@ -171,4 +171,21 @@ bool extendPath(inout Path path, Hit hit, uint pixelIndex, out PendingShadow sha
     return true;
 }
 
+// Follows the path from its current ray to its end, tracing each vertex's shadow ray as soon as
+// the vertex has sampled its light and BSDF (so the shading point's state is dead during that
+// traversal); counts the rays traced.
+void finishPath(inout Path path, uint pixelIndex, inout uint closestRays, inout uint shadowRays) {
+    bool alive = true;
+    while (alive) {
+        ++closestRays;
+        Hit hit = traceClosest(path.origin, path.direction, PN_INFINITY);
+        PendingShadow shadow;
+        alive = extendPath(path, hit, pixelIndex, shadow);
+        if (shadow.pending) {
+            ++shadowRays;
+            if (!traceOccluded(shadow.ray.origin, shadow.ray.direction, shadow.ray.tMax)) path.result += shadow.light;
+        }
+    }
+}
+
 #endif

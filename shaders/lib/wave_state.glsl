@@ -1,7 +1,7 @@
 // The wavefront trace pass's working state (render/passes/wavefront_pass.h): every path of a tile
 // has a slot; its state, its closest hit and its queued shadow ray live in buffers between the
-// kernels (wave_start, wave_extend, wave_shade, wave_shadow, wave_finish), so that each kernel
-// holds only what its own step needs. Fields are stored field-major (field * stride + slot), so
+// kernels (wave_start, wave_extend, wave_shade, wave_shadow, wave_tail, wave_finish), so that
+// each kernel holds only what its own step needs. Fields are stored field-major (field * stride + slot), so
 // a subgroup's loads of one field are contiguous. Everything is stored as uint bits: moves of
 // integers are exact, whatever the values. Include after lib/path.glsl.
 #ifndef PN_WAVE_STATE_GLSL
@@ -50,12 +50,12 @@ void storePath(uint slot, Path p) {
     }
 }
 
-void startPathResult(uint slot) { setPathField(3u, slot, uvec4(0u)); }
+vec3 pathResult(uint slot) { return unpackVec(pathField(3u, slot)); }
+void setPathResult(uint slot, vec3 result) { setPathField(3u, slot, packVec(result, 0u)); }
+void startPathResult(uint slot) { setPathResult(slot, vec3(0.0)); }
 
-// The path at its hit, with the previous vertex only where the vertex will need it: an escape,
-// or a hit on a light-sampled emitter after a non-delta bounce (MIS weights its emission).
-// `pixel` is slotPixel(slot).
-Path loadPathForShading(uint slot, uvec3 pixel, Hit hit) {
+// The path's stored fields but its result and the previous vertex (zero). `pixel` is slotPixel(slot).
+Path loadPathCore(uint slot, uvec3 pixel) {
     Path p;
     uvec4 f0 = pathField(0u, slot), f1 = pathField(1u, slot), f2 = pathField(2u, slot);
     p.origin = unpackVec(f0);
@@ -70,18 +70,33 @@ Path loadPathForShading(uint slot, uvec3 pixel, Hit hit) {
     p.medium = PN_HAS(PN_FEATURE_ABSORPTION) ? unpackVec(pathField(4u, slot)) : vec3(0.0);
     p.previousNormal = vec3(0.0);
     p.previousPosition = vec3(0.0);
-    if (!p.afterDelta && (hit.triangle == PN_NO_HIT || triAttribs[hit.triangle].lightIndex != PN_NO_LIGHT)) {
-        p.previousNormal = unpackVec(pathField(5u, slot));
-        p.previousPosition = unpackVec(pathField(6u, slot));
-    }
     return p;
 }
 
-vec3 pathResult(uint slot) { return unpackVec(pathField(3u, slot)); }
-void addToPathResult(uint slot, vec3 light) {
-    uvec4 f3 = pathField(3u, slot);
-    setPathField(3u, slot, packVec(unpackVec(f3) + light, f3.w));
+void loadPreviousVertex(inout Path p, uint slot) {
+    p.previousNormal = unpackVec(pathField(5u, slot));
+    p.previousPosition = unpackVec(pathField(6u, slot));
 }
+
+// The path at its hit, with the previous vertex only where the vertex will need it: an escape,
+// or a hit on a light-sampled emitter after a non-delta bounce (MIS weights its emission).
+// Its result starts at zero: the shade step adds what the vertex gathers to the stored one.
+Path loadPathForShading(uint slot, uvec3 pixel, Hit hit) {
+    Path p = loadPathCore(slot, pixel);
+    if (!p.afterDelta && (hit.triangle == PN_NO_HIT || triAttribs[hit.triangle].lightIndex != PN_NO_LIGHT))
+        loadPreviousVertex(p, slot);
+    return p;
+}
+
+// The whole path before its next ray, its result included (wave_tail.comp adds to it in order).
+Path loadPathToFinish(uint slot, uvec3 pixel) {
+    Path p = loadPathCore(slot, pixel);
+    if (!p.afterDelta) loadPreviousVertex(p, slot);
+    p.result = pathResult(slot);
+    return p;
+}
+
+void addToPathResult(uint slot, vec3 light) { setPathResult(slot, pathResult(slot) + light); }
 
 void storeHit(uint slot, Hit h) {
     waveHits[slot] = uvec4(floatBitsToUint(h.t), h.triangle, floatBitsToUint(h.u), floatBitsToUint(h.v));

@@ -530,18 +530,19 @@ PN_STRUCT(PassPush) {
     uint tileHeight;     //   slot = sample * tileWidth * tileHeight + row * tileWidth + column)
     uint waveStride;     // wave_*.comp: path slots in the working buffers (their field stride)
     uint waveBounce;     // wave_*.comp: which bounce this is (picks the queue it reads)
-    uint pad0;
-    uint pad1;
+    uint waveTailPaths;  // wave_args.comp: at most this many live paths go to wave_tail.comp instead
+    uint pad1;           //   of another round of extend, shade and shadow (0: never)
 };
 
 // The wavefront pass's queue counts and the indirect dispatch sizes computed from them
-// (wave_args.comp), 48 bytes.
+// (wave_args.comp), 64 bytes.
 PN_STRUCT(WaveControl) {
     uint rayCount[2];    // live paths in each queue (read at bounce b: rayCount[b & 1])
     uint shadowCount;    // shadow rays queued by the last shade pass
     uint shadowLive;     // the shadow count the pending shadow pass reads (shadowCount is refilled meanwhile)
     uint extendGroups[4];  // VkDispatchIndirectCommand (x, y, z) + pad, for extend and shade
     uint shadowGroups[4];  // VkDispatchIndirectCommand, for the shadow pass
+    uint tailGroups[4];    // VkDispatchIndirectCommand, for the tail (the live paths to their end)
 };
 
 // Counters written by the trace pass: rays only when PassPush.countRays is set.
@@ -651,9 +652,10 @@ static_assert(sizeof(SphereLight) == 64 && offsetof(SphereLight, radius) == 12 &
               offsetof(SphereLight, primitive) == 56);
 static_assert(sizeof(PassPush) == 48 && offsetof(PassPush, countRays) == 12 && offsetof(PassPush, tileX) == 16 &&
               offsetof(PassPush, tileY) == 20 && offsetof(PassPush, tileWidth) == 24 && offsetof(PassPush, waveStride) == 32 &&
-              offsetof(PassPush, waveBounce) == 36);
-static_assert(sizeof(WaveControl) == 48 && offsetof(WaveControl, shadowLive) == 12 &&
-              offsetof(WaveControl, extendGroups) == 16 && offsetof(WaveControl, shadowGroups) == 32);
+              offsetof(PassPush, waveBounce) == 36 && offsetof(PassPush, waveTailPaths) == 40);
+static_assert(sizeof(WaveControl) == 64 && offsetof(WaveControl, shadowLive) == 12 &&
+              offsetof(WaveControl, extendGroups) == 16 && offsetof(WaveControl, shadowGroups) == 32 &&
+              offsetof(WaveControl, tailGroups) == 48);
 static_assert(sizeof(RayCounters) == 16);
 static_assert(sizeof(RayDesc) == 32 && offsetof(RayDesc, tMax) == 12 && offsetof(RayDesc, direction) == 16);
 static_assert(sizeof(HitRecord) == 16 && offsetof(HitRecord, v) == 12);

@@ -2,7 +2,8 @@
 // every path draws the same random numbers in the same order and adds its vertices' light in the
 // same order, so the two must give the same sums, bit for bit, and trace the same rays. Scenes
 // cover what the kernels specialise on: spheres, glass and absorption, textures, punctual lights,
-// instances; and the pass's own paths: tiles, masked (adaptive) passes, more samples per pass.
+// instances; and the pass's own paths: tiles, masked (adaptive) passes, more samples per pass, and
+// the tail kernel taking over the last paths (never, part way, from the camera rays on).
 #include <cstring>
 #include <string>
 #include <vector>
@@ -26,8 +27,9 @@ struct Traced {
 };
 
 Traced renderWith(const gpu::Context& ctx, const std::string& kernel, const Scene& scene, const RenderSettings& settings,
-                  const std::vector<std::uint32_t>* mask = nullptr) {
+                  const std::vector<std::uint32_t>* mask = nullptr, const std::string& tailPaths = "0") {
     ScopedEnv env("PENUMBRA_TRACE_KERNEL", kernel);
+    ScopedEnv tail("PENUMBRA_WAVE_TAIL_PATHS", tailPaths);
     Renderer renderer(ctx, scene, settings);
     if (mask) {
         renderer.setActiveMask(*mask);
@@ -41,19 +43,24 @@ Traced renderWith(const gpu::Context& ctx, const std::string& kernel, const Scen
 void expectSameImage(const gpu::Context& ctx, const Scene& scene, const RenderSettings& settings,
                      const std::vector<std::uint32_t>* mask = nullptr) {
     const Traced mega = renderWith(ctx, "mega", scene, settings, mask);
-    const Traced wave = renderWith(ctx, "wavefront", scene, settings, mask);
-    ASSERT_EQ(mega.sums.size(), wave.sums.size());
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < mega.sums.size(); ++i)
-        differing += std::memcmp(&mega.sums[i], &wave.sums[i], sizeof(Vec4)) != 0;
-    EXPECT_EQ(differing, 0u) << "pixels whose sums differ between the kernels";
-    EXPECT_EQ(mega.stats.closestRays, wave.stats.closestRays);
-    EXPECT_EQ(mega.stats.shadowRays, wave.stats.shadowRays);
-    EXPECT_EQ(wave.stats.invalidSamples, 0u);
-    EXPECT_GT(wave.stats.shadowRays, 0u);
-    double energy = 0;
-    for (const Vec4& s : wave.sums) energy += s.x + s.y + s.z;
-    EXPECT_GT(energy, 0.0) << "a black image would agree trivially";
+    // The tail kernel never, once half a pass's paths are left, and for every path from the start.
+    const std::uint64_t pathsPerPass = std::uint64_t(settings.width) * settings.height * settings.samplesPerPass;
+    for (const std::string& tailPaths : {std::string("0"), std::to_string(pathsPerPass / 2), std::string("4294967295")}) {
+        SCOPED_TRACE("PENUMBRA_WAVE_TAIL_PATHS=" + tailPaths);
+        const Traced wave = renderWith(ctx, "wavefront", scene, settings, mask, tailPaths);
+        ASSERT_EQ(mega.sums.size(), wave.sums.size());
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < mega.sums.size(); ++i)
+            differing += std::memcmp(&mega.sums[i], &wave.sums[i], sizeof(Vec4)) != 0;
+        EXPECT_EQ(differing, 0u) << "pixels whose sums differ between the kernels";
+        EXPECT_EQ(mega.stats.closestRays, wave.stats.closestRays);
+        EXPECT_EQ(mega.stats.shadowRays, wave.stats.shadowRays);
+        EXPECT_EQ(wave.stats.invalidSamples, 0u);
+        EXPECT_GT(wave.stats.shadowRays, 0u);
+        double energy = 0;
+        for (const Vec4& s : wave.sums) energy += s.x + s.y + s.z;
+        EXPECT_GT(energy, 0.0) << "a black image would agree trivially";
+    }
 }
 
 TEST_F(WavefrontTest, CornellBoxMatchesTheMegakernel) {

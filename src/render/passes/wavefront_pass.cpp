@@ -4,7 +4,9 @@
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
+#include "core/error.h"
 #include "core/median.h"
 #include "gpu/check.h"
 #include "gpu/commands.h"
@@ -21,8 +23,23 @@ constexpr std::uint32_t kWorkingBindings[] = {PN_BINDING_ACCUM,       PN_BINDING
 
 std::uint32_t groupsFor(std::uint64_t items) { return std::uint32_t((items + PN_WAVE_GROUP - 1) / PN_WAVE_GROUP); }
 
-enum Stage : std::uint32_t { kStart, kExtend, kShade, kShadow, kFinish, kStageCount };
-constexpr const char* kStageNames[kStageCount] = {"start", "extend", "shade", "shadow", "finish"};
+enum Stage : std::uint32_t { kStart, kExtend, kShade, kShadow, kTail, kFinish, kStageCount };
+constexpr const char* kStageNames[kStageCount] = {"start", "extend", "shade", "shadow", "tail", "finish"};
+
+// The live paths at or below which the tail kernel follows them to their end instead of another
+// round of the bounce loop (PassPush.waveTailPaths). Measured on an H200 (docs/PERFORMANCE.md,
+// session 27); PENUMBRA_WAVE_TAIL_PATHS overrides it (0: never).
+constexpr std::uint32_t kDefaultTailPaths = 16384;
+
+std::uint32_t tailPathsSetting() {
+    const char* text = std::getenv("PENUMBRA_WAVE_TAIL_PATHS");
+    if (!text || !*text) return kDefaultTailPaths;
+    char* end = nullptr;
+    const unsigned long long value = std::strtoull(text, &end, 10);
+    if (*end != '\0' || text[0] == '-')
+        throw UsageError(std::string("PENUMBRA_WAVE_TAIL_PATHS must be a whole number of paths (got '") + text + "')");
+    return std::uint32_t(std::min<unsigned long long>(value, UINT32_MAX));
+}
 
 }  // namespace
 
@@ -42,6 +59,7 @@ WavefrontPass::WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, con
     extend_ = make("wave_extend");
     shade_ = make("wave_shade");
     shadow_ = make("wave_shadow");
+    tail_ = make("wave_tail");
     finish_ = make("wave_finish");
     const gpu::BindingSpec controlOnly[] = {{PN_BINDING_WAVE_CONTROL, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
     args_ = std::make_unique<gpu::ComputePipeline>(ctx, "wave_args", controlOnly, sizeof(shader::PassPush));
@@ -51,6 +69,7 @@ WavefrontPass::WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, con
                            gpu::MemoryKind::DeviceLocal);
     args_->bind(PN_BINDING_WAVE_CONTROL, control_);
     reserve(PN_WAVE_GROUP);
+    tailPaths_ = tailPathsSetting();
     const char* stageTimes = std::getenv("PENUMBRA_WAVE_STAGE_TIMES");
     if (stageTimes && std::strcmp(stageTimes, "1") == 0) stageTimes_ = std::make_unique<StageTimes>(ctx);
 }
@@ -120,7 +139,7 @@ void WavefrontPass::reserve(std::uint64_t slots) {
 }
 
 void WavefrontPass::bindWorkingBuffers() {
-    for (gpu::ComputePipeline* p : {start_.get(), extend_.get(), shade_.get(), shadow_.get(), finish_.get()}) {
+    for (gpu::ComputePipeline* p : {start_.get(), extend_.get(), shade_.get(), shadow_.get(), tail_.get(), finish_.get()}) {
         p->bind(PN_BINDING_WAVE_PATHS, paths_);
         p->bind(PN_BINDING_WAVE_HITS, hits_);
         p->bind(PN_BINDING_WAVE_SHADOWS, shadows_);
@@ -139,15 +158,18 @@ void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint
     const std::uint64_t slots = std::uint64_t(tileWidth) * tileHeight * samplesPerPass;
     reserve(slots);
     shader::PassPush push{passIndex,           traceMode, std::uint32_t(slots),
-                          countRays ? 1u : 0u, tile.x, tile.y, tileWidth, tileHeight, std::uint32_t(capacity_), 0u, 0u, 0u};
+                          countRays ? 1u : 0u, tile.x, tile.y, tileWidth, tileHeight, std::uint32_t(capacity_), 0u, tailPaths_, 0u};
     vkCmdFillBuffer(cmd, control_.get(), 0, VK_WHOLE_SIZE, 0);
     gpu::computeBarrier(cmd);
     timed(cmd, kStart, 0, [&] { start_->dispatch(cmd, groupsFor(slots), 1, 1, &push); });
     gpu::computeBarrier(cmd);
     // Bounce b traces the live paths' closest hits and shades them, while the shadow rays that
-    // bounce b - 1 queued are traced alongside the closest hits (they touch disjoint state).
+    // bounce b - 1 queued are traced alongside the closest hits (they touch disjoint state). Once
+    // few paths are left, the args step hands them to the tail instead (extend and shade then
+    // dispatch nothing), which runs after those shadow rays have added their light.
     constexpr VkDeviceSize extendArgs = offsetof(shader::WaveControl, extendGroups);
     constexpr VkDeviceSize shadowArgs = offsetof(shader::WaveControl, shadowGroups);
+    constexpr VkDeviceSize tailArgs = offsetof(shader::WaveControl, tailGroups);
     for (std::uint32_t b = 0; b <= maxBounces + 1; ++b) {
         push.waveBounce = b;
         args_->dispatch(cmd, 1, 1, 1, &push);
@@ -157,6 +179,7 @@ void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint
         gpu::computeBarrier(cmd);
         if (b <= maxBounces) {
             timed(cmd, kShade, b, [&] { shade_->dispatchIndirect(cmd, control_, extendArgs, &push); });
+            if (tailPaths_ != 0) timed(cmd, kTail, b, [&] { tail_->dispatchIndirect(cmd, control_, tailArgs, &push); });
             gpu::computeBarrier(cmd);
         }
     }

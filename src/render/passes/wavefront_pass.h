@@ -1,10 +1,11 @@
 // The wavefront trace pass (Laine, Karras & Aila 2013, "Megakernels Considered Harmful"): the
 // megakernel's path tracer (trace.comp) cut into kernels that each hold only what their step
 // needs: start (camera rays), extend (closest hits), shade (emission, light and BSDF samples,
-// roulette), shadow (occlusion), finish (sums into the accumulation buffer). Paths live in slots
-// of working buffers between the kernels; the live ones and the shadow rays are compacted into
-// queues whose lengths size each pass through indirect dispatches (wave_args.comp). Every path
-// draws the megakernel's random numbers in its order, so both give the same image.
+// roulette), shadow (occlusion), tail (the few paths left, each to its end), finish (sums into
+// the accumulation buffer). Paths live in slots of working buffers between the kernels; the live
+// ones and the shadow rays are compacted into queues whose lengths size each pass through indirect
+// dispatches (wave_args.comp). Every path draws the megakernel's random numbers in its order, so
+// both give the same image.
 #pragma once
 
 #include <map>
@@ -50,7 +51,7 @@ public:
     std::vector<gpu::PipelineStatistic> statistics() const;
 
     // Diagnostics, with PENUMBRA_WAVE_STAGE_TIMES=1: the median GPU milliseconds per pass of each
-    // step (start, extend, shade, shadow, finish; summed over bounces and tiles), and of each step
+    // step (start, extend, shade, shadow, tail, finish; summed over bounces and tiles), and of each step
     // at each round of the bounce loop ("extend.b1": its second round; a round's shadow step
     // traces the rays the previous round's shading queued; finish counts with the last round), over
     // the passes whose timestamps had
@@ -67,8 +68,9 @@ private:
 
     const gpu::Context& ctx_;
     std::uint64_t capacity_ = 0;  // path slots the working buffers hold
+    std::uint32_t tailPaths_ = 0;  // PassPush.waveTailPaths
     gpu::Buffer paths_, hits_, shadows_, queues_, control_;
-    std::unique_ptr<gpu::ComputePipeline> start_, args_, extend_, shade_, shadow_, finish_;
+    std::unique_ptr<gpu::ComputePipeline> start_, args_, extend_, shade_, shadow_, tail_, finish_;
     struct StageTimes {
         explicit StageTimes(const gpu::Context& ctx) : timer(ctx, kSections) {}
         static constexpr std::uint32_t kSections = 256;
