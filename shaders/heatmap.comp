@@ -34,9 +34,9 @@ layout(std430, set = 0, binding = PN_BINDING_SCRATCH) buffer HeatMax { HeatCount
 uint nodeDepth(uint target) {
     uint n = 0u, depth = 1u;
     while (n != target && depth <= uint(PN_BVH_STACK_SIZE)) {
-        BvhNode node = nodes[n];
-        if (node.triCount > 0u) break;  // not reachable for a valid tree
-        n = target < node.firstOrRight ? n + 1u : node.firstOrRight;
+        BvhPair node = nodes[n];
+        if (node.leafCount > 0u) break;  // not reachable for a valid tree
+        n = target < node.right ? node.left : node.right;
         ++depth;
     }
     return depth;

@@ -66,7 +66,10 @@ vec3 toInstanceVector(uint instance, vec3 v) {
 // root on the same stack, above a marker; popping the marker ends the bottom level. The world ray
 // is saved on the stack (bit for bit) under a moved instance's marker rather than kept in
 // registers through the whole walk: the loop then carries one ray and the instance, the state a
-// flat walk carries plus one register. Without instances, the flat BVH at node 0.
+// flat walk carries plus one register. Without instances, the flat BVH at node 0. Each step reads
+// one record (BvhPair): a leaf's primitives, or both children's boxes, tested here, so the walk
+// goes on into a child whose box it already knows it enters (the root's own box is never tested:
+// its children's are).
 Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
     Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0, PN_NO_HIT);
     if (frame.nodeCount == 0u) return hit;
@@ -74,17 +77,15 @@ Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
     uint current = twoLevel ? frame.topRoot : 0u;
     vec3 o = worldO, d = worldD;
     vec3 invD = safeInverse(d);
-    if (slabEntry(nodes[current].boundsMin, nodes[current].boundsMax, o, invD, tMax) == PN_INFINITY) return hit;
-
     uint stack[PN_BVH_WALK_STACK_SIZE];
     uint depth = 0u;
     uint instance = PN_NO_HIT;  // the instance whose bottom level is being walked
     while (true) {
-        BvhNode node = nodes[current];
+        BvhPair node = nodes[current];
         PN_COUNT_NODE();
-        if (node.triCount > 0u) {
+        if (node.leafCount > 0u) {
             if (twoLevel && instance == PN_NO_HIT) {
-                instance = node.firstOrRight;
+                instance = node.left;
                 uint root = instances[instance].rootNode;
                 // An identity instance (the world's own geometry, a mesh left where it was
                 // modelled) is walked with the world ray: no transform in, none back out.
@@ -105,20 +106,20 @@ Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
                 current = root & ~PN_INSTANCE_IDENTITY;
                 continue;
             }
-            for (uint i = node.firstOrRight; i < node.firstOrRight + node.triCount; ++i) {
+            for (uint i = node.left; i < node.left + node.leafCount; ++i) {
                 PN_COUNT_TRIANGLE();
                 float t, u, v;
                 if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
                     hit = Hit(t, i, u, v, instance);
-                    PN_NOTE_LEAF_HIT(current, node.triCount);
+                    PN_NOTE_LEAF_HIT(current, node.leafCount);
                     if (anyHit) return hit;
                 }
             }
         } else {
-            uint near = current + 1u;
-            uint far = node.firstOrRight;
-            float dNear = slabEntry(nodes[near].boundsMin, nodes[near].boundsMax, o, invD, hit.t);
-            float dFar = slabEntry(nodes[far].boundsMin, nodes[far].boundsMax, o, invD, hit.t);
+            uint near = node.left;
+            uint far = node.right;
+            float dNear = slabEntry(node.leftMin, node.leftMax, o, invD, hit.t);
+            float dFar = slabEntry(node.rightMin, node.rightMax, o, invD, hit.t);
             if (dFar < dNear) {
                 uint swapNode = near; near = far; far = swapNode;
                 float swapDist = dNear; dNear = dFar; dFar = swapDist;

@@ -2,7 +2,7 @@
 #ifndef PN_SCENE_BINDINGS_GLSL
 #define PN_SCENE_BINDINGS_GLSL
 
-layout(std430, set = 0, binding = PN_BINDING_NODES) readonly buffer NodeBuffer { BvhNode nodes[]; };
+layout(std430, set = 0, binding = PN_BINDING_NODES) readonly buffer NodeBuffer { BvhPair nodes[]; };
 layout(std430, set = 0, binding = PN_BINDING_TRI_VERTS) readonly buffer TriVertBuffer { TriVerts triVerts[]; };
 layout(std430, set = 0, binding = PN_BINDING_TRI_ATTRIBS) readonly buffer TriAttribBuffer { TriAttribs triAttribs[]; };
 layout(std430, set = 0, binding = PN_BINDING_TRI_UVS) readonly buffer TriUvBuffer { TriUvs triUvs[]; };

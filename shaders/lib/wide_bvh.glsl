@@ -25,7 +25,7 @@ Hit traverseWide(vec3 o, vec3 d, float tMax, bool anyHit) {
     // Slot s holds the child nearest to rays with sign bits s; XOR with the flipped octant puts
     // this ray's nearest child at the highest bit.
     uint octantFlip = 7u ^ ((d.x < 0.0 ? 1u : 0u) | (d.y < 0.0 ? 2u : 0u) | (d.z < 0.0 ? 4u : 0u));
-    uint firstWord = frame.nodeCount * 2u;  // a binary node is two uvec4
+    uint firstWord = frame.nodeCount * 4u;  // a binary walk's record (BvhPair) is four uvec4
     uvec2 stack[PN_BVH_STACK_SIZE];
     uint depth = 0u;
     uvec2 group = uvec2(0u, 0x80000000u);  // the root, as the only interior child of a node with mask 0

@@ -173,6 +173,23 @@ PN_STRUCT(BvhNode) {
     uint triCount;      //  4
 };
 
+// What the GPU walk reads for binary node i (bvh/child_pairs.h), 64 bytes, same indices as the
+// BvhNode array: an interior node's two children, boxes and indices side by side, so each step of
+// the walk is one load of 64 contiguous bytes (Aila & Laine 2009) where BvhNodes took the node and
+// then its two children from two places. A leaf's record holds its primitives.
+//   leafCount == 0 (interior): left = i + 1, right = BvhNode.firstOrRight; their boxes
+//   leafCount  > 0 (leaf):     left = its first primitive (top level: its instance); boxes unused
+PN_STRUCT(BvhPair) {
+    vec3 leftMin;
+    uint left;
+    vec3 leftMax;
+    uint leafCount;
+    vec3 rightMin;
+    uint right;
+    vec3 rightMax;
+    uint pad0;
+};
+
 // Compressed 8-wide BVH node (the CWBVH layout of Ylitie, Karras and Laine 2017), 80 bytes.
 // Wide nodes are uploaded after the binary nodes in the same buffer (GLSL reads them as five
 // uvec4 from word frame.nodeCount * 2 on), root first. Child slot i (0-7) has a box quantized
@@ -650,6 +667,8 @@ static_assert(sizeof(SphereLight) == 64 && offsetof(SphereLight, radius) == 12 &
               offsetof(SphereLight, spotDirection) == 32 && offsetof(SphereLight, cosOuter) == 44 &&
               offsetof(SphereLight, cosInner) == 48 &&
               offsetof(SphereLight, primitive) == 56);
+static_assert(sizeof(BvhPair) == 64 && offsetof(BvhPair, left) == 12 && offsetof(BvhPair, leafCount) == 28 &&
+              offsetof(BvhPair, rightMin) == 32 && offsetof(BvhPair, right) == 44 && offsetof(BvhPair, rightMax) == 48);
 static_assert(sizeof(PassPush) == 48 && offsetof(PassPush, countRays) == 12 && offsetof(PassPush, tileX) == 16 &&
               offsetof(PassPush, tileY) == 20 && offsetof(PassPush, tileWidth) == 24 && offsetof(PassPush, waveStride) == 32 &&
               offsetof(PassPush, waveBounce) == 36 && offsetof(PassPush, waveTailPaths) == 40);

@@ -11,6 +11,7 @@
 #include <span>
 
 #include "bvh/cache.h"
+#include "bvh/child_pairs.h"
 #include "bvh/sphere.h"
 #include "bvh/sprite.h"
 #include "bvh/triangle.h"
@@ -91,16 +92,15 @@ namespace {
 
 std::size_t binaryNodesUploaded(const SceneArrays& a) { return a.binaryNodesOnGpu ? a.nodes.size() : 0; }
 
-// The node buffer: the binary nodes (unless they stay on the host), then the wide ones
-// (lib/wide_bvh.glsl finds them at word nodeCount * 2, nodeCount being the binary nodes uploaded).
-// A WideNode is 80 bytes, two and a half binary nodes; the tail is padded.
-std::vector<shader::BvhNode> nodeBufferContents(const SceneArrays& a) {
+// The node buffer: the binary walk's records (bvh/child_pairs.h; unless the binary nodes stay on
+// the host), then the wide nodes (lib/wide_bvh.glsl finds them at uvec4 nodeCount * 4, nodeCount
+// being the binary records uploaded). A WideNode is 80 bytes, 1.25 records; the tail is padded.
+std::vector<shader::BvhPair> nodeBufferContents(const SceneArrays& a) {
     const std::size_t binary = binaryNodesUploaded(a);
-    if (a.wideNodes.empty()) return {a.nodes.begin(), a.nodes.begin() + std::ptrdiff_t(binary)};
     const std::size_t wideBytes = a.wideNodes.size() * sizeof(shader::WideNode);
-    std::vector<shader::BvhNode> out(binary + (wideBytes + sizeof(shader::BvhNode) - 1) / sizeof(shader::BvhNode));
-    std::memcpy(out.data(), a.nodes.data(), binary * sizeof(shader::BvhNode));
-    std::memcpy(reinterpret_cast<char*>(out.data() + binary), a.wideNodes.data(), wideBytes);
+    std::vector<shader::BvhPair> out(binary + (wideBytes + sizeof(shader::BvhPair) - 1) / sizeof(shader::BvhPair));
+    bvh::writeChildPairs(a.nodes, 0, std::span(out).first(binary));
+    if (wideBytes > 0) std::memcpy(reinterpret_cast<char*>(out.data() + binary), a.wideNodes.data(), wideBytes);
     return out;
 }
 
@@ -386,14 +386,14 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
 
 std::size_t deviceBytes(const SceneArrays& a) {
     auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
-    return binaryNodesUploaded(a) * sizeof(shader::BvhNode) + bytes(a.wideNodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.triUvs) + bytes(a.materials) + bytes(a.lightRefs) +
+    return binaryNodesUploaded(a) * sizeof(shader::BvhPair) + bytes(a.wideNodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.triUvs) + bytes(a.materials) + bytes(a.lightRefs) +
            bytes(a.lightNodes) + bytes(a.lightTree) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
            bytes(a.env.alias) + bytes(a.env.radiance) + bytes(a.instances);
 }
 
 GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& a)
     // The device's limits are checked before the first buffer is made (render/scene_limits.h).
-    : nodes((checkSceneFitsDevice(ctx, a), gpu::uploadStorageBuffer<shader::BvhNode>(ctx, commands, nodeBufferContents(a)))),
+    : nodes((checkSceneFitsDevice(ctx, a), gpu::uploadStorageBuffer<shader::BvhPair>(ctx, commands, nodeBufferContents(a)))),
       triVerts(gpu::uploadStorageBuffer<shader::TriVerts>(ctx, commands, a.triVerts)),
       triAttribs(gpu::uploadStorageBuffer<shader::TriAttribs>(ctx, commands, a.triAttribs)),
       triUvs(gpu::uploadStorageBuffer<shader::TriUvs>(ctx, commands, a.triUvs)),

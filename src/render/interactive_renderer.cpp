@@ -5,6 +5,7 @@
 #include <span>
 #include <utility>
 
+#include "bvh/child_pairs.h"
 #include "bvh/depth_boxes.h"
 #include "bvh/two_level.h"
 #include "core/error.h"
@@ -117,7 +118,7 @@ void InteractiveRenderer::loadScene(const Scene& scene, SceneArrays arrays, bool
     instancesPrev_ = gpu::uploadStorageBuffer<shader::Instance>(ctx_, commands_, arrays_.instances);
     const std::size_t topNodes = arrays_.nodes.size() - std::min<std::size_t>(arrays_.bottomNodeCount, arrays_.nodes.size());
     instanceStaging_ = gpu::Buffer(ctx_, 2 * arrays_.instances.size() * sizeof(shader::Instance) +
-                                             topNodes * sizeof(shader::BvhNode),
+                                             topNodes * sizeof(shader::BvhPair),
                                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryKind::HostVisible);
     lastFrameInstances_ = arrays_.instances;
     prevMatchesCurrent_ = true;
@@ -175,11 +176,14 @@ void InteractiveRenderer::uploadInstances(VkCommandBuffer cmd, bool moved) {
     const VkBufferCopy toPrev{0, 0, instanceBytes};
     vkCmdCopyBuffer(cmd, instanceStaging_.get(), instancesPrev_.get(), 1, &toPrev);
     if (moved) {
-        const VkDeviceSize topOffset = VkDeviceSize(arrays_.bottomNodeCount) * sizeof(shader::BvhNode);
-        const VkDeviceSize topBytes = (arrays_.nodes.size() - arrays_.bottomNodeCount) * sizeof(shader::BvhNode);
+        const std::size_t topNodes = arrays_.nodes.size() - arrays_.bottomNodeCount;
+        const VkDeviceSize topOffset = VkDeviceSize(arrays_.bottomNodeCount) * sizeof(shader::BvhPair);
+        const VkDeviceSize topBytes = topNodes * sizeof(shader::BvhPair);
         PN_CHECK(2 * instanceBytes + topBytes <= instanceStaging_.size() && topOffset + topBytes <= gpuScene_->nodes.size());
         std::memcpy(staging + instanceBytes, now.data(), instanceBytes);
-        std::memcpy(staging + 2 * instanceBytes, arrays_.nodes.data() + arrays_.bottomNodeCount, topBytes);
+        // The walk's records of the rebuilt top level (its children lie in it).
+        bvh::writeChildPairs(arrays_.nodes, arrays_.bottomNodeCount,
+                             std::span(reinterpret_cast<shader::BvhPair*>(staging + 2 * instanceBytes), topNodes));
         VkBufferCopy toInstances{instanceBytes, 0, instanceBytes};
         vkCmdCopyBuffer(cmd, instanceStaging_.get(), gpuScene_->instances.get(), 1, &toInstances);
         VkBufferCopy toNodes{2 * instanceBytes, topOffset, topBytes};

@@ -16,7 +16,9 @@ const char* const kFix = "use a smaller scene (fewer triangles, smaller textures
 }  // namespace
 
 std::vector<SceneBufferSize> sceneBufferSizes(const SceneArrays& a) {
-    return {{"BVH nodes", (a.binaryNodesOnGpu ? bytesOf(a.nodes) : 0) + bytesOf(a.wideNodes)},  // one buffer
+    // One buffer: the binary walk's records (a BvhPair per node), then the wide nodes.
+    const std::uint64_t binaryBytes = a.binaryNodesOnGpu ? std::uint64_t(a.nodes.size()) * sizeof(shader::BvhPair) : 0;
+    return {{"BVH nodes", binaryBytes + bytesOf(a.wideNodes)},
             {"triangle positions", bytesOf(a.triVerts)},
             {"triangle attributes", bytesOf(a.triAttribs)},
             {"texture coordinates", bytesOf(a.triUvs)},

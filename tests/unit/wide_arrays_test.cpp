@@ -38,7 +38,7 @@ TEST(WideArrays, OnlyTheWideWalkGetsTheWideTreeAndItAloneLeavesTheBinaryNodesOnT
     }
     EXPECT_EQ(hits, 100);
 
-    const std::size_t nodeBytes = binary.nodes.size() * sizeof(shader::BvhNode);
+    const std::size_t nodeBytes = binary.nodes.size() * sizeof(shader::BvhPair);  // the binary walk's records
     const std::size_t wideBytes = wide.wideNodes.size() * sizeof(shader::WideNode);
     EXPECT_EQ(deviceBytes(wide), deviceBytes(binary) - nodeBytes + wideBytes);
     EXPECT_EQ(sumOfBufferSizes(wide), deviceBytes(wide));
