@@ -4,7 +4,6 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -80,37 +79,22 @@ public:
           threads_(hardwareThreads()),
           sah_(options) {}
 
-    // A share of the build run as one unit: the subtree from rootSlot less the subtrees it
-    // handed on as tasks of their own. Task 0 is the root's.
-    struct Task {
-        std::uint32_t rootSlot = 0;
-        std::uint32_t parent = 0;  // the task that handed this one on
-        std::uint32_t nodes = 0;   // written by this task itself
-        std::uint32_t total = 0;   // in its whole subtree, handed-on tasks included (compact())
+    // The slots one task writes form runs of consecutive slots: a task writes in increasing slot
+    // order and jumps only over the reservation of a subtree it handed on (which another task
+    // fills, maybe not completely). compact() closes the gaps between the runs.
+    struct Writer {
+        std::uint32_t begin = 0, next = 0;  // the open run: [begin, next)
     };
 
-    std::uint32_t newTask(std::uint32_t rootSlot, std::uint32_t parent) {
-        std::lock_guard lock(tasksMutex_);
-        tasks_.push_back({rootSlot, parent, 0, 0});
-        return std::uint32_t(tasks_.size() - 1);
-    }
-    void finishTask(std::uint32_t task, std::uint32_t nodes) {
-        std::lock_guard lock(tasksMutex_);
-        tasks_[task].nodes = nodes;
-    }
-
     // Writes the subtree of `range` (its primitives in refs_[side]) depth-first from `slot` and
-    // returns one past the last slot it may use; adds the nodes written to `written`. A subtree
-    // over m primitives has at most 2m - 1 nodes, so when the right child is handed to another
-    // thread its slot is known before the left subtree is built: slot + 2 * left size. Such
-    // reservations leave gaps that compact() closes; without tasks the subtree is dense.
-    // The node that hands on its right child says so (triCount kHandedOn, firstOrRight: the
-    // child's task) until compact() links it.
+    // returns one past the last slot it may use. A subtree over m primitives has at most 2m - 1
+    // nodes, so when the right child is handed to another thread its slot is known before the
+    // left subtree is built: slot + 2 * left size. Every right link is written as the child's
+    // slot; compact() maps slots to final indices.
     std::uint32_t subtree(const Range& range, int depth, int side, std::uint32_t slot,
-                          TaskGroup* tasks, std::uint32_t task, std::uint32_t& written) {
-        shader::BvhNode& node = slots_[slot];
+                          TaskGroup* tasks, Writer& writer) {
+        shader::BvhNode& node = write(writer, slot);
         node = leaf(range);
-        ++written;
         Range left, right;
         if (!split(range, depth, side, left, right)) {
             for (std::uint32_t i = range.begin; i < range.end; ++i)
@@ -121,85 +105,102 @@ public:
         node.triCount = 0;
         if (tasks && range.size() >= kParallelSubtrees) {
             const std::uint32_t rightSlot = slot + 2 * left.size();
-            const std::uint32_t child = newTask(rightSlot, task);
-            node.triCount = kHandedOn;
-            node.firstOrRight = child;
-            tasks->spawn([this, right, depth, side, rightSlot, tasks, child] {
-                std::uint32_t nodes = 0;
-                subtree(right, depth + 1, 1 - side, rightSlot, tasks, child, nodes);
-                finishTask(child, nodes);
+            node.firstOrRight = rightSlot;
+            tasks->spawn([this, right, depth, side, rightSlot, tasks] {
+                Writer child{rightSlot, rightSlot};
+                subtree(right, depth + 1, 1 - side, rightSlot, tasks, child);
+                closeRun(child);
             });
-            subtree(left, depth + 1, 1 - side, slot + 1, tasks, task, written);
+            subtree(left, depth + 1, 1 - side, slot + 1, tasks, writer);
             return slot + 2 * range.size() - 1;
         }
-        const std::uint32_t rightSlot =
-            subtree(left, depth + 1, 1 - side, slot + 1, tasks, task, written);
+        const std::uint32_t rightSlot = subtree(left, depth + 1, 1 - side, slot + 1, tasks, writer);
         node.firstOrRight = rightSlot;
-        return subtree(right, depth + 1, 1 - side, rightSlot, tasks, task, written);
+        return subtree(right, depth + 1, 1 - side, rightSlot, tasks, writer);
     }
 
-    // Copies the nodes into `out` without the gaps, in depth-first order. Each task's subtree
-    // size follows from the counts of the tasks (children are created after their parents), so
-    // every task knows where its nodes go as soon as the task that handed it on has reached it,
-    // and the tasks copy in parallel when `pool` is given.
-    void compact(std::vector<shader::BvhNode>& out, TaskGroup* pool) {
-        for (Task& t : tasks_) t.total = t.nodes;
-        for (std::size_t id = tasks_.size(); id-- > 1;)
-            tasks_[tasks_[id].parent].total += tasks_[id].total;
-        reserveHuge(out, tasks_[0].total);
-        if (tasks_.size() == 1) {
+    // Builds the whole tree from slot 0 (on the group's threads when `tasks` is given).
+    void buildAll(const Range& root, TaskGroup* tasks) {
+        Writer writer;
+        auto body = [&] {
+            subtree(root, 1, 0, 0, tasks, writer);
+            closeRun(writer);
+        };
+        if (tasks)
+            tasks->run(body);
+        else
+            body();
+    }
+
+    // Copies the nodes into `out` without the gaps, in depth-first order (which is slot order:
+    // a handed-on subtree's reservation lies after everything its left sibling may use). Each
+    // run moves by one offset, so the copy is a parallel streaming pass; only right links that
+    // cross a gap need a search for their run.
+    void compact(std::vector<shader::BvhNode>& out, bool parallel) {
+        std::sort(runs_.begin(), runs_.end(),
+                  [](const Run& a, const Run& b) { return a.begin < b.begin; });
+        std::uint32_t total = 0;
+        for (Run& r : runs_) {
+            r.dest = total;
+            total += r.end - r.begin;
+        }
+        PN_CHECK(runs_.front().begin == 0);
+        reserveHuge(out, total);
+        if (runs_.size() == 1) {
             // Nothing was handed on, so there are no gaps: the slots from 0 are the final array,
-            // links included. A copy spares the output its zero-fill and the walk.
-            out.assign(slots_, slots_ + tasks_[0].total);
+            // links included. A copy spares the output its zero-fill.
+            out.assign(slots_, slots_ + total);
             return;
         }
-        if (pool) prefault(out.data(), tasks_[0].total * sizeof(shader::BvhNode));
-        out.resize(tasks_[0].total);
-        if (pool)
-            pool->run([&] { place(0, 0, out.data(), pool); });
-        else
-            place(0, 0, out.data(), nullptr);
+        if (parallel) prefault(out.data(), std::size_t(total) * sizeof(shader::BvhNode));
+        out.resize(total);
+        parallelFor(runs_.size(), 1, [&](std::size_t lo, std::size_t hi) {
+            for (std::size_t r = lo; r < hi; ++r) copyRun(runs_[r], out.data());
+        });
     }
 
 private:
-    static constexpr std::uint32_t kHandedOn = std::numeric_limits<std::uint32_t>::max();
+    struct Run {
+        std::uint32_t begin = 0, end = 0;  // slots
+        std::uint32_t dest = 0;            // final index of slot `begin`
+    };
 
-    // Copies task `id`'s nodes to out[first...]: a walk from its root visits its slots in
-    // increasing order, writes each node at the next index and links each right child to where
-    // it lands; a handed-on child's whole subtree is skipped over and placed by its own task.
-    void place(std::uint32_t id, std::uint32_t first, shader::BvhNode* out,
-               TaskGroup* pool) const {
-        struct Pending {
-            std::uint32_t slot;    // or the task, when handedOn
-            std::uint32_t parent;  // index whose right link points here, or none
-            bool handedOn;
-        };
-        constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-        std::vector<Pending> stack{{tasks_[id].rootSlot, kNone, false}};
-        std::uint32_t next = first;
-        while (!stack.empty()) {
-            const Pending p = stack.back();
-            stack.pop_back();
-            if (p.parent != kNone) out[p.parent].firstOrRight = next;
-            if (p.handedOn) {
-                const std::uint32_t child = p.slot, at = next;
-                next += tasks_[child].total;
-                if (pool)
-                    pool->spawn([this, child, at, out, pool] { place(child, at, out, pool); });
-                else
-                    place(child, at, out, nullptr);
-                continue;
-            }
-            shader::BvhNode node = slots_[p.slot];
-            const std::uint32_t index = next++;
-            if (node.triCount == kHandedOn || node.triCount == 0) {
-                stack.push_back({node.firstOrRight, index, node.triCount == kHandedOn});
-                stack.push_back({p.slot + 1, kNone, false});
-                node.triCount = 0;
-            }
-            out[index] = node;
+    shader::BvhNode& write(Writer& writer, std::uint32_t slot) {
+        if (slot != writer.next) {
+            closeRun(writer);
+            writer.begin = slot;
         }
-        PN_CHECK(next - first == tasks_[id].total);
+        writer.next = slot + 1;
+        return slots_[slot];
+    }
+    void closeRun(const Writer& writer) {
+        if (writer.next == writer.begin) return;
+        std::lock_guard lock(runsMutex_);
+        runs_.push_back({writer.begin, writer.next, 0});
+    }
+
+    // Final index of a written slot (runs_ sorted).
+    std::uint32_t finalIndex(std::uint32_t slot) const {
+        auto it = std::upper_bound(runs_.begin(), runs_.end(), slot,
+                                   [](std::uint32_t s, const Run& r) { return s < r.begin; });
+        PN_CHECK(it != runs_.begin() && slot < std::prev(it)->end);
+        --it;
+        return slot - it->begin + it->dest;
+    }
+
+    // Right links point forward, mostly into the same run (the exceptions span a reservation:
+    // the node that handed a subtree on, and its ancestors in the same task).
+    void copyRun(const Run& run, shader::BvhNode* out) const {
+        const std::uint32_t shift = run.begin - run.dest;
+        for (std::uint32_t i = run.begin; i < run.end; ++i) {
+            shader::BvhNode node = slots_[i];
+            const bool interior = node.triCount == 0;
+            if (interior && node.firstOrRight >= run.end)
+                node.firstOrRight = finalIndex(node.firstOrRight);
+            else
+                node.firstOrRight -= interior ? shift : 0;
+            out[i - shift] = node;
+        }
     }
 
     shader::BvhNode leaf(const Range& range) const {
@@ -277,8 +278,8 @@ private:
     std::uint32_t total_;
     unsigned threads_;
     sah::SahBinning sah_;
-    std::mutex tasksMutex_;
-    std::deque<Task> tasks_;  // a deque: references stay valid as tasks are added
+    std::mutex runsMutex_;
+    std::vector<Run> runs_;
 };
 
 }  // namespace
@@ -336,19 +337,13 @@ Bvh buildFrom(std::size_t count, RefOf&& refOf, const BuildOptions& options) {
     // copies the nodes out without the gaps.
     BigBuffer<shader::BvhNode> slots(2 * count - 1);
     Builder builder(refs, bvh.primOrder.data(), slots.data(), options);
-    const std::uint32_t rootTask = builder.newTask(0, 0);
-    auto buildRoot = [&](TaskGroup* tasks) {
-        std::uint32_t nodes = 0;
-        builder.subtree(root, 1, 0, 0, tasks, rootTask, nodes);
-        builder.finishTask(rootTask, nodes);
-    };
     if (count >= kParallelSubtrees && hardwareThreads() > 1) {
         TaskGroup tasks;
-        tasks.run([&] { buildRoot(&tasks); });
-        builder.compact(bvh.nodes, &tasks);
+        builder.buildAll(root, &tasks);
+        builder.compact(bvh.nodes, true);
     } else {
-        buildRoot(nullptr);
-        builder.compact(bvh.nodes, nullptr);
+        builder.buildAll(root, nullptr);
+        builder.compact(bvh.nodes, false);
     }
     return bvh;
 }
