@@ -114,9 +114,19 @@ public:
             subtree(left, depth + 1, 1 - side, slot + 1, tasks, writer);
             return slot + 2 * range.size() - 1;
         }
-        const std::uint32_t rightSlot = subtree(left, depth + 1, 1 - side, slot + 1, tasks, writer);
+        const std::uint32_t rightSlot = child(left, depth + 1, 1 - side, slot + 1, tasks, writer);
         node.firstOrRight = rightSlot;
-        return subtree(right, depth + 1, 1 - side, rightSlot, tasks, writer);
+        return child(right, depth + 1, 1 - side, rightSlot, tasks, writer);
+    }
+
+    // subtree(), but a single primitive, which split() always leaves alone, is written here
+    // without the call: most leaves of a fine tree hold one.
+    std::uint32_t child(const Range& range, int depth, int side, std::uint32_t slot,
+                        TaskGroup* tasks, Writer& writer) {
+        if (range.size() != 1) return subtree(range, depth, side, slot, tasks, writer);
+        write(writer, slot) = leaf(range);
+        primOrder_[range.begin] = refs_[side][range.begin].id();
+        return slot + 1;
     }
 
     // Builds the whole tree from slot 0 (on the group's threads when `tasks` is given).
