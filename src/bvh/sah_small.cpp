@@ -89,10 +89,19 @@ bool SahBinning::splitSmall(const PrimRef* src, PrimRef* dst, const Range& range
             axis = a;
         }
     if (axis < 0 || !(best < stopCost)) return false;
-    for (int i = 0; i < n; ++i) dst[range.begin + i] = src[range.begin + order[axis][i]];
-    const std::uint32_t mid = range.begin + std::uint32_t(bestLeft[axis]);
-    left = gather(dst, range.begin, mid);
-    right = gather(dst, mid, range.end);
+    // The children's bounds come from the arrays above rather than a gather() over dst: the
+    // same minima and maxima, without loading the primitives again.
+    const int k = bestLeft[axis];
+    const std::uint32_t mid = range.begin + std::uint32_t(k);
+    left = {range.begin, mid, {}, {}};
+    right = {mid, range.end, {}, {}};
+    for (int i = 0; i < n; ++i) {
+        const int p = order[axis][i];
+        dst[range.begin + i] = src[range.begin + p];
+        Range& side = i < k ? left : right;
+        side.bounds.grow(lo[p], hi[p]);
+        side.centroids.grow(c[p]);
+    }
     return true;
 }
 
