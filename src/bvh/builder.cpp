@@ -149,8 +149,10 @@ public:
     void compact(std::vector<shader::BvhNode>& out, bool parallel) {
         std::sort(runs_.begin(), runs_.end(),
                   [](const Run& a, const Run& b) { return a.begin < b.begin; });
-        std::uint32_t total = 0;
+        std::uint32_t total = 0, end = 0;
         for (Run& r : runs_) {
+            PN_CHECK(r.begin >= end);  // every slot written once
+            end = r.end;
             r.dest = total;
             total += r.end - r.begin;
         }
