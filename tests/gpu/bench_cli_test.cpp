@@ -43,6 +43,18 @@ TEST_F(BenchCliTest, ViewerCameraMotionsRunAndBadOnesAreUsageErrors) {
     expectOneLineError(run(std::string(kTinyViewer) + " --denoise 9"), 2, "--denoise");
 }
 
+// The wavefront's tuning variables are checked like flags: a bad value is one line and exit 2.
+TEST_F(BenchCliTest, ABadWavefrontTailThresholdIsAUsageError) {
+    const std::string render = "render cornell --width 16 --height 12 --spp 1 -o a.png";
+    expectOneLineError(run(render, "PENUMBRA_TRACE_KERNEL=wavefront PENUMBRA_WAVE_TAIL_PATHS=lots"), 2,
+                       "PENUMBRA_WAVE_TAIL_PATHS");
+    expectOneLineError(run(render, "PENUMBRA_TRACE_KERNEL=wavefront PENUMBRA_WAVE_TAIL_PATHS=-5"), 2,
+                       "PENUMBRA_WAVE_TAIL_PATHS");
+    EXPECT_FALSE(fs::exists(dir / "a.png"));  // nothing written by a refused run
+    EXPECT_EQ(run(render, "PENUMBRA_TRACE_KERNEL=wavefront PENUMBRA_WAVE_TAIL_PATHS=0").exitCode, 0);
+    EXPECT_TRUE(fs::exists(dir / "a.png"));
+}
+
 // The ray benchmark through the wide BVH (what the lead times on the GPU), and `info` reporting
 // its size and the memory per triangle.
 TEST_F(BenchCliTest, RayBenchRunsTheWideBvhAndInfoReportsIt) {
