@@ -1,9 +1,9 @@
 // The wavefront trace pass's working state (render/passes/wavefront_pass.h): every path of a tile
 // has a slot; its state, its closest hit and its queued shadow ray live in buffers between the
 // kernels (wave_start, wave_extend, wave_shade, wave_shadow, wave_tail, wave_finish), so that
-// each kernel holds only what its own step needs. Fields are stored field-major (field * stride + slot), so
-// a subgroup's loads of one field are contiguous. Everything is stored as uint bits: moves of
-// integers are exact, whatever the values. Include after lib/path.glsl.
+// each kernel holds only what its own step needs. Fields are stored field-major (field * stride
+// + slot), so a subgroup's loads of one field are contiguous. Everything is stored as uint bits:
+// moves of integers are exact, whatever the values. Include after lib/path.glsl.
 #ifndef PN_WAVE_STATE_GLSL
 #define PN_WAVE_STATE_GLSL
 

@@ -191,10 +191,11 @@ PN_STRUCT(BvhPair) {
 };
 
 // Compressed 8-wide BVH node (the CWBVH layout of Ylitie, Karras and Laine 2017), 80 bytes.
-// Wide nodes are uploaded after the binary nodes in the same buffer (GLSL reads them as five
-// uvec4 from word frame.nodeCount * 2 on), root first. Child slot i (0-7) has a box quantized
-// to 8 bits per plane: lo = origin + q * 2^e, with the three exponents stored as float exponent
-// bits so the shader builds 2^e with one shift. Its meta byte says what the slot holds:
+// Wide nodes are uploaded after the binary walk's records (BvhPair) in the same buffer (GLSL
+// reads them as five uvec4 from uvec4 frame.nodeCount * 4 on), root first. Child slot i (0-7) has
+// a box quantized to 8 bits per plane: lo = origin + q * 2^e, with the three exponents stored as
+// float exponent bits so the shader builds 2^e with one shift. Its meta byte says what the slot
+// holds:
 //   0                          empty
 //   001 11sss (0x38 | slot)    an interior child: node childBase + (interior slots below it)
 //   ccc ooooo                  a leaf: primitives primBase + o, o + 1, ... with ccc = 1, 3 or 7

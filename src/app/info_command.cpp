@@ -74,7 +74,7 @@ void printScene(const std::string& name, const std::string& map, const Environme
     std::printf("  gpu memory (--accel %s): %zu bytes (%.1f per triangle)\n", accelName(accel), gpuBytes,
                 tris ? double(gpuBytes) / double(tris) : 0.0);
     // The node array each walk reads, the hot triangle array (TriVerts) and the cold one.
-    const double binaryBytes = arrays.binaryNodesOnGpu ? double(arrays.nodes.size() * sizeof(shader::BvhPair)) : 0.0;
+    const double binaryBytes = double(binaryWalkBytes(arrays));
     const double wideBytes = double(arrays.wideNodes.size() * sizeof(shader::WideNode));
     const double hotBytes = double(arrays.triVerts.size() * sizeof(shader::TriVerts));
     const double coldBytes = double(arrays.triAttribs.size() * sizeof(shader::TriAttribs));

@@ -384,9 +384,11 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
     return out;
 }
 
+std::size_t binaryWalkBytes(const SceneArrays& a) { return binaryNodesUploaded(a) * sizeof(shader::BvhPair); }
+
 std::size_t deviceBytes(const SceneArrays& a) {
     auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
-    return binaryNodesUploaded(a) * sizeof(shader::BvhPair) + bytes(a.wideNodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.triUvs) + bytes(a.materials) + bytes(a.lightRefs) +
+    return binaryWalkBytes(a) + bytes(a.wideNodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.triUvs) + bytes(a.materials) + bytes(a.lightRefs) +
            bytes(a.lightNodes) + bytes(a.lightTree) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
            bytes(a.env.alias) + bytes(a.env.radiance) + bytes(a.instances);
 }

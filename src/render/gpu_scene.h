@@ -28,6 +28,9 @@ SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& option
 
 // Bytes the arrays take once uploaded (what GpuScene::deviceBytes reports after the upload).
 std::size_t deviceBytes(const SceneArrays& arrays);
+// The part of them that is the binary walk's records (a BvhPair per node; 0 when the binary
+// nodes stay on the host).
+std::size_t binaryWalkBytes(const SceneArrays& arrays);
 
 class GpuScene {
 public:

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "gpu/limits.h"
+#include "render/gpu_scene.h"
 
 namespace penumbra {
 namespace {
@@ -16,9 +17,7 @@ const char* const kFix = "use a smaller scene (fewer triangles, smaller textures
 }  // namespace
 
 std::vector<SceneBufferSize> sceneBufferSizes(const SceneArrays& a) {
-    // One buffer: the binary walk's records (a BvhPair per node), then the wide nodes.
-    const std::uint64_t binaryBytes = a.binaryNodesOnGpu ? std::uint64_t(a.nodes.size()) * sizeof(shader::BvhPair) : 0;
-    return {{"BVH nodes", binaryBytes + bytesOf(a.wideNodes)},
+    return {{"BVH nodes", binaryWalkBytes(a) + bytesOf(a.wideNodes)},  // one buffer
             {"triangle positions", bytesOf(a.triVerts)},
             {"triangle attributes", bytesOf(a.triAttribs)},
             {"texture coordinates", bytesOf(a.triUvs)},
