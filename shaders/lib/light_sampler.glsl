@@ -86,11 +86,13 @@ float treeNodeImportance(LightTreeNode node, vec3 p, vec3 n) {
                                           node.cosThetaE, (node.childOrLight & PN_LIGHT_NODE_TWO_SIDED) != 0u), p, n);
 }
 
-// The light tree's root and its importance at p; 0 (and no root) when the scene has no tree.
-float lightTreeRoot(vec3 p, vec3 n, out LightTreeNode root) {
+// The light tree's importance at p and its root's childOrLight; 0 when the scene has no tree.
+float lightTreeRoot(vec3 p, vec3 n, out uint root) {
+    root = 0u;
     if (frame.lightNodeCount == 0u) return 0.0;
-    root = lightTree[0];
-    return treeNodeImportance(root, p, n);
+    LightTreeNode node = lightTree[0];
+    root = node.childOrLight;
+    return treeNodeImportance(node, p, n);
 }
 
 // A directional light's illuminance times the best cosine at the surface over its disk.
@@ -116,18 +118,22 @@ float totalLightImportance(float tree, vec3 p, vec3 n) {
     return total;
 }
 
-// One level of the walk: the children of `node` (an interior node at `depth`, the root's 0) and
-// the probability of the first; -1 when neither can light p. The first levels choose by the
-// children's importance at p; deeper, where clusters are small, by their power alone, which
-// spares two importance bounds per level (most of a pick's cost). pickLight and lightPickPmf
-// choose alike at every node, so the pmf stays exact.
-float firstChildProbability(LightTreeNode node, vec3 p, vec3 n, uint depth, out LightTreeNode first,
-                            out LightTreeNode second) {
-    uint record = node.childOrLight & PN_LIGHT_NODE_INDEX;
-    first = lightTree[record];
-    second = lightTree[record + 1u];
-    if (depth >= PN_LIGHT_TREE_IMPORTANCE_LEVELS) return first.phi / (first.phi + second.phi);
-    float a = treeNodeImportance(first, p, n), b = treeNodeImportance(second, p, n);
+// One level of the walk: the children of an interior node whose childOrLight is `node` (at
+// `depth`, the root's 0), their own childOrLight words, and the probability of the first; -1 when
+// neither can light p. The first levels choose by the children's importance at p; deeper, where
+// clusters are small, by their power alone, which spares two importance bounds per level (most of
+// a pick's cost). pickLight and lightPickPmf choose alike at every node, so the pmf stays exact.
+// The walk carries one word per node rather than whole nodes, and each child is read, weighed and
+// dropped in turn, which keeps the shading kernel's registers down.
+float firstChildProbability(uint node, vec3 p, vec3 n, uint depth, out uint first, out uint second) {
+    uint record = node & PN_LIGHT_NODE_INDEX;
+    first = lightTree[record].childOrLight;
+    second = lightTree[record + 1u].childOrLight;
+    if (depth >= PN_LIGHT_TREE_IMPORTANCE_LEVELS) {
+        float phiFirst = lightTree[record].phi;
+        return phiFirst / (phiFirst + lightTree[record + 1u].phi);
+    }
+    float a = treeNodeImportance(lightTree[record], p, n), b = treeNodeImportance(lightTree[record + 1u], p, n);
     return a + b > 0.0 ? a / (a + b) : -1.0;
 }
 
@@ -147,7 +153,7 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
         umulExtended(rngNextUint(rng), frame.lightRefCount, k, low);  // floor(bits * count / 2^32)
         return LightPick(k, 1.0 / float(frame.lightRefCount));
     }
-    LightTreeNode node;
+    uint node;
     float tree = lightTreeRoot(p, n, node);
     float total = totalLightImportance(tree, p, n);
     if (!(total > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
@@ -163,9 +169,8 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
     if (!(tree > 0.0)) return pick;  // rounding carried x past the last top-level light
     pick = LightPick(PN_NO_LIGHT, tree / total);
     for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
-        if ((node.childOrLight & PN_LIGHT_NODE_LEAF) != 0u)
-            return LightPick(node.childOrLight & PN_LIGHT_NODE_INDEX, pick.pmf);
-        LightTreeNode first, second;
+        if ((node & PN_LIGHT_NODE_LEAF) != 0u) return LightPick(node & PN_LIGHT_NODE_INDEX, pick.pmf);
+        uint first, second;
         float p1 = firstChildProbability(node, p, n, depth, first, second);
         if (p1 < 0.0) break;
         if (rngNext(rng) < p1) {
@@ -182,7 +187,7 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
 // The probability that pickLight(p, n) returns `ref`.
 float lightPickPmf(uint ref, vec3 p, vec3 n) {
     if (frame.lightPickUniform != 0u) return 1.0 / float(frame.lightRefCount);
-    LightTreeNode node;
+    uint node;
     float tree = lightTreeRoot(p, n, node);
     float total = totalLightImportance(tree, p, n);
     if (!(total > 0.0)) return 0.0;
@@ -190,8 +195,8 @@ float lightPickPmf(uint ref, vec3 p, vec3 n) {
     float pmf = tree / total;
     LightRef r = lights[ref];
     for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
-        if ((node.childOrLight & PN_LIGHT_NODE_LEAF) != 0u) return (node.childOrLight & PN_LIGHT_NODE_INDEX) == ref ? pmf : 0.0;
-        LightTreeNode first, second;
+        if ((node & PN_LIGHT_NODE_LEAF) != 0u) return (node & PN_LIGHT_NODE_INDEX) == ref ? pmf : 0.0;
+        uint first, second;
         float p1 = firstChildProbability(node, p, n, depth, first, second);
         if (p1 < 0.0) return 0.0;
         bool takeSecond = (depth < 32u ? (r.trailLo >> depth) : (r.trailHi >> (depth - 32u))) % 2u != 0u;
