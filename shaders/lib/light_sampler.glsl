@@ -13,7 +13,11 @@
 // cost (on the H200, about 0.6 of DOOM1 E1M1's 1.5 ms shading pass at 1080p), so only the first
 // PN_LIGHT_TREE_IMPORTANCE_LEVELS levels evaluate them; below, clusters are small and children
 // are chosen by power. The tree's nodes (LightTreeNode) carry what the bound needs precomputed,
-// and the bound spends as few square roots and divisions as it can.
+// and the bound spends as few square roots and divisions as it can. Where the tree is deeper than
+// those levels and the scene has a light grid (render/light_grid.h), the importance levels are
+// not walked at all: the cell that holds the point and the bin of its normal hold an alias table
+// over the clusters on that level, weighed by the same bound widened to the whole cell and bin;
+// MIS reads the drawn cluster's probability from the same table.
 #ifndef PN_LIGHT_SAMPLER_GLSL
 #define PN_LIGHT_SAMPLER_GLSL
 
@@ -26,54 +30,7 @@
 #include "lib/mis.glsl"
 #include "lib/offset.glsl"
 #include "lib/bvh.glsl"
-
-// cos(max(0, a - b)) and sin(max(0, a - b)) from the sines and cosines of angles a, b in [0, pi].
-float cosSubClamped(float sinA, float cosA, float sinB, float cosB) { return cosA > cosB ? 1.0 : cosA * cosB + sinA * sinB; }
-float sinSubClamped(float sinA, float cosA, float sinB, float cosB) { return cosA > cosB ? 0.0 : sinA * cosB - cosA * sinB; }
-
-float sinFromCos(float c) { return sqrt(max(0.0, 1.0 - c * c)); }
-
-
-// Bounds of a set of lights: a sphere holding them, their power, and the cones of their normals
-// (thetaO about axis) and of their emission beyond a normal (thetaE).
-struct LightCluster {
-    vec3 center;
-    float radius;
-    vec3 axis;
-    float phi;
-    float cosThetaO, sinThetaO, cosThetaE;
-    bool twoSided;
-};
-
-// How much the lights of a cluster could bring to a surface at p with normal n (n = 0: no
-// surface): zero only where they cannot light p at all.
-float clusterImportance(LightCluster c, vec3 p, vec3 n) {
-    vec3 toP = p - c.center;
-    float dist2 = dot(toP, toP);
-    float invDist = inversesqrt(dist2);
-    vec3 wi = dist2 > 0.0 ? toP * invDist : c.axis;
-    float cosW = dot(c.axis, wi);
-    if (c.twoSided) cosW = abs(cosW);
-    float sinW = sinFromCos(cosW);
-    // The cone from p that holds the sphere; every direction from inside it.
-    bool outside = dist2 > c.radius * c.radius;
-    float sinB = outside ? c.radius * invDist : 0.0;
-    float cosB = outside ? sqrt(max(0.0, 1.0 - sinB * sinB)) : -1.0;
-    // The smallest angle between an emitting normal and a direction toward p, then the emission
-    // spread beyond it.
-    float cosX = cosSubClamped(sinW, cosW, c.sinThetaO, c.cosThetaO);
-    float sinX = sinSubClamped(sinW, cosW, c.sinThetaO, c.cosThetaO);
-    float cosP = cosSubClamped(sinX, cosX, sinB, cosB);
-    if (cosP <= c.cosThetaE) return 0.0;
-    // Within the bounds the squared distance says little; pbrt-v4 floors it at half the diagonal.
-    float importance = c.phi * cosP / max(dist2, c.radius);
-    if (n != vec3(0.0)) {
-        // The cosine at the surface, either side (transmission), bounded over the sphere's cone.
-        float cosI = abs(dot(wi, n));
-        importance *= cosSubClamped(sinFromCos(cosI), cosI, sinB, cosB);
-    }
-    return max(importance, 0.0);
-}
+#include "shared/light_importance.h"
 
 float lightNodeImportance(LightNode node, vec3 p, vec3 n) {
     vec3 halfDiagonal = 0.5 * (node.boundsMax - node.boundsMin);
@@ -137,6 +94,42 @@ float firstChildProbability(uint node, vec3 p, vec3 n, uint depth, out uint firs
     return a + b > 0.0 ? a / (a + b) : -1.0;
 }
 
+// The light grid (render/light_grid.h): the words after the tree's records in its buffer.
+layout(std430, set = 0, binding = PN_BINDING_LIGHT_TREE) readonly buffer LightGridBuffer { uint lightGrid[]; };
+
+// The first word of the grid's table for the cell that holds p and the bin of normal n; PN_NO_HIT
+// where the walk weighs the tree's first levels itself: no grid, no surface, or p off the grid.
+uint lightGridTable(vec3 p, vec3 n) {
+    uint base = frame.lightGridOffset;
+    if (!PN_HAS(PN_FEATURE_LIGHT_GRID) || base == 0u) return PN_NO_HIT;
+    vec3 origin = uintBitsToFloat(uvec3(lightGrid[base], lightGrid[base + 1u], lightGrid[base + 2u]));
+    uint table = lightGridTableIndex((p - origin) * uintBitsToFloat(lightGrid[base + 3u]), lightGrid[base + 4u],
+                                     lightGrid[base + 5u], lightGrid[base + 6u], n);
+    return table == PN_NO_HIT ? PN_NO_HIT : base + PN_LIGHT_GRID_TABLES + table * 2u * lightGrid[base + 7u];
+}
+
+// A grid table entry's probability: its mass over the table's.
+float lightGridProbability(uint mass, uint clusters) { return float(mass) / float(clusters << PN_LIGHT_GRID_MASS_BITS); }
+
+// A cluster drawn from a grid table (Vose's alias method, on integers: the probability drawn is
+// exactly the mass the table stores); pmf is multiplied by its probability.
+uint pickGridCluster(uint table, inout float pmf, inout uint rng) {
+    uint clusters = lightGrid[frame.lightGridOffset + 7u];
+    uint slot, low;
+    umulExtended(rngNextUint(rng), clusters, slot, low);  // floor(bits * clusters / 2^32)
+    uint entry = lightGrid[table + 2u * slot];
+    uint coin = rngNextUint(rng) >> (32u - PN_LIGHT_GRID_MASS_BITS);
+    uint cluster = coin < (entry & 0x1ffffu) ? slot : entry >> 17;
+    pmf *= lightGridProbability(lightGrid[table + 2u * cluster + 1u], clusters);
+    return cluster;
+}
+
+// Where the walk goes on below a grid cluster: its node word and level.
+uvec2 lightGridCluster(uint cluster) {
+    uint at = frame.lightGridOffset + PN_LIGHT_GRID_CLUSTERS + 2u * cluster;
+    return uvec2(lightGrid[at], lightGrid[at + 1u]);
+}
+
 struct LightPick {
     uint ref;   // LightRef index; PN_NO_LIGHT: no light can reach p
     float pmf;  // probability of this pick at p
@@ -168,7 +161,15 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
     }
     if (!(tree > 0.0)) return pick;  // rounding carried x past the last top-level light
     pick = LightPick(PN_NO_LIGHT, tree / total);
-    for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
+    uint depth = 0u;
+    uint table = lightGridTable(p, n);
+    if (table != PN_NO_HIT) {
+        uvec2 cluster = lightGridCluster(pickGridCluster(table, pick.pmf, rng));
+        if (!(pick.pmf > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
+        node = cluster.x;
+        depth = cluster.y;
+    }
+    for (; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
         if ((node & PN_LIGHT_NODE_LEAF) != 0u) return LightPick(node & PN_LIGHT_NODE_INDEX, pick.pmf);
         uint first, second;
         float p1 = firstChildProbability(node, p, n, depth, first, second);
@@ -194,7 +195,17 @@ float lightPickPmf(uint ref, vec3 p, vec3 n) {
     if (ref < frame.topLightCount) return topLightImportance(ref, p, n) / total;
     float pmf = tree / total;
     LightRef r = lights[ref];
-    for (uint depth = 0u; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
+    uint depth = 0u;
+    uint table = lightGridTable(p, n);
+    if (table != PN_NO_HIT) {
+        uint base = frame.lightGridOffset;
+        uint index = lightGrid[base + PN_LIGHT_GRID_PREFIXES + (r.trailLo & (PN_LIGHT_GRID_MAX_CLUSTERS - 1u))];
+        pmf *= lightGridProbability(lightGrid[table + 2u * index + 1u], lightGrid[base + 7u]);
+        uvec2 cluster = lightGridCluster(index);
+        node = cluster.x;
+        depth = cluster.y;
+    }
+    for (; depth < PN_LIGHT_TREE_MAX_DEPTH; ++depth) {
         if ((node & PN_LIGHT_NODE_LEAF) != 0u) return (node & PN_LIGHT_NODE_INDEX) == ref ? pmf : 0.0;
         uint first, second;
         float p1 = firstChildProbability(node, p, n, depth, first, second);

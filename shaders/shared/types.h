@@ -87,7 +87,8 @@ using namespace penumbra::gpu_types;
 #define PN_FEATURE_SKY_PORTALS 512u // materials that show the environment (PN_MATERIAL_SKY_PORTAL)
 #define PN_FEATURE_INSTANCES 1024u // a two-level BVH (instances); without it the flat walk carries none of that code
 #define PN_FEATURE_WIDE_BVH 2048u  // --accel wide (lib/wide_bvh.glsl); other kernels carry none of its code
-#define PN_FEATURE_ALL 0xfffu    // every feature above
+#define PN_FEATURE_LIGHT_GRID 4096u // light picks from the light grid (render/light_grid.h); without one, none of its code
+#define PN_FEATURE_ALL 0x1fffu   // every feature above
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic
@@ -155,6 +156,20 @@ using namespace penumbra::gpu_types;
 // The light-tree walk weighs children by their importance at the shading point on its first
 // levels, below them by power alone (lib/light_sampler.glsl firstChildProbability).
 #define PN_LIGHT_TREE_IMPORTANCE_LEVELS 5u
+// The light grid (render/light_grid.h): for every cell of a grid over the scene and every bin of
+// shading normals, a table that picks among the light tree's clusters (its nodes on level
+// PN_LIGHT_TREE_IMPORTANCE_LEVELS, and leaves above it) by their importance bound over the whole
+// cell and bin, in place of the walk's importance levels. Words after the tree's records in its
+// buffer, from FrameUniforms.lightGridOffset: origin (3 floats), inverse cell size, cells along
+// x, y and z, the clusters' count; then the cluster of every trail prefix of
+// PN_LIGHT_TREE_IMPORTANCE_LEVELS bits; then each cluster's node word (childOrLight) and level;
+// then per cell (x fastest) and bin, one alias entry per cluster: (threshold | alias << 17, mass).
+#define PN_LIGHT_GRID_MAX_CLUSTERS 32u     // 2^PN_LIGHT_TREE_IMPORTANCE_LEVELS
+#define PN_LIGHT_GRID_PREFIXES 8u          // word of the prefix -> cluster map
+#define PN_LIGHT_GRID_CLUSTERS 40u         // word of the clusters' (node word, level) pairs
+#define PN_LIGHT_GRID_TABLES 104u          // word of the first table
+#define PN_LIGHT_GRID_BINS 6u              // shading normals by their largest component: +x, -x, +y, -y, +z, -z
+#define PN_LIGHT_GRID_MASS_BITS 16u        // an entry's threshold is out of 2^16; a table's masses sum to 2^16 x clusters
 #define PN_LIGHT_NODE_LEAF 0x80000000u       // LightNode / LightTreeNode.childOrLight: a leaf
 #define PN_LIGHT_NODE_TWO_SIDED 0x40000000u  // LightTreeNode.childOrLight: emits both ways
 #define PN_LIGHT_NODE_INDEX 0x3fffffffu      // LightTreeNode.childOrLight: the child record or the LightRef
@@ -434,7 +449,7 @@ PN_STRUCT(FrameUniforms) {
     uint lightRefCount;    // LightRef entries in all
     uint lightPickUniform; // nonzero: pick every light with the same probability (a test oracle)
     uint topRoot;          // with instanceCount > 0: the top-level BVH's root node
-    uint pad1;
+    uint lightGridOffset;  // word of the light grid in the light tree's buffer (0: none, walk the tree)
     uint pad2;
     uint pad3;
 };
@@ -613,6 +628,10 @@ PN_STRUCT(BsdfTestResult) {
 
 #ifdef __cplusplus
 // Layout checks: every offset the shader relies on. A failure here means a field moved.
+static_assert(PN_LIGHT_GRID_MAX_CLUSTERS == 1u << PN_LIGHT_TREE_IMPORTANCE_LEVELS &&
+              PN_LIGHT_GRID_CLUSTERS == PN_LIGHT_GRID_PREFIXES + PN_LIGHT_GRID_MAX_CLUSTERS &&
+              PN_LIGHT_GRID_TABLES == PN_LIGHT_GRID_CLUSTERS + 2 * PN_LIGHT_GRID_MAX_CLUSTERS,
+              "the light grid's header holds one prefix word and two cluster words per cluster");
 static_assert(sizeof(BvhNode) == 32 && offsetof(BvhNode, firstOrRight) == 12 &&
               offsetof(BvhNode, boundsMax) == 16 && offsetof(BvhNode, triCount) == 28);
 static_assert(sizeof(WideNode) == 80 && offsetof(WideNode, exponentsMask) == 12 && offsetof(WideNode, childBase) == 16 &&

@@ -77,6 +77,7 @@ RenderKey renderKey(const Renderer& renderer, const AdaptiveSettings& adaptive) 
     addVector(a.lightRefs);
     addVector(a.lightNodes);
     addVector(a.lightTree);
+    addVector(a.lightGrid);
     addVector(a.textures);
     addVector(a.texels);
     addVector(a.punctual);

@@ -58,6 +58,7 @@ shader::FrameUniforms makeSceneFrameUniforms(const Camera& camera, Vec3 backgrou
     f.sphereLightCount = scene.sphereLightCount;
     f.instanceCount = scene.instanceCount;
     f.topRoot = scene.topRoot;
+    f.lightGridOffset = scene.lightGridOffset;
     if (f.accel == PN_ACCEL_WIDE && scene.wideNodeCount == 0) f.accel = PN_ACCEL_BVH;  // two-level scenes
     setEnvironmentUniforms(f, env, scene.envWidth, scene.envHeight);
     return f;

@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "render/env_table.h"
 #include "render/instance_arrays.h"
+#include "render/light_grid.h"
 #include "render/light_list.h"
 #include "render/scene_limits.h"
 #include "render/sphere_lights.h"
@@ -159,6 +160,26 @@ void addLightList(const Scene& scene, std::span<const EmissiveTriangle> emissive
     out.lightNodes = std::move(list.nodes);
     out.lightTree = std::move(list.tree);
     out.topLightCount = list.topCount;
+}
+
+// The light grid over where shading points lie (the world's BVH, or its top level), unless
+// PENUMBRA_LIGHT_GRID=0 asks for the plain walk (to compare the two).
+void addLightGrid(SceneArrays& out) {
+    if (const char* grid = std::getenv("PENUMBRA_LIGHT_GRID"); grid && std::string_view(grid) == "0") return;
+    if (out.nodes.empty()) return;
+    const shader::BvhNode& root = out.nodes[out.instances.empty() ? 0 : out.topRoot];
+    Aabb bounds;
+    bounds.grow(root.boundsMin);
+    bounds.grow(root.boundsMax);
+    out.lightGrid = buildLightGrid(out.lightTree, bounds);
+}
+
+// The light tree's buffer: its records, then the light grid's words.
+std::vector<std::uint32_t> lightTreeBufferContents(const SceneArrays& a) {
+    std::vector<std::uint32_t> words(a.lightTree.size() * (sizeof(shader::LightTreeNode) / 4));
+    if (!a.lightTree.empty()) std::memcpy(words.data(), a.lightTree.data(), a.lightTree.size() * sizeof(shader::LightTreeNode));
+    words.insert(words.end(), a.lightGrid.begin(), a.lightGrid.end());
+    return words;
 }
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
@@ -381,6 +402,7 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
         for (shader::Instance& i : out.instances)
             if (i.id != PN_NO_HIT) i.id = keptFrom.at(i.id);
     markAlphaTested(out);
+    addLightGrid(out);
     return out;
 }
 
@@ -389,7 +411,7 @@ std::size_t binaryWalkBytes(const SceneArrays& a) { return binaryNodesUploaded(a
 std::size_t deviceBytes(const SceneArrays& a) {
     auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
     return binaryWalkBytes(a) + bytes(a.wideNodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.triUvs) + bytes(a.materials) + bytes(a.lightRefs) +
-           bytes(a.lightNodes) + bytes(a.lightTree) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
+           bytes(a.lightNodes) + bytes(a.lightTree) + bytes(a.lightGrid) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
            bytes(a.env.alias) + bytes(a.env.radiance) + bytes(a.instances);
 }
 
@@ -402,7 +424,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       materials(gpu::uploadStorageBuffer<shader::Material>(ctx, commands, a.materials)),
       lightRefs(gpu::uploadStorageBuffer<shader::LightRef>(ctx, commands, a.lightRefs)),
       lightNodes(gpu::uploadStorageBuffer<shader::LightNode>(ctx, commands, a.lightNodes)),
-      lightTree(gpu::uploadStorageBuffer<shader::LightTreeNode>(ctx, commands, a.lightTree)),
+      lightTree(gpu::uploadStorageBuffer<std::uint32_t>(ctx, commands, lightTreeBufferContents(a))),
       textures(gpu::uploadStorageBuffer<shader::TextureInfo>(ctx, commands, a.textures)),
       texels(gpu::uploadStorageBuffer<std::uint32_t>(ctx, commands, a.texels)),
       punctual(gpu::uploadStorageBuffer<shader::PunctualLight>(ctx, commands, a.punctual)),
@@ -416,6 +438,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       wideNodeCount(static_cast<std::uint32_t>(a.wideNodes.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
       lightNodeCount(static_cast<std::uint32_t>(a.lightTree.size())),
+      lightGridOffset(a.lightGrid.empty() ? 0u : static_cast<std::uint32_t>(a.lightTree.size() * (sizeof(shader::LightTreeNode) / 4))),
       topLightCount(a.topLightCount),
       lightRefCount(static_cast<std::uint32_t>(a.lightRefs.size())),
       punctualCount(static_cast<std::uint32_t>(a.punctual.size())),

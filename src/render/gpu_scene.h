@@ -39,7 +39,7 @@ public:
     gpu::Buffer nodes, triVerts, triAttribs, triUvs, materials, lightRefs, lightNodes, lightTree, textures, texels, punctual, sphereLights,
         envTable, envTexels, instances;
     std::uint32_t instanceCount = 0, topRoot = 0;  // 0 instances: one flat BVH (FrameUniforms.instanceCount)
-    std::uint32_t nodeCount = 0, wideNodeCount = 0, triCount = 0, lightNodeCount = 0, topLightCount = 0, lightRefCount = 0, punctualCount = 0,
+    std::uint32_t nodeCount = 0, wideNodeCount = 0, triCount = 0, lightNodeCount = 0, lightGridOffset = 0, topLightCount = 0, lightRefCount = 0, punctualCount = 0,
                   sphereCount = 0, sphereLightCount = 0, envWidth = 0, envHeight = 0;
     float envLuminance = 0;
 

@@ -35,6 +35,9 @@ struct SceneArrays {
     std::vector<shader::LightRef> lightRefs;
     std::vector<shader::LightNode> lightNodes;    // the top-level lights' bounds
     std::vector<shader::LightTreeNode> lightTree; // the light BVH (LightList::tree)
+    // Its clusters' pick tables over the scene (render/light_grid.h); uploaded after the tree's
+    // records in the same buffer. Empty: the shaders walk the tree's importance levels.
+    std::vector<std::uint32_t> lightGrid;
     std::uint32_t topLightCount = 0;
     float envLuminance = 0;  // mean luminance of the environment over directions (intensity 1)
     std::vector<shader::TextureInfo> textures;

@@ -24,7 +24,7 @@ std::vector<SceneBufferSize> sceneBufferSizes(const SceneArrays& a) {
             {"materials", bytesOf(a.materials)},
             {"light references", bytesOf(a.lightRefs)},
             {"top-level light bounds", bytesOf(a.lightNodes)},
-            {"light tree", bytesOf(a.lightTree)},
+            {"light tree", bytesOf(a.lightTree) + bytesOf(a.lightGrid)},
             {"texture table", bytesOf(a.textures)},
             {"texels", bytesOf(a.texels)},
             {"punctual lights", bytesOf(a.punctual)},

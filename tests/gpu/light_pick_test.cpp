@@ -67,21 +67,28 @@ std::vector<shader::RayDesc> queryPoints() {
             {{0.5f, 2, 0.2f}, 0, {0, -1, 0}, 0}};
 }
 
-TEST_F(GpuTest, LightPicksFollowTheProbabilitiesMisUses) {
+// Picks at the query points, from the light grid's tables (render/light_grid.h) or (withGrid
+// false) by the walk's own importance levels.
+void expectPicksFollowTheProbabilitiesMisUses(const gpu::Context& ctx, bool withGrid) {
+    SCOPED_TRACE(withGrid ? "light grid" : "tree walk");
     const Scene scene = manyLightsScene(300, 0.6f, 5);
     const SceneArrays arrays = buildSceneArrays(scene);
+    ASSERT_FALSE(arrays.lightGrid.empty());  // 600 emitters: deeper than the importance levels
+    const auto noGrid = [withGrid](shader::FrameUniforms& f) {
+        if (!withGrid) f.lightGridOffset = 0;
+    };
     const auto points = queryPoints();
     const std::size_t refs = arrays.lightRefs.size();
     ASSERT_GT(refs, 600u);
     ASSERT_EQ(arrays.topLightCount, 2u);  // the sky and the sun
 
-    const auto pmfs = runSceneKernel<Vec4, shader::RayDesc>(*ctx, scene, arrays, "test_light_pick", points,
+    const auto pmfs = runSceneKernel<Vec4, shader::RayDesc>(ctx, scene, arrays, "test_light_pick", points,
                                                             points.size() * refs,
-                                                            {0, 1, std::uint32_t(points.size() * refs), 0});
+                                                            {0, 1, std::uint32_t(points.size() * refs), 0}, {}, noGrid);
     const std::uint32_t perPoint = 200000;
-    const auto picks = runSceneKernel<Vec4, shader::RayDesc>(*ctx, scene, arrays, "test_light_pick", points,
+    const auto picks = runSceneKernel<Vec4, shader::RayDesc>(ctx, scene, arrays, "test_light_pick", points,
                                                              points.size() * perPoint,
-                                                             {perPoint, 0, std::uint32_t(points.size() * perPoint), 0});
+                                                             {perPoint, 0, std::uint32_t(points.size() * perPoint), 0}, {}, noGrid);
     for (std::size_t p = 0; p < points.size(); ++p) {
         double sum = 0;
         int reachable = 0;
@@ -118,6 +125,11 @@ TEST_F(GpuTest, LightPicksFollowTheProbabilitiesMisUses) {
         EXPECT_GT(chi.pValue, sidakAlpha(1e-3, int(points.size()))) << "point " << p << ": chi2 " << chi.statistic
                                                                    << " with " << chi.degreesOfFreedom << " dof";
     }
+}
+
+TEST_F(GpuTest, LightPicksFollowTheProbabilitiesMisUses) {
+    expectPicksFollowTheProbabilitiesMisUses(*ctx, true);
+    expectPicksFollowTheProbabilitiesMisUses(*ctx, false);
 }
 
 // Uniform picks among 3 * 2^22 lights: a pick made as floor(u * count) from a 24-bit float u can

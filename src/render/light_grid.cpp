@@ -1,0 +1,204 @@
+#include "render/light_grid.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+#include "core/error.h"
+#include "core/parallel.h"
+#include "shared/light_importance.h"
+
+namespace penumbra {
+namespace {
+
+constexpr std::uint32_t kLevels = PN_LIGHT_TREE_IMPORTANCE_LEVELS;
+constexpr std::uint32_t kOne = 1u << PN_LIGHT_GRID_MASS_BITS;  // a whole alias slot
+// Normals whose largest component is along one axis lie within acos(1/sqrt(3)) (54.7 degrees) of
+// it; the bins' cones are a little wider, so rounding never leaves a normal out.
+constexpr float kBinCos = 0.577f;
+
+struct Cluster {
+    std::uint32_t record;  // the node's own record (its bounds)
+    std::uint32_t word;    // its childOrLight: where the walk goes on below it
+    std::uint32_t level;
+    std::uint32_t prefix;  // its trail's first `level` bits
+};
+
+// The tree's nodes on level kLevels, and its leaves above it, left to right.
+std::vector<Cluster> clustersOf(std::span<const shader::LightTreeNode> tree) {
+    std::vector<Cluster> out;
+    std::vector<Cluster> stack{{0, tree[0].childOrLight, 0, 0}};
+    while (!stack.empty()) {
+        const Cluster c = stack.back();
+        stack.pop_back();
+        if ((c.word & PN_LIGHT_NODE_LEAF) != 0 || c.level == kLevels) {
+            out.push_back(c);
+            continue;
+        }
+        const std::uint32_t first = c.word & PN_LIGHT_NODE_INDEX;
+        PN_CHECK(first + 1 < tree.size());
+        stack.push_back({first + 1, tree[first + 1].childOrLight, c.level + 1, c.prefix | (1u << c.level)});
+        stack.push_back({first, tree[first].childOrLight, c.level + 1, c.prefix});
+    }
+    return out;
+}
+
+// Whether the walk goes on below some cluster: otherwise it weighs every light already.
+bool deeperThanTheLevels(const std::vector<Cluster>& clusters) {
+    for (const Cluster& c : clusters)
+        if ((c.word & PN_LIGHT_NODE_LEAF) == 0) return true;
+    return false;
+}
+
+shader::LightCluster widenedCluster(const shader::LightTreeNode& n, float extraRadius) {
+    return shader::LightCluster{n.center,    n.radius + extraRadius, n.axis,      n.phi,
+                                n.cosThetaO, n.sinThetaO,            n.cosThetaE, (n.childOrLight & PN_LIGHT_NODE_TWO_SIDED) != 0};
+}
+
+struct GridShape {
+    Vec3 origin;
+    float cellSize = 0;
+    std::uint32_t dims[3] = {1, 1, 1};
+    std::uint64_t cells() const { return std::uint64_t(dims[0]) * dims[1] * dims[2]; }
+};
+
+// Cubic cells, as many as maxCells allows.
+GridShape shapeFor(const Aabb& bounds, std::uint64_t maxCells) {
+    GridShape g;
+    g.origin = bounds.lo;
+    const Vec3 e = bounds.extent();
+    const float largest = std::max({e.x, e.y, e.z, 1e-6f});
+    const float floorSize = largest * 1e-3f;
+    const double volume = double(std::max(e.x, floorSize)) * std::max(e.y, floorSize) * std::max(e.z, floorSize);
+    float size = float(std::cbrt(volume / double(std::max<std::uint64_t>(maxCells, 1))));
+    size = std::max(size, floorSize);
+    for (int attempt = 0; attempt < 1000; ++attempt) {
+        for (int k = 0; k < 3; ++k) g.dims[k] = std::max(1u, std::uint32_t(std::ceil(e[k] / size)));
+        if (g.cells() <= std::max<std::uint64_t>(maxCells, 1)) break;
+        size *= 1.05f;
+    }
+    g.cellSize = size;
+    return g;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> lightGridAliasTable(std::span<const double> weights) {
+    const std::uint32_t count = std::uint32_t(weights.size());
+    std::vector<std::uint32_t> table(2 * std::size_t(count), 0u);
+    double total = 0;
+    for (double w : weights) total += w > 0 ? w : 0;
+    if (count == 0 || !(total > 0) || !std::isfinite(total)) return table;
+    // Integer masses summing to kOne x count, every positive weight at least 1.
+    const std::int64_t whole = std::int64_t(kOne) * count;
+    std::vector<std::int64_t> mass(count);
+    std::int64_t sum = 0;
+    std::uint32_t largest = 0;
+    for (std::uint32_t k = 0; k < count; ++k) {
+        const double w = weights[k] > 0 ? weights[k] : 0;
+        mass[k] = std::int64_t(std::floor(w / total * double(whole)));
+        if (w > 0) mass[k] = std::max<std::int64_t>(mass[k], 1);
+        sum += mass[k];
+        if (mass[k] > mass[largest]) largest = k;
+    }
+    mass[largest] += whole - sum;  // rounding: at most `count` either way, against at least kOne
+    PN_CHECK(mass[largest] > 0);
+    // Vose's alias method on integers: every slot ends exactly full.
+    std::vector<std::int64_t> left = mass;
+    std::vector<std::uint32_t> small, large;
+    for (std::uint32_t k = 0; k < count; ++k) (left[k] < kOne ? small : large).push_back(k);
+    std::vector<std::uint32_t> threshold(count, kOne), alias(count);
+    for (std::uint32_t k = 0; k < count; ++k) alias[k] = k;
+    while (!small.empty() && !large.empty()) {
+        const std::uint32_t s = small.back(), l = large.back();
+        small.pop_back();
+        threshold[s] = std::uint32_t(left[s]);
+        alias[s] = l;
+        left[l] -= kOne - left[s];
+        if (left[l] < kOne) {
+            large.pop_back();
+            small.push_back(l);
+        }
+    }
+    PN_CHECK(small.empty());  // exact integers: what is left is exactly full
+    for (std::uint32_t k = 0; k < count; ++k) {
+        table[2 * k] = threshold[k] | (alias[k] << 17);
+        table[2 * k + 1] = std::uint32_t(mass[k]);
+    }
+    return table;
+}
+
+double lightGridRealisedProbability(std::span<const std::uint32_t> table, std::uint32_t k) {
+    const std::uint32_t count = std::uint32_t(table.size() / 2);
+    std::uint64_t mass = table[2 * k] & 0x1ffffu;
+    for (std::uint32_t j = 0; j < count; ++j)
+        if (j != k && (table[2 * j] >> 17) == k) mass += kOne - (table[2 * j] & 0x1ffffu);
+    return double(mass) / (double(kOne) * count);
+}
+
+std::uint32_t lightGridTableAt(std::span<const std::uint32_t> grid, Vec3 p, Vec3 n) {
+    if (grid.size() < PN_LIGHT_GRID_TABLES) return PN_NO_HIT;
+    Vec3 origin;
+    float inverseSize;
+    std::memcpy(&origin.x, &grid[0], 4);
+    std::memcpy(&origin.y, &grid[1], 4);
+    std::memcpy(&origin.z, &grid[2], 4);
+    std::memcpy(&inverseSize, &grid[3], 4);
+    const std::uint32_t table = shader::lightGridTableIndex((p - origin) * inverseSize, grid[4], grid[5], grid[6], n);
+    return table == PN_NO_HIT ? PN_NO_HIT : PN_LIGHT_GRID_TABLES + table * 2 * grid[7];
+}
+
+std::vector<std::uint32_t> buildLightGrid(std::span<const shader::LightTreeNode> tree, const Aabb& bounds,
+                                          const LightGridOptions& options) {
+    if (tree.empty() || bounds.empty()) return {};
+    const std::vector<Cluster> clusters = clustersOf(tree);
+    if (!deeperThanTheLevels(clusters)) return {};
+    const auto count = std::uint32_t(clusters.size());
+    PN_CHECK(count <= PN_LIGHT_GRID_MAX_CLUSTERS);
+    const std::uint64_t tableWords = std::uint64_t(count) * 2;  // one cell's table for one bin
+    const std::uint64_t cellWords = PN_LIGHT_GRID_BINS * tableWords;
+    const std::uint64_t budget = options.maxWords > PN_LIGHT_GRID_TABLES ? options.maxWords - PN_LIGHT_GRID_TABLES : 0;
+    const GridShape g = shapeFor(bounds, budget / cellWords);
+
+    std::vector<std::uint32_t> words(PN_LIGHT_GRID_TABLES + g.cells() * cellWords, 0u);
+    auto putFloat = [&](std::size_t at, float v) { std::memcpy(&words[at], &v, 4); };
+    for (int k = 0; k < 3; ++k) putFloat(std::size_t(k), g.origin[k]);
+    putFloat(3, 1.0f / g.cellSize);
+    for (int k = 0; k < 3; ++k) words[4 + std::size_t(k)] = g.dims[k];
+    words[7] = count;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const Cluster& c = clusters[i];
+        for (std::uint32_t rest = 0; rest < (1u << (kLevels - c.level)); ++rest)
+            words[PN_LIGHT_GRID_PREFIXES + (c.prefix | (rest << c.level))] = i;
+        words[PN_LIGHT_GRID_CLUSTERS + 2 * i] = c.word;
+        words[PN_LIGHT_GRID_CLUSTERS + 2 * i + 1] = c.level;
+    }
+    // Every point the shaders file under a cell lies within its circumscribed sphere, widened for
+    // the rounding of (p - origin) / size.
+    const float reach = std::max({std::abs(g.origin.x), std::abs(g.origin.y), std::abs(g.origin.z)}) +
+                        g.cellSize * float(std::max({g.dims[0], g.dims[1], g.dims[2]}));
+    const float cellRadius = 0.5f * g.cellSize * std::sqrt(3.0f) * 1.001f + reach * 1e-5f;
+    const float binSin = std::sqrt(1.0f - kBinCos * kBinCos);
+    parallelFor(g.cells(), 64, [&](std::size_t begin, std::size_t end) {
+        std::vector<double> weights(count);
+        for (std::size_t cell = begin; cell < end; ++cell) {
+            const std::uint32_t q[3] = {std::uint32_t(cell % g.dims[0]), std::uint32_t(cell / g.dims[0] % g.dims[1]),
+                                        std::uint32_t(cell / g.dims[0] / g.dims[1])};
+            Vec3 centre;
+            for (int k = 0; k < 3; ++k) centre[k] = g.origin[k] + (float(q[k]) + 0.5f) * g.cellSize;
+            for (std::uint32_t bin = 0; bin < PN_LIGHT_GRID_BINS; ++bin) {
+                Vec3 axis{0.0f};
+                axis[int(bin / 2)] = bin % 2 == 0 ? 1.0f : -1.0f;
+                for (std::uint32_t i = 0; i < count; ++i)
+                    weights[i] = shader::clusterImportanceWithin(widenedCluster(tree[clusters[i].record], cellRadius), centre, axis,
+                                                                 true, binSin, kBinCos);
+                const std::vector<std::uint32_t> table = lightGridAliasTable(weights);
+                std::copy(table.begin(), table.end(), words.begin() + std::ptrdiff_t(PN_LIGHT_GRID_TABLES + (cell * PN_LIGHT_GRID_BINS + bin) * tableWords));
+            }
+        }
+    });
+    return words;
+}
+
+}  // namespace penumbra

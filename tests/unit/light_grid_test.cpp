@@ -1,0 +1,135 @@
+// The light grid (render/light_grid.h): alias tables that realise exactly the masses the shaders
+// read back for MIS, and cell tables that never drop a cluster the tree walk could pick at any
+// point of the cell with any normal of the bin.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "render/light_grid.h"
+#include "render/light_tree.h"
+#include "shared/light_importance.h"
+
+namespace penumbra {
+namespace {
+
+constexpr double kOne = double(1u << PN_LIGHT_GRID_MASS_BITS);
+
+Vec3 randomUnit(std::mt19937& rng) {
+    std::normal_distribution<float> g;
+    return normalize(Vec3{g(rng), g(rng), g(rng)});
+}
+
+TEST(LightGrid, AliasTablesRealiseTheirMassesExactly) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int trial = 0; trial < 200; ++trial) {
+        const std::size_t count = 1 + trial % PN_LIGHT_GRID_MAX_CLUSTERS;
+        std::vector<double> weights(count);
+        for (double& w : weights) w = u(rng) < 0.3 ? 0.0 : std::pow(u(rng), 8.0) * 1e3;  // zeros and a wide range
+        const std::vector<std::uint32_t> table = lightGridAliasTable(weights);
+        double total = 0, masses = 0;
+        for (double w : weights) total += w;
+        for (std::uint32_t k = 0; k < count; ++k) {
+            const double mass = table[2 * k + 1];
+            masses += mass;
+            EXPECT_EQ(weights[k] > 0, mass > 0) << "trial " << trial << " entry " << k;
+            if (total == 0) continue;  // every mass 0: the shaders find no light whatever they draw
+            EXPECT_EQ(lightGridRealisedProbability(table, k), mass / (kOne * double(count))) << "trial " << trial;
+            // Rounding: each mass floors, the largest takes up what that left (at most count).
+            EXPECT_NEAR(mass / (kOne * double(count)), weights[k] / total, (count + 1.0) / (kOne * double(count)));
+        }
+        EXPECT_EQ(masses, total > 0 ? kOne * double(count) : 0.0);
+    }
+}
+
+TEST(LightGrid, AllZeroWeightsGiveAnEmptyTable) {
+    const std::vector<double> zeros(7, 0.0);
+    const std::vector<std::uint32_t> table = lightGridAliasTable(zeros);
+    for (std::uint32_t k = 0; k < 7; ++k) EXPECT_EQ(table[2 * k + 1], 0u);
+}
+
+// Emitters of many sizes, facing every way, some with wide cones (spot and point lights).
+std::vector<LightBounds> randomLights(std::mt19937& rng, int count) {
+    std::uniform_real_distribution<float> u(-10, 10), size(0.01f, 2.0f), power(0.1f, 100.0f);
+    std::vector<LightBounds> lights;
+    for (int i = 0; i < count; ++i) {
+        const Vec3 c{u(rng), u(rng), u(rng)};
+        if (i % 9 == 0) {
+            lights.push_back(spotLightBounds(c, randomUnit(rng), power(rng), std::cos(0.3f), std::cos(0.6f)));
+            continue;
+        }
+        LightBounds b;
+        b.bounds.grow(c);
+        b.bounds.grow(c + Vec3{size(rng), size(rng), size(rng)});
+        b.phi = power(rng);
+        b.axis = randomUnit(rng);
+        b.twoSided = i % 5 == 0;
+        lights.push_back(b);
+    }
+    return lights;
+}
+
+// Which tree node the walk is at after `level` steps along trail prefix `prefix` (or the leaf above it).
+std::uint32_t recordAt(std::span<const shader::LightTreeNode> tree, std::uint32_t prefix, std::uint32_t level) {
+    std::uint32_t record = 0;
+    for (std::uint32_t d = 0; d < level && !(tree[record].childOrLight & PN_LIGHT_NODE_LEAF); ++d)
+        record = (tree[record].childOrLight & PN_LIGHT_NODE_INDEX) + ((prefix >> d) & 1u);
+    return record;
+}
+
+TEST(LightGrid, CellTablesKeepEveryClusterThatCouldLightAPointOfTheCell) {
+    std::mt19937 rng(17);
+    const std::vector<LightBounds> lights = randomLights(rng, 400);
+    const std::vector<shader::LightTreeNode> tree = compactLightTree(buildLightTree(lights, 0, 0));
+    Aabb bounds;
+    bounds.grow(Vec3{-12, -12, -3});
+    bounds.grow(Vec3{12, 12, 3});
+    LightGridOptions options;
+    options.maxWords = 1u << 18;
+    const std::vector<std::uint32_t> grid = buildLightGrid(tree, bounds, options);
+    ASSERT_GT(grid.size(), std::size_t(PN_LIGHT_GRID_TABLES));
+    const std::uint32_t clusters = grid[7];
+    ASSERT_GT(clusters, 16u);
+    ASSERT_LE(clusters, PN_LIGHT_GRID_MAX_CLUSTERS);
+    // Every trail prefix leads to its cluster's node.
+    for (std::uint32_t prefix = 0; prefix < PN_LIGHT_GRID_MAX_CLUSTERS; ++prefix) {
+        const std::uint32_t c = grid[PN_LIGHT_GRID_PREFIXES + prefix];
+        ASSERT_LT(c, clusters);
+        const std::uint32_t level = grid[PN_LIGHT_GRID_CLUSTERS + 2 * c + 1];
+        EXPECT_EQ(grid[PN_LIGHT_GRID_CLUSTERS + 2 * c], tree[recordAt(tree, prefix, level)].childOrLight);
+    }
+    std::uniform_real_distribution<float> ux(-12, 12), uz(-3, 3);
+    int checked = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const Vec3 p{ux(rng), ux(rng), uz(rng)}, n = randomUnit(rng);
+        const std::uint32_t table = lightGridTableAt(grid, p, n);
+        ASSERT_NE(table, PN_NO_HIT);
+        for (std::uint32_t prefix = 0; prefix < PN_LIGHT_GRID_MAX_CLUSTERS; ++prefix) {
+            const std::uint32_t c = grid[PN_LIGHT_GRID_PREFIXES + prefix];
+            const shader::LightTreeNode& node = tree[recordAt(tree, prefix, grid[PN_LIGHT_GRID_CLUSTERS + 2 * c + 1])];
+            const shader::LightCluster exact{node.center,    node.radius,    node.axis,      node.phi,
+                                             node.cosThetaO, node.sinThetaO, node.cosThetaE, (node.childOrLight & PN_LIGHT_NODE_TWO_SIDED) != 0};
+            if (shader::clusterImportance(exact, p, n) <= 0) continue;
+            ++checked;
+            ASSERT_GT(grid[table + 2 * c + 1], 0u) << "point (" << p.x << ", " << p.y << ", " << p.z << ") cluster " << c;
+        }
+    }
+    EXPECT_GT(checked, 100000);
+    // Off the grid, and without a normal, the walk weighs the levels itself.
+    EXPECT_EQ(lightGridTableAt(grid, Vec3{0, 0, 50}, Vec3{0, 0, 1}), PN_NO_HIT);
+    EXPECT_EQ(lightGridTableAt(grid, Vec3{0, 0, 0}, Vec3{0, 0, 0}), PN_NO_HIT);
+}
+
+TEST(LightGrid, ShallowTreesKeepTheWalk) {
+    std::mt19937 rng(5);
+    const std::vector<shader::LightTreeNode> tree = compactLightTree(buildLightTree(randomLights(rng, 20), 0, 0));
+    Aabb bounds;
+    bounds.grow(Vec3{-12});
+    bounds.grow(Vec3{12});
+    EXPECT_TRUE(buildLightGrid(tree, bounds).empty());  // 20 lights: the walk already weighs each
+    EXPECT_TRUE(buildLightGrid({}, bounds).empty());
+}
+
+}  // namespace
+}  // namespace penumbra
