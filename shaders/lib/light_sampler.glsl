@@ -105,7 +105,8 @@ uint lightGridTable(vec3 p, vec3 n) {
     vec3 origin = uintBitsToFloat(uvec3(lightGrid[base], lightGrid[base + 1u], lightGrid[base + 2u]));
     uint table = lightGridTableIndex((p - origin) * uintBitsToFloat(lightGrid[base + 3u]), lightGrid[base + 4u],
                                      lightGrid[base + 5u], lightGrid[base + 6u], n);
-    return table == PN_NO_HIT ? PN_NO_HIT : base + PN_LIGHT_GRID_TABLES + table * 2u * lightGrid[base + 7u];
+    if (table == PN_NO_HIT) return PN_NO_HIT;
+    return base + lightGrid[base + PN_LIGHT_GRID_FIRST_TABLE] + table * 2u * lightGrid[base + PN_LIGHT_GRID_COUNT];
 }
 
 // A grid table entry's probability: its mass over the table's.
@@ -114,7 +115,7 @@ float lightGridProbability(uint mass, uint clusters) { return float(mass) / floa
 // A cluster drawn from a grid table (Vose's alias method, on integers: the probability drawn is
 // exactly the mass the table stores); pmf is multiplied by its probability.
 uint pickGridCluster(uint table, inout float pmf, inout uint rng) {
-    uint clusters = lightGrid[frame.lightGridOffset + 7u];
+    uint clusters = lightGrid[frame.lightGridOffset + PN_LIGHT_GRID_COUNT];
     uint slot, low;
     umulExtended(rngNextUint(rng), clusters, slot, low);  // floor(bits * clusters / 2^32)
     uint entry = lightGrid[table + 2u * slot];
@@ -126,7 +127,8 @@ uint pickGridCluster(uint table, inout float pmf, inout uint rng) {
 
 // Where the walk goes on below a grid cluster: its node word and level.
 uvec2 lightGridCluster(uint cluster) {
-    uint at = frame.lightGridOffset + PN_LIGHT_GRID_CLUSTERS + 2u * cluster;
+    uint base = frame.lightGridOffset;
+    uint at = base + PN_LIGHT_GRID_PREFIXES + (1u << lightGrid[base + PN_LIGHT_GRID_LEVELS]) + 2u * cluster;
     return uvec2(lightGrid[at], lightGrid[at + 1u]);
 }
 
@@ -199,8 +201,9 @@ float lightPickPmf(uint ref, vec3 p, vec3 n) {
     uint table = lightGridTable(p, n);
     if (table != PN_NO_HIT) {
         uint base = frame.lightGridOffset;
-        uint index = lightGrid[base + PN_LIGHT_GRID_PREFIXES + (r.trailLo & (PN_LIGHT_GRID_MAX_CLUSTERS - 1u))];
-        pmf *= lightGridProbability(lightGrid[table + 2u * index + 1u], lightGrid[base + 7u]);
+        uint prefixMask = (1u << lightGrid[base + PN_LIGHT_GRID_LEVELS]) - 1u;
+        uint index = lightGrid[base + PN_LIGHT_GRID_PREFIXES + (r.trailLo & prefixMask)];
+        pmf *= lightGridProbability(lightGrid[table + 2u * index + 1u], lightGrid[base + PN_LIGHT_GRID_COUNT]);
         uvec2 cluster = lightGridCluster(index);
         node = cluster.x;
         depth = cluster.y;

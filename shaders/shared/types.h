@@ -157,17 +157,18 @@ using namespace penumbra::gpu_types;
 // levels, below them by power alone (lib/light_sampler.glsl firstChildProbability).
 #define PN_LIGHT_TREE_IMPORTANCE_LEVELS 5u
 // The light grid (render/light_grid.h): for every cell of a grid over the scene and every bin of
-// shading normals, a table that picks among the light tree's clusters (its nodes on level
-// PN_LIGHT_TREE_IMPORTANCE_LEVELS, and leaves above it) by their importance bound over the whole
-// cell and bin, in place of the walk's importance levels. Words after the tree's records in its
-// buffer, from FrameUniforms.lightGridOffset: origin (3 floats), inverse cell size, cells along
-// x, y and z, the clusters' count; then the cluster of every trail prefix of
-// PN_LIGHT_TREE_IMPORTANCE_LEVELS bits; then each cluster's node word (childOrLight) and level;
-// then per cell (x fastest) and bin, one alias entry per cluster: (threshold | alias << 17, mass).
-#define PN_LIGHT_GRID_MAX_CLUSTERS 32u     // 2^PN_LIGHT_TREE_IMPORTANCE_LEVELS
-#define PN_LIGHT_GRID_PREFIXES 8u          // word of the prefix -> cluster map
-#define PN_LIGHT_GRID_CLUSTERS 40u         // word of the clusters' (node word, level) pairs
-#define PN_LIGHT_GRID_TABLES 104u          // word of the first table
+// shading normals, a table that picks among the light tree's clusters (its nodes on one level L,
+// and leaves above it) by their importance bound over the whole cell and bin, in place of the
+// walk's importance levels. Words after the tree's records in its buffer, from
+// FrameUniforms.lightGridOffset: origin (3 floats), inverse cell size, cells along x, y and z,
+// the clusters' count, L, the first table's word; at PN_LIGHT_GRID_PREFIXES the cluster of every
+// trail prefix of L bits (2^L words), then each cluster's node word (childOrLight) and level; then
+// per cell (x fastest) and bin, one alias entry per cluster: (threshold | alias << 17, mass).
+#define PN_LIGHT_GRID_COUNT 7u             // header word: the clusters
+#define PN_LIGHT_GRID_LEVELS 8u            // header word: L
+#define PN_LIGHT_GRID_FIRST_TABLE 9u       // header word: where the tables start
+#define PN_LIGHT_GRID_PREFIXES 16u         // word of the prefix -> cluster map
+#define PN_LIGHT_GRID_MAX_LEVELS 8u        // at most 256 clusters
 #define PN_LIGHT_GRID_BINS 6u              // shading normals by their largest component: +x, -x, +y, -y, +z, -z
 #define PN_LIGHT_GRID_MASS_BITS 16u        // an entry's threshold is out of 2^16; a table's masses sum to 2^16 x clusters
 #define PN_LIGHT_NODE_LEAF 0x80000000u       // LightNode / LightTreeNode.childOrLight: a leaf
@@ -628,10 +629,8 @@ PN_STRUCT(BsdfTestResult) {
 
 #ifdef __cplusplus
 // Layout checks: every offset the shader relies on. A failure here means a field moved.
-static_assert(PN_LIGHT_GRID_MAX_CLUSTERS == 1u << PN_LIGHT_TREE_IMPORTANCE_LEVELS &&
-              PN_LIGHT_GRID_CLUSTERS == PN_LIGHT_GRID_PREFIXES + PN_LIGHT_GRID_MAX_CLUSTERS &&
-              PN_LIGHT_GRID_TABLES == PN_LIGHT_GRID_CLUSTERS + 2 * PN_LIGHT_GRID_MAX_CLUSTERS,
-              "the light grid's header holds one prefix word and two cluster words per cluster");
+static_assert(PN_LIGHT_GRID_FIRST_TABLE < PN_LIGHT_GRID_PREFIXES && PN_LIGHT_GRID_MAX_LEVELS < 15,
+              "the light grid's header words come before its prefixes; an alias fits in 15 bits");
 static_assert(sizeof(BvhNode) == 32 && offsetof(BvhNode, firstOrRight) == 12 &&
               offsetof(BvhNode, boundsMax) == 16 && offsetof(BvhNode, triCount) == 28);
 static_assert(sizeof(WideNode) == 80 && offsetof(WideNode, exponentsMask) == 12 && offsetof(WideNode, childBase) == 16 &&

@@ -41,8 +41,8 @@ void printScene(const std::string& name, const std::string& map, const Environme
                 "of %zu nodes, leaves at depth %.1f on average, %u at most, root 1), loaded in %.0f ms\n",
                 scene.name.c_str(), tris, scene.materials.size(), arrays.lightRefs.size(), arrays.topLightCount,
                 arrays.lightTree.size(), lightDepth.mean, lightDepth.max, loadMs);
-    if (arrays.lightGrid.size() > PN_LIGHT_GRID_TABLES)
-        std::printf("  light grid: %u clusters picked from %ux%ux%u cells x %u normal bins, %.1f MB\n", arrays.lightGrid[7],
+    if (!arrays.lightGrid.empty())
+        std::printf("  light grid: %u clusters picked from %ux%ux%u cells x %u normal bins, %.1f MB\n", arrays.lightGrid[PN_LIGHT_GRID_COUNT],
                     arrays.lightGrid[4], arrays.lightGrid[5], arrays.lightGrid[6], PN_LIGHT_GRID_BINS,
                     double(arrays.lightGrid.size()) * 4.0 / 1e6);
     std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, %s in %.2f ms\n", s.nodes,

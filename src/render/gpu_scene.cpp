@@ -162,16 +162,32 @@ void addLightList(const Scene& scene, std::span<const EmissiveTriangle> emissive
     out.topLightCount = list.topCount;
 }
 
-// The light grid over where shading points lie (the world's BVH, or its top level), unless
-// PENUMBRA_LIGHT_GRID=0 asks for the plain walk (to compare the two).
+// A whole number from the environment variable `name` in [low, high], or `fallback` when unset.
+std::uint32_t settingFromEnvironment(const char* name, std::uint32_t fallback, std::uint32_t low, std::uint32_t high) {
+    const char* text = std::getenv(name);
+    if (!text || !*text) return fallback;
+    char* end = nullptr;
+    const unsigned long value = std::strtoul(text, &end, 10);
+    if (*end != '\0' || text[0] == '-' || value < low || value > high)
+        throw UsageError(std::string(name) + " must be a whole number from " + std::to_string(low) + " to " +
+                         std::to_string(high) + " (got '" + text + "')");
+    return std::uint32_t(value);
+}
+
+// The light grid over where shading points lie (the world's BVH, or its top level). For
+// measurements: PENUMBRA_LIGHT_GRID=0 leaves it out (the plain walk), PENUMBRA_LIGHT_GRID_LEVELS
+// sets the tree level it picks among, PENUMBRA_LIGHT_GRID_MB its size cap.
 void addLightGrid(SceneArrays& out) {
-    if (const char* grid = std::getenv("PENUMBRA_LIGHT_GRID"); grid && std::string_view(grid) == "0") return;
-    if (out.nodes.empty()) return;
+    if (settingFromEnvironment("PENUMBRA_LIGHT_GRID", 1, 0, 1) == 0 || out.nodes.empty()) return;
+    LightGridOptions options;
+    options.levels = settingFromEnvironment("PENUMBRA_LIGHT_GRID_LEVELS", options.levels, 1, PN_LIGHT_GRID_MAX_LEVELS);
+    options.maxWords = std::uint64_t(settingFromEnvironment("PENUMBRA_LIGHT_GRID_MB", std::uint32_t(options.maxWords * 4 >> 20), 1, 1024))
+                       << 18;  // 2^18 words in a MiB
     const shader::BvhNode& root = out.nodes[out.instances.empty() ? 0 : out.topRoot];
     Aabb bounds;
     bounds.grow(root.boundsMin);
     bounds.grow(root.boundsMax);
-    out.lightGrid = buildLightGrid(out.lightTree, bounds);
+    out.lightGrid = buildLightGrid(out.lightTree, bounds, options);
 }
 
 // The light tree's buffer: its records, then the light grid's words.

@@ -12,7 +12,6 @@
 namespace penumbra {
 namespace {
 
-constexpr std::uint32_t kLevels = PN_LIGHT_TREE_IMPORTANCE_LEVELS;
 constexpr std::uint32_t kOne = 1u << PN_LIGHT_GRID_MASS_BITS;  // a whole alias slot
 // Normals whose largest component is along one axis lie within acos(1/sqrt(3)) (54.7 degrees) of
 // it; the bins' cones are a little wider, so rounding never leaves a normal out.
@@ -25,14 +24,14 @@ struct Cluster {
     std::uint32_t prefix;  // its trail's first `level` bits
 };
 
-// The tree's nodes on level kLevels, and its leaves above it, left to right.
-std::vector<Cluster> clustersOf(std::span<const shader::LightTreeNode> tree) {
+// The tree's nodes on level `levels`, and its leaves above it, left to right.
+std::vector<Cluster> clustersOf(std::span<const shader::LightTreeNode> tree, std::uint32_t levels) {
     std::vector<Cluster> out;
     std::vector<Cluster> stack{{0, tree[0].childOrLight, 0, 0}};
     while (!stack.empty()) {
         const Cluster c = stack.back();
         stack.pop_back();
-        if ((c.word & PN_LIGHT_NODE_LEAF) != 0 || c.level == kLevels) {
+        if ((c.word & PN_LIGHT_NODE_LEAF) != 0 || c.level == levels) {
             out.push_back(c);
             continue;
         }
@@ -138,7 +137,7 @@ double lightGridRealisedProbability(std::span<const std::uint32_t> table, std::u
 }
 
 std::uint32_t lightGridTableAt(std::span<const std::uint32_t> grid, Vec3 p, Vec3 n) {
-    if (grid.size() < PN_LIGHT_GRID_TABLES) return PN_NO_HIT;
+    if (grid.size() <= PN_LIGHT_GRID_PREFIXES) return PN_NO_HIT;
     Vec3 origin;
     float inverseSize;
     std::memcpy(&origin.x, &grid[0], 4);
@@ -146,33 +145,38 @@ std::uint32_t lightGridTableAt(std::span<const std::uint32_t> grid, Vec3 p, Vec3
     std::memcpy(&origin.z, &grid[2], 4);
     std::memcpy(&inverseSize, &grid[3], 4);
     const std::uint32_t table = shader::lightGridTableIndex((p - origin) * inverseSize, grid[4], grid[5], grid[6], n);
-    return table == PN_NO_HIT ? PN_NO_HIT : PN_LIGHT_GRID_TABLES + table * 2 * grid[7];
+    return table == PN_NO_HIT ? PN_NO_HIT : grid[PN_LIGHT_GRID_FIRST_TABLE] + table * 2 * grid[PN_LIGHT_GRID_COUNT];
 }
 
 std::vector<std::uint32_t> buildLightGrid(std::span<const shader::LightTreeNode> tree, const Aabb& bounds,
                                           const LightGridOptions& options) {
     if (tree.empty() || bounds.empty()) return {};
-    const std::vector<Cluster> clusters = clustersOf(tree);
+    const std::uint32_t levels = std::clamp(options.levels, 1u, PN_LIGHT_GRID_MAX_LEVELS);
+    const std::vector<Cluster> clusters = clustersOf(tree, levels);
     if (!deeperThanTheLevels(clusters)) return {};
     const auto count = std::uint32_t(clusters.size());
-    PN_CHECK(count <= PN_LIGHT_GRID_MAX_CLUSTERS);
+    PN_CHECK(count <= (1u << levels));
+    const std::uint32_t firstTable = PN_LIGHT_GRID_PREFIXES + (1u << levels) + 2 * count;
     const std::uint64_t tableWords = std::uint64_t(count) * 2;  // one cell's table for one bin
     const std::uint64_t cellWords = PN_LIGHT_GRID_BINS * tableWords;
-    const std::uint64_t budget = options.maxWords > PN_LIGHT_GRID_TABLES ? options.maxWords - PN_LIGHT_GRID_TABLES : 0;
+    const std::uint64_t budget = options.maxWords > firstTable ? options.maxWords - firstTable : 0;
     const GridShape g = shapeFor(bounds, budget / cellWords);
 
-    std::vector<std::uint32_t> words(PN_LIGHT_GRID_TABLES + g.cells() * cellWords, 0u);
+    std::vector<std::uint32_t> words(firstTable + g.cells() * cellWords, 0u);
     auto putFloat = [&](std::size_t at, float v) { std::memcpy(&words[at], &v, 4); };
     for (int k = 0; k < 3; ++k) putFloat(std::size_t(k), g.origin[k]);
     putFloat(3, 1.0f / g.cellSize);
     for (int k = 0; k < 3; ++k) words[4 + std::size_t(k)] = g.dims[k];
-    words[7] = count;
+    words[PN_LIGHT_GRID_COUNT] = count;
+    words[PN_LIGHT_GRID_LEVELS] = levels;
+    words[PN_LIGHT_GRID_FIRST_TABLE] = firstTable;
+    const std::uint32_t clusterWords = PN_LIGHT_GRID_PREFIXES + (1u << levels);
     for (std::uint32_t i = 0; i < count; ++i) {
         const Cluster& c = clusters[i];
-        for (std::uint32_t rest = 0; rest < (1u << (kLevels - c.level)); ++rest)
+        for (std::uint32_t rest = 0; rest < (1u << (levels - c.level)); ++rest)
             words[PN_LIGHT_GRID_PREFIXES + (c.prefix | (rest << c.level))] = i;
-        words[PN_LIGHT_GRID_CLUSTERS + 2 * i] = c.word;
-        words[PN_LIGHT_GRID_CLUSTERS + 2 * i + 1] = c.level;
+        words[clusterWords + 2 * i] = c.word;
+        words[clusterWords + 2 * i + 1] = c.level;
     }
     // Every point the shaders file under a cell lies within its circumscribed sphere, widened for
     // the rounding of (p - origin) / size.
@@ -194,7 +198,7 @@ std::vector<std::uint32_t> buildLightGrid(std::span<const shader::LightTreeNode>
                     weights[i] = shader::clusterImportanceWithin(widenedCluster(tree[clusters[i].record], cellRadius), centre, axis,
                                                                  true, binSin, kBinCos);
                 const std::vector<std::uint32_t> table = lightGridAliasTable(weights);
-                std::copy(table.begin(), table.end(), words.begin() + std::ptrdiff_t(PN_LIGHT_GRID_TABLES + (cell * PN_LIGHT_GRID_BINS + bin) * tableWords));
+                std::copy(table.begin(), table.end(), words.begin() + std::ptrdiff_t(firstTable + (cell * PN_LIGHT_GRID_BINS + bin) * tableWords));
             }
         }
     });

@@ -20,6 +20,9 @@
 namespace penumbra {
 
 struct LightGridOptions {
+    // The tree level whose nodes the tables pick among (2^levels clusters at most); the walk goes
+    // on below by power. Five is the walk's own importance levels (PN_LIGHT_TREE_IMPORTANCE_LEVELS).
+    std::uint32_t levels = PN_LIGHT_TREE_IMPORTANCE_LEVELS;
     // The tables' size is capped at this many words (alias entries are two words each), which
     // sets the cell size: cubic cells, as many as fit.
     std::uint64_t maxWords = std::uint64_t(1) << 21;
@@ -27,7 +30,7 @@ struct LightGridOptions {
 
 // The grid's words over `bounds` (where shading points lie: the scene's geometry) for a compact
 // light tree (compactLightTree), or nothing where a grid would not help: no tree, a tree no
-// deeper than the importance levels (the walk weighs every light there), or empty bounds.
+// deeper than options.levels (the walk weighs every light there), or empty bounds.
 std::vector<std::uint32_t> buildLightGrid(std::span<const shader::LightTreeNode> tree, const Aabb& bounds,
                                           const LightGridOptions& options = {});
 

@@ -24,7 +24,7 @@ TEST(LightGrid, AliasTablesRealiseTheirMassesExactly) {
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> u(0, 1);
     for (int trial = 0; trial < 200; ++trial) {
-        const std::size_t count = 1 + trial % PN_LIGHT_GRID_MAX_CLUSTERS;
+        const std::size_t count = 1 + trial % 40;
         std::vector<double> weights(count);
         for (double& w : weights) w = u(rng) < 0.3 ? 0.0 : std::pow(u(rng), 8.0) * 1e3;  // zeros and a wide range
         const std::vector<std::uint32_t> table = lightGridAliasTable(weights);
@@ -78,8 +78,11 @@ std::uint32_t recordAt(std::span<const shader::LightTreeNode> tree, std::uint32_
     return record;
 }
 
-TEST(LightGrid, CellTablesKeepEveryClusterThatCouldLightAPointOfTheCell) {
+class LightGridLevels : public testing::TestWithParam<std::uint32_t> {};
+
+TEST_P(LightGridLevels, CellTablesKeepEveryClusterThatCouldLightAPointOfTheCell) {
     std::mt19937 rng(17);
+    const std::uint32_t levels = GetParam();
     const std::vector<LightBounds> lights = randomLights(rng, 400);
     const std::vector<shader::LightTreeNode> tree = compactLightTree(buildLightTree(lights, 0, 0));
     Aabb bounds;
@@ -87,17 +90,20 @@ TEST(LightGrid, CellTablesKeepEveryClusterThatCouldLightAPointOfTheCell) {
     bounds.grow(Vec3{12, 12, 3});
     LightGridOptions options;
     options.maxWords = 1u << 18;
+    options.levels = levels;
     const std::vector<std::uint32_t> grid = buildLightGrid(tree, bounds, options);
-    ASSERT_GT(grid.size(), std::size_t(PN_LIGHT_GRID_TABLES));
-    const std::uint32_t clusters = grid[7];
-    ASSERT_GT(clusters, 16u);
-    ASSERT_LE(clusters, PN_LIGHT_GRID_MAX_CLUSTERS);
+    ASSERT_GT(grid.size(), std::size_t(PN_LIGHT_GRID_PREFIXES));
+    ASSERT_EQ(grid[PN_LIGHT_GRID_LEVELS], levels);
+    const std::uint32_t clusters = grid[PN_LIGHT_GRID_COUNT], prefixes = 1u << levels;
+    ASSERT_GT(clusters, prefixes / 2);
+    ASSERT_LE(clusters, prefixes);
+    const std::uint32_t* clusterWords = &grid[PN_LIGHT_GRID_PREFIXES + prefixes];
     // Every trail prefix leads to its cluster's node.
-    for (std::uint32_t prefix = 0; prefix < PN_LIGHT_GRID_MAX_CLUSTERS; ++prefix) {
+    for (std::uint32_t prefix = 0; prefix < prefixes; ++prefix) {
         const std::uint32_t c = grid[PN_LIGHT_GRID_PREFIXES + prefix];
         ASSERT_LT(c, clusters);
-        const std::uint32_t level = grid[PN_LIGHT_GRID_CLUSTERS + 2 * c + 1];
-        EXPECT_EQ(grid[PN_LIGHT_GRID_CLUSTERS + 2 * c], tree[recordAt(tree, prefix, level)].childOrLight);
+        const std::uint32_t level = clusterWords[2 * c + 1];
+        EXPECT_EQ(clusterWords[2 * c], tree[recordAt(tree, prefix, level)].childOrLight);
     }
     std::uniform_real_distribution<float> ux(-12, 12), uz(-3, 3);
     int checked = 0;
@@ -105,9 +111,9 @@ TEST(LightGrid, CellTablesKeepEveryClusterThatCouldLightAPointOfTheCell) {
         const Vec3 p{ux(rng), ux(rng), uz(rng)}, n = randomUnit(rng);
         const std::uint32_t table = lightGridTableAt(grid, p, n);
         ASSERT_NE(table, PN_NO_HIT);
-        for (std::uint32_t prefix = 0; prefix < PN_LIGHT_GRID_MAX_CLUSTERS; ++prefix) {
+        for (std::uint32_t prefix = 0; prefix < prefixes; ++prefix) {
             const std::uint32_t c = grid[PN_LIGHT_GRID_PREFIXES + prefix];
-            const shader::LightTreeNode& node = tree[recordAt(tree, prefix, grid[PN_LIGHT_GRID_CLUSTERS + 2 * c + 1])];
+            const shader::LightTreeNode& node = tree[recordAt(tree, prefix, clusterWords[2 * c + 1])];
             const shader::LightCluster exact{node.center,    node.radius,    node.axis,      node.phi,
                                              node.cosThetaO, node.sinThetaO, node.cosThetaE, (node.childOrLight & PN_LIGHT_NODE_TWO_SIDED) != 0};
             if (shader::clusterImportance(exact, p, n) <= 0) continue;
@@ -120,6 +126,8 @@ TEST(LightGrid, CellTablesKeepEveryClusterThatCouldLightAPointOfTheCell) {
     EXPECT_EQ(lightGridTableAt(grid, Vec3{0, 0, 50}, Vec3{0, 0, 1}), PN_NO_HIT);
     EXPECT_EQ(lightGridTableAt(grid, Vec3{0, 0, 0}, Vec3{0, 0, 0}), PN_NO_HIT);
 }
+
+INSTANTIATE_TEST_SUITE_P(LightGrid, LightGridLevels, testing::Values(5u, 7u));
 
 TEST(LightGrid, ShallowTreesKeepTheWalk) {
     std::mt19937 rng(5);
