@@ -94,6 +94,11 @@ float firstChildProbability(uint node, vec3 p, vec3 n, uint depth, out uint firs
     return a + b > 0.0 ? a / (a + b) : -1.0;
 }
 
+struct LightPick {
+    uint ref;   // LightRef index; PN_NO_LIGHT: no light can reach p
+    float pmf;  // probability of this pick at p
+};
+
 // The light grid (render/light_grid.h): the words after the tree's records in its buffer.
 layout(std430, set = 0, binding = PN_BINDING_LIGHT_TREE) readonly buffer LightGridBuffer { uint lightGrid[]; };
 
@@ -125,17 +130,31 @@ uint pickGridCluster(uint table, inout float pmf, inout uint rng) {
     return cluster;
 }
 
-// Where the walk goes on below a grid cluster: its node word and level.
-uvec2 lightGridCluster(uint cluster) {
+// A grid cluster's words: its node word and level (where a walk goes on below it), its first
+// light entry and its lights (0: walk below it).
+uvec4 lightGridCluster(uint cluster) {
     uint base = frame.lightGridOffset;
-    uint at = base + PN_LIGHT_GRID_PREFIXES + (1u << lightGrid[base + PN_LIGHT_GRID_LEVELS]) + 2u * cluster;
-    return uvec2(lightGrid[at], lightGrid[at + 1u]);
+    uint at = base + PN_LIGHT_GRID_PREFIXES + (1u << lightGrid[base + PN_LIGHT_GRID_LEVELS]) + PN_LIGHT_GRID_CLUSTER_WORDS * cluster;
+    return uvec4(lightGrid[at], lightGrid[at + 1u], lightGrid[at + 2u], lightGrid[at + 3u]);
 }
 
-struct LightPick {
-    uint ref;   // LightRef index; PN_NO_LIGHT: no light can reach p
-    float pmf;  // probability of this pick at p
-};
+// A light's probability within its grid cluster (lights > 0): its mass over the cluster's.
+float lightInClusterProbability(uint ref, uint lights) {
+    uint base = frame.lightGridOffset;
+    return lightGridProbability(lightGrid[base + lightGrid[base + PN_LIGHT_GRID_FIRST_MASS] + ref], lights);
+}
+
+// A light of a grid cluster drawn by power from the cluster's alias table: the choice the walk
+// below the cluster would make, in one draw. pmf: the cluster's probability.
+LightPick pickInCluster(uvec4 cluster, float pmf, inout uint rng) {
+    uint entries = frame.lightGridOffset + cluster.z;
+    uint slot, low;
+    umulExtended(rngNextUint(rng), cluster.w, slot, low);
+    uint entry = lightGrid[entries + 2u * slot];
+    uint coin = rngNextUint(rng) >> (32u - PN_LIGHT_GRID_MASS_BITS);
+    uint ref = lightGrid[entries + 2u * (coin < (entry & 0x1ffffu) ? slot : entry >> 17) + 1u];
+    return LightPick(ref, pmf * lightInClusterProbability(ref, cluster.w));
+}
 
 // Picks among the top-level lights with u in [0, 1) (a stratified number: a scene with a few
 // lights gives each its share of a pixel's samples), then down the light tree with fresh numbers
@@ -166,8 +185,9 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
     uint depth = 0u;
     uint table = lightGridTable(p, n);
     if (table != PN_NO_HIT) {
-        uvec2 cluster = lightGridCluster(pickGridCluster(table, pick.pmf, rng));
+        uvec4 cluster = lightGridCluster(pickGridCluster(table, pick.pmf, rng));
         if (!(pick.pmf > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
+        if (cluster.w != 0u) return pickInCluster(cluster, pick.pmf, rng);
         node = cluster.x;
         depth = cluster.y;
     }
@@ -204,7 +224,8 @@ float lightPickPmf(uint ref, vec3 p, vec3 n) {
         uint prefixMask = (1u << lightGrid[base + PN_LIGHT_GRID_LEVELS]) - 1u;
         uint index = lightGrid[base + PN_LIGHT_GRID_PREFIXES + (r.trailLo & prefixMask)];
         pmf *= lightGridProbability(lightGrid[table + 2u * index + 1u], lightGrid[base + PN_LIGHT_GRID_COUNT]);
-        uvec2 cluster = lightGridCluster(index);
+        uvec4 cluster = lightGridCluster(index);
+        if (cluster.w != 0u) return pmf * lightInClusterProbability(ref, cluster.w);
         node = cluster.x;
         depth = cluster.y;
     }

@@ -161,13 +161,19 @@ using namespace penumbra::gpu_types;
 // and leaves above it) by their importance bound over the whole cell and bin, in place of the
 // walk's importance levels. Words after the tree's records in its buffer, from
 // FrameUniforms.lightGridOffset: origin (3 floats), inverse cell size, cells along x, y and z,
-// the clusters' count, L, the first table's word; at PN_LIGHT_GRID_PREFIXES the cluster of every
-// trail prefix of L bits (2^L words), then each cluster's node word (childOrLight) and level; then
-// per cell (x fastest) and bin, one alias entry per cluster: (threshold | alias << 17, mass).
+// the clusters' count, L, the first table's word, the first mass's word; at PN_LIGHT_GRID_PREFIXES
+// the cluster of every trail prefix of L bits (2^L words), then each cluster's words (node word,
+// level, first light entry, lights); then per cluster an alias table over its lights by power
+// (what the walk below it would choose), one entry per light: (threshold | alias << 17, LightRef);
+// then per LightRef its mass in its cluster's table; then per cell (x fastest) and bin, one
+// alias entry per cluster: (threshold | alias << 17, mass). Every word offset is from the grid's
+// first word.
 #define PN_LIGHT_GRID_COUNT 7u             // header word: the clusters
 #define PN_LIGHT_GRID_LEVELS 8u            // header word: L
 #define PN_LIGHT_GRID_FIRST_TABLE 9u       // header word: where the tables start
+#define PN_LIGHT_GRID_FIRST_MASS 10u       // header word: where the lights' masses start (one per LightRef)
 #define PN_LIGHT_GRID_PREFIXES 16u         // word of the prefix -> cluster map
+#define PN_LIGHT_GRID_CLUSTER_WORDS 4u     // per cluster: node word, level, first light entry, lights (0: walk below)
 #define PN_LIGHT_GRID_MAX_LEVELS 8u        // at most 256 clusters
 #define PN_LIGHT_GRID_BINS 6u              // shading normals by their largest component: +x, -x, +y, -y, +z, -z
 #define PN_LIGHT_GRID_MASS_BITS 16u        // an entry's threshold is out of 2^16; a table's masses sum to 2^16 x clusters

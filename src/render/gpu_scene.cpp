@@ -176,10 +176,12 @@ std::uint32_t settingFromEnvironment(const char* name, std::uint32_t fallback, s
 
 // The light grid over where shading points lie (the world's BVH, or its top level). For
 // measurements: PENUMBRA_LIGHT_GRID=0 leaves it out (the plain walk), PENUMBRA_LIGHT_GRID_LEVELS
-// sets the tree level it picks among, PENUMBRA_LIGHT_GRID_MB its size cap.
+// sets the tree level it picks among, PENUMBRA_LIGHT_GRID_MB its size cap, and
+// PENUMBRA_LIGHT_GRID_DRAW=0 walks below the clusters instead of drawing from their tables.
 void addLightGrid(SceneArrays& out) {
     if (settingFromEnvironment("PENUMBRA_LIGHT_GRID", 1, 0, 1) == 0 || out.nodes.empty()) return;
     LightGridOptions options;
+    options.drawInClusters = settingFromEnvironment("PENUMBRA_LIGHT_GRID_DRAW", 1, 0, 1) != 0;
     options.levels = settingFromEnvironment("PENUMBRA_LIGHT_GRID_LEVELS", options.levels, 1, PN_LIGHT_GRID_MAX_LEVELS);
     options.maxWords = std::uint64_t(settingFromEnvironment("PENUMBRA_LIGHT_GRID_MB", std::uint32_t(options.maxWords * 4 >> 20), 1, 1024))
                        << 18;  // 2^18 words in a MiB

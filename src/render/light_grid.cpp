@@ -148,36 +148,81 @@ std::uint32_t lightGridTableAt(std::span<const std::uint32_t> grid, Vec3 p, Vec3
     return table == PN_NO_HIT ? PN_NO_HIT : grid[PN_LIGHT_GRID_FIRST_TABLE] + table * 2 * grid[PN_LIGHT_GRID_COUNT];
 }
 
-std::vector<std::uint32_t> buildLightGrid(std::span<const shader::LightTreeNode> tree, const Aabb& bounds,
-                                          const LightGridOptions& options) {
-    if (tree.empty() || bounds.empty()) return {};
-    const std::uint32_t levels = std::clamp(options.levels, 1u, PN_LIGHT_GRID_MAX_LEVELS);
-    const std::vector<Cluster> clusters = clustersOf(tree, levels);
-    if (!deeperThanTheLevels(clusters)) return {};
-    const auto count = std::uint32_t(clusters.size());
-    PN_CHECK(count <= (1u << levels));
-    const std::uint32_t firstTable = PN_LIGHT_GRID_PREFIXES + (1u << levels) + 2 * count;
-    const std::uint64_t tableWords = std::uint64_t(count) * 2;  // one cell's table for one bin
-    const std::uint64_t cellWords = PN_LIGHT_GRID_BINS * tableWords;
-    const std::uint64_t budget = options.maxWords > firstTable ? options.maxWords - firstTable : 0;
-    const GridShape g = shapeFor(bounds, budget / cellWords);
+namespace {
 
-    std::vector<std::uint32_t> words(firstTable + g.cells() * cellWords, 0u);
+// Below a cluster the walk would choose by power alone; the same choice in one draw: an alias
+// table per cluster over its lights (in the order a depth-first walk meets them) and, per light,
+// its mass there, which MIS reads back. A cluster that is a leaf, or too large for an alias index,
+// keeps the walk (count 0).
+struct ClusterPicks {
+    std::vector<std::uint32_t> entries;  // per light: (threshold | alias << 17, LightRef)
+    std::vector<std::uint32_t> masses;   // per LightRef: its mass in its cluster's table
+    std::vector<std::uint32_t> first, count;  // per cluster: its first entry, its lights
+};
+
+ClusterPicks clusterPicks(std::span<const shader::LightTreeNode> tree, const std::vector<Cluster>& clusters, bool draw) {
+    ClusterPicks out;
+    for (const Cluster& c : clusters) {
+        std::vector<std::uint32_t> refs;
+        std::vector<double> power;
+        std::vector<std::uint32_t> stack{c.record};
+        while (!stack.empty() && (c.word & PN_LIGHT_NODE_LEAF) == 0) {
+            const shader::LightTreeNode& n = tree[stack.back()];
+            stack.pop_back();
+            if (n.childOrLight & PN_LIGHT_NODE_LEAF) {
+                refs.push_back(n.childOrLight & PN_LIGHT_NODE_INDEX);
+                power.push_back(n.phi);
+                continue;
+            }
+            stack.push_back((n.childOrLight & PN_LIGHT_NODE_INDEX) + 1);
+            stack.push_back(n.childOrLight & PN_LIGHT_NODE_INDEX);
+        }
+        const bool aliased = draw && refs.size() > 1 && refs.size() < (1u << 15);
+        out.first.push_back(std::uint32_t(out.entries.size() / 2));
+        out.count.push_back(aliased ? std::uint32_t(refs.size()) : 0u);
+        if (!aliased) continue;
+        const std::vector<std::uint32_t> table = lightGridAliasTable(power);
+        for (std::size_t j = 0; j < refs.size(); ++j) {
+            out.entries.push_back(table[2 * j]);
+            out.entries.push_back(refs[j]);
+            if (refs[j] >= out.masses.size()) out.masses.resize(refs[j] + 1, 0u);
+            out.masses[refs[j]] = table[2 * j + 1];
+        }
+    }
+    return out;
+}
+
+// The header, the prefix map and the clusters' words (node word, level, first entry, count).
+void writeHeader(std::vector<std::uint32_t>& words, const GridShape& g, const std::vector<Cluster>& clusters,
+                 std::uint32_t levels, const ClusterPicks& picks, std::uint32_t firstEntry, std::uint32_t firstMass,
+                 std::uint32_t firstTable) {
     auto putFloat = [&](std::size_t at, float v) { std::memcpy(&words[at], &v, 4); };
     for (int k = 0; k < 3; ++k) putFloat(std::size_t(k), g.origin[k]);
     putFloat(3, 1.0f / g.cellSize);
     for (int k = 0; k < 3; ++k) words[4 + std::size_t(k)] = g.dims[k];
-    words[PN_LIGHT_GRID_COUNT] = count;
+    words[PN_LIGHT_GRID_COUNT] = std::uint32_t(clusters.size());
     words[PN_LIGHT_GRID_LEVELS] = levels;
     words[PN_LIGHT_GRID_FIRST_TABLE] = firstTable;
+    words[PN_LIGHT_GRID_FIRST_MASS] = firstMass;
     const std::uint32_t clusterWords = PN_LIGHT_GRID_PREFIXES + (1u << levels);
-    for (std::uint32_t i = 0; i < count; ++i) {
+    for (std::uint32_t i = 0; i < clusters.size(); ++i) {
         const Cluster& c = clusters[i];
         for (std::uint32_t rest = 0; rest < (1u << (levels - c.level)); ++rest)
             words[PN_LIGHT_GRID_PREFIXES + (c.prefix | (rest << c.level))] = i;
-        words[clusterWords + 2 * i] = c.word;
-        words[clusterWords + 2 * i + 1] = c.level;
+        std::uint32_t* w = &words[clusterWords + PN_LIGHT_GRID_CLUSTER_WORDS * i];
+        w[0] = c.word;
+        w[1] = c.level;
+        w[2] = firstEntry + 2 * picks.first[i];
+        w[3] = picks.count[i];
     }
+    std::copy(picks.entries.begin(), picks.entries.end(), words.begin() + firstEntry);
+    std::copy(picks.masses.begin(), picks.masses.end(), words.begin() + firstMass);
+}
+
+// Every cell's table for every bin: each cluster weighed by its bound widened to the cell and bin.
+void fillCellTables(std::vector<std::uint32_t>& words, const GridShape& g, std::span<const shader::LightTreeNode> tree,
+                    const std::vector<Cluster>& clusters, std::uint32_t firstTable) {
+    const auto count = std::uint32_t(clusters.size());
     // Every point the shaders file under a cell lies within its circumscribed sphere, widened for
     // the rounding of (p - origin) / size.
     const float reach = std::max({std::abs(g.origin.x), std::abs(g.origin.y), std::abs(g.origin.z)}) +
@@ -195,13 +240,36 @@ std::vector<std::uint32_t> buildLightGrid(std::span<const shader::LightTreeNode>
                 Vec3 axis{0.0f};
                 axis[int(bin / 2)] = bin % 2 == 0 ? 1.0f : -1.0f;
                 for (std::uint32_t i = 0; i < count; ++i)
-                    weights[i] = shader::clusterImportanceWithin(widenedCluster(tree[clusters[i].record], cellRadius), centre, axis,
-                                                                 true, binSin, kBinCos);
+                    weights[i] = shader::clusterImportanceWithin(widenedCluster(tree[clusters[i].record], cellRadius), centre,
+                                                                 axis, true, binSin, kBinCos);
                 const std::vector<std::uint32_t> table = lightGridAliasTable(weights);
-                std::copy(table.begin(), table.end(), words.begin() + std::ptrdiff_t(firstTable + (cell * PN_LIGHT_GRID_BINS + bin) * tableWords));
+                const std::size_t at = firstTable + (cell * PN_LIGHT_GRID_BINS + bin) * 2 * std::size_t(count);
+                std::copy(table.begin(), table.end(), words.begin() + std::ptrdiff_t(at));
             }
         }
     });
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> buildLightGrid(std::span<const shader::LightTreeNode> tree, const Aabb& bounds,
+                                          const LightGridOptions& options) {
+    if (tree.empty() || bounds.empty()) return {};
+    const std::uint32_t levels = std::clamp(options.levels, 1u, PN_LIGHT_GRID_MAX_LEVELS);
+    const std::vector<Cluster> clusters = clustersOf(tree, levels);
+    if (!deeperThanTheLevels(clusters)) return {};
+    const auto count = std::uint32_t(clusters.size());
+    PN_CHECK(count <= (1u << levels));
+    const ClusterPicks picks = clusterPicks(tree, clusters, options.drawInClusters);
+    const std::uint32_t firstEntry = PN_LIGHT_GRID_PREFIXES + (1u << levels) + PN_LIGHT_GRID_CLUSTER_WORDS * count;
+    const auto firstMass = std::uint32_t(firstEntry + picks.entries.size());
+    const auto firstTable = std::uint32_t(firstMass + picks.masses.size());
+    const std::uint64_t cellWords = std::uint64_t(PN_LIGHT_GRID_BINS) * count * 2;
+    const std::uint64_t budget = options.maxWords > firstTable ? options.maxWords - firstTable : 0;
+    const GridShape g = shapeFor(bounds, budget / cellWords);
+    std::vector<std::uint32_t> words(firstTable + g.cells() * cellWords, 0u);
+    writeHeader(words, g, clusters, levels, picks, firstEntry, firstMass, firstTable);
+    fillCellTables(words, g, tree, clusters, firstTable);
     return words;
 }
 

@@ -26,6 +26,9 @@ struct LightGridOptions {
     // The tables' size is capped at this many words (alias entries are two words each), which
     // sets the cell size: cubic cells, as many as fit.
     std::uint64_t maxWords = std::uint64_t(1) << 21;
+    // Below a cluster, one draw from its own alias table; false: the walk chooses level by level
+    // (the same distribution; for measurements).
+    bool drawInClusters = true;
 };
 
 // The grid's words over `bounds` (where shading points lie: the scene's geometry) for a compact

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "render/light_grid.h"
@@ -78,6 +79,55 @@ std::uint32_t recordAt(std::span<const shader::LightTreeNode> tree, std::uint32_
     return record;
 }
 
+// Each cluster's own alias table holds exactly the lights below it, each with the probability
+// power over the cluster's power that the walk below it would give (to the masses' rounding), and
+// the mass MIS reads back for a light is the one its table realises.
+void expectClusterPicksFollowPower(std::span<const std::uint32_t> grid, std::span<const shader::LightTreeNode> tree) {
+    const std::uint32_t clusters = grid[PN_LIGHT_GRID_COUNT];
+    const std::uint32_t* clusterWords = &grid[PN_LIGHT_GRID_PREFIXES + (1u << grid[PN_LIGHT_GRID_LEVELS])];
+    int aliased = 0;
+    for (std::uint32_t c = 0; c < clusters; ++c) {
+        const std::uint32_t* w = &clusterWords[PN_LIGHT_GRID_CLUSTER_WORDS * c];
+        if (w[0] & PN_LIGHT_NODE_LEAF) {
+            EXPECT_EQ(w[3], 0u);  // a single light: nothing to draw
+            continue;
+        }
+        ASSERT_GT(w[3], 1u);
+        ++aliased;
+        // The lights below the cluster's node, with their power.
+        std::map<std::uint32_t, double> below;
+        std::vector<std::uint32_t> stack{w[0] & PN_LIGHT_NODE_INDEX};
+        stack.push_back(stack.back() + 1);
+        double total = 0;
+        while (!stack.empty()) {
+            const shader::LightTreeNode& n = tree[stack.back()];
+            stack.pop_back();
+            if (n.childOrLight & PN_LIGHT_NODE_LEAF) {
+                below[n.childOrLight & PN_LIGHT_NODE_INDEX] = n.phi;
+                total += n.phi;
+            } else {
+                stack.push_back(n.childOrLight & PN_LIGHT_NODE_INDEX);
+                stack.push_back((n.childOrLight & PN_LIGHT_NODE_INDEX) + 1);
+            }
+        }
+        ASSERT_EQ(below.size(), w[3]);
+        std::vector<std::uint32_t> table;  // the cluster's entries as a plain alias table (threshold, mass)
+        for (std::uint32_t j = 0; j < w[3]; ++j) {
+            const std::uint32_t ref = grid[w[2] + 2 * j + 1];
+            ASSERT_EQ(below.count(ref), 1u) << "cluster " << c << " entry " << j;
+            table.push_back(grid[w[2] + 2 * j]);
+            table.push_back(grid[grid[PN_LIGHT_GRID_FIRST_MASS] + ref]);
+        }
+        for (std::uint32_t j = 0; j < w[3]; ++j) {
+            const std::uint32_t ref = grid[w[2] + 2 * j + 1];
+            const double p = double(table[2 * j + 1]) / (kOne * w[3]);
+            EXPECT_EQ(lightGridRealisedProbability(table, j), p) << "cluster " << c << " light " << ref;
+            EXPECT_NEAR(p, below[ref] / total, (w[3] + 1.0) / (kOne * w[3])) << "cluster " << c << " light " << ref;
+        }
+    }
+    EXPECT_GT(aliased, 0);
+}
+
 class LightGridLevels : public testing::TestWithParam<std::uint32_t> {};
 
 TEST_P(LightGridLevels, CellTablesKeepEveryClusterThatCouldLightAPointOfTheCell) {
@@ -102,9 +152,10 @@ TEST_P(LightGridLevels, CellTablesKeepEveryClusterThatCouldLightAPointOfTheCell)
     for (std::uint32_t prefix = 0; prefix < prefixes; ++prefix) {
         const std::uint32_t c = grid[PN_LIGHT_GRID_PREFIXES + prefix];
         ASSERT_LT(c, clusters);
-        const std::uint32_t level = clusterWords[2 * c + 1];
-        EXPECT_EQ(clusterWords[2 * c], tree[recordAt(tree, prefix, level)].childOrLight);
+        const std::uint32_t level = clusterWords[PN_LIGHT_GRID_CLUSTER_WORDS * c + 1];
+        EXPECT_EQ(clusterWords[PN_LIGHT_GRID_CLUSTER_WORDS * c], tree[recordAt(tree, prefix, level)].childOrLight);
     }
+    expectClusterPicksFollowPower(grid, tree);
     std::uniform_real_distribution<float> ux(-12, 12), uz(-3, 3);
     int checked = 0;
     for (int k = 0; k < 20000; ++k) {
@@ -113,7 +164,7 @@ TEST_P(LightGridLevels, CellTablesKeepEveryClusterThatCouldLightAPointOfTheCell)
         ASSERT_NE(table, PN_NO_HIT);
         for (std::uint32_t prefix = 0; prefix < prefixes; ++prefix) {
             const std::uint32_t c = grid[PN_LIGHT_GRID_PREFIXES + prefix];
-            const shader::LightTreeNode& node = tree[recordAt(tree, prefix, clusterWords[2 * c + 1])];
+            const shader::LightTreeNode& node = tree[recordAt(tree, prefix, clusterWords[PN_LIGHT_GRID_CLUSTER_WORDS * c + 1])];
             const shader::LightCluster exact{node.center,    node.radius,    node.axis,      node.phi,
                                              node.cosThetaO, node.sinThetaO, node.cosThetaE, (node.childOrLight & PN_LIGHT_NODE_TWO_SIDED) != 0};
             if (shader::clusterImportance(exact, p, n) <= 0) continue;
