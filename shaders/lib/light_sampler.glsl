@@ -43,15 +43,6 @@ float treeNodeImportance(LightTreeNode node, vec3 p, vec3 n) {
                                           node.cosThetaE, (node.childOrLight & PN_LIGHT_NODE_TWO_SIDED) != 0u), p, n);
 }
 
-// The light tree's importance at p and its root's childOrLight; 0 when the scene has no tree.
-float lightTreeRoot(vec3 p, vec3 n, out uint root) {
-    root = 0u;
-    if (frame.lightNodeCount == 0u) return 0.0;
-    LightTreeNode node = lightTree[0];
-    root = node.childOrLight;
-    return treeNodeImportance(node, p, n);
-}
-
 // A directional light's illuminance times the best cosine at the surface over its disk.
 float directionalImportance(PunctualLight l, vec3 n) {
     float cosI = abs(dot(n, l.direction));
@@ -102,16 +93,38 @@ struct LightPick {
 // The light grid (render/light_grid.h): the words after the tree's records in its buffer.
 layout(std430, set = 0, binding = PN_BINDING_LIGHT_TREE) readonly buffer LightGridBuffer { uint lightGrid[]; };
 
-// The first word of the grid's table for the cell that holds p and the bin of normal n; PN_NO_HIT
-// where the walk weighs the tree's first levels itself: no grid, no surface, or p off the grid.
+// The grid's table for the cell that holds p and the bin of normal n (cell * PN_LIGHT_GRID_BINS +
+// bin); PN_NO_HIT where the walk weighs the tree's first levels itself: no grid, no surface, or p
+// off the grid.
 uint lightGridTable(vec3 p, vec3 n) {
     uint base = frame.lightGridOffset;
     if (!PN_HAS(PN_FEATURE_LIGHT_GRID) || base == 0u) return PN_NO_HIT;
     vec3 origin = uintBitsToFloat(uvec3(lightGrid[base], lightGrid[base + 1u], lightGrid[base + 2u]));
-    uint table = lightGridTableIndex((p - origin) * uintBitsToFloat(lightGrid[base + 3u]), lightGrid[base + 4u],
-                                     lightGrid[base + 5u], lightGrid[base + 6u], n);
-    if (table == PN_NO_HIT) return PN_NO_HIT;
+    return lightGridTableIndex((p - origin) * uintBitsToFloat(lightGrid[base + 3u]), lightGrid[base + 4u],
+                               lightGrid[base + 5u], lightGrid[base + 6u], n);
+}
+
+// The first word of a grid table's alias entries.
+uint lightGridTableWord(uint table) {
+    uint base = frame.lightGridOffset;
     return base + lightGrid[base + PN_LIGHT_GRID_FIRST_TABLE] + table * 2u * lightGrid[base + PN_LIGHT_GRID_COUNT];
+}
+
+// The light tree's weight at p against the top-level lights, and its root's childOrLight; 0 when
+// the scene has no tree. Where the grid has a table for p, the table's bound of the root over the
+// whole cell and bin stands in for the root's bound at p (one bound fewer per pick and per pmf;
+// pickLight and lightPickPmf both use it, so the pmf stays exact).
+float lightTreeWeight(vec3 p, vec3 n, uint table, out uint root) {
+    root = 0u;
+    if (frame.lightNodeCount == 0u) return 0.0;
+    if (table != PN_NO_HIT) {
+        uint base = frame.lightGridOffset;
+        root = lightTree[0].childOrLight;
+        return uintBitsToFloat(lightGrid[base + lightGrid[base + PN_LIGHT_GRID_FIRST_TREE] + table]);
+    }
+    LightTreeNode node = lightTree[0];
+    root = node.childOrLight;
+    return treeNodeImportance(node, p, n);
 }
 
 // A grid table entry's probability: its mass over the table's.
@@ -168,7 +181,8 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
         return LightPick(k, 1.0 / float(frame.lightRefCount));
     }
     uint node;
-    float tree = lightTreeRoot(p, n, node);
+    uint table = lightGridTable(p, n);
+    float tree = lightTreeWeight(p, n, table, node);
     float total = totalLightImportance(tree, p, n);
     if (!(total > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
     float x = u * total;
@@ -183,9 +197,8 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
     if (!(tree > 0.0)) return pick;  // rounding carried x past the last top-level light
     pick = LightPick(PN_NO_LIGHT, tree / total);
     uint depth = 0u;
-    uint table = lightGridTable(p, n);
     if (table != PN_NO_HIT) {
-        uvec4 cluster = lightGridCluster(pickGridCluster(table, pick.pmf, rng));
+        uvec4 cluster = lightGridCluster(pickGridCluster(lightGridTableWord(table), pick.pmf, rng));
         if (!(pick.pmf > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
         if (cluster.w != 0u) return pickInCluster(cluster, pick.pmf, rng);
         node = cluster.x;
@@ -211,19 +224,19 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
 float lightPickPmf(uint ref, vec3 p, vec3 n) {
     if (frame.lightPickUniform != 0u) return 1.0 / float(frame.lightRefCount);
     uint node;
-    float tree = lightTreeRoot(p, n, node);
+    uint table = lightGridTable(p, n);
+    float tree = lightTreeWeight(p, n, table, node);
     float total = totalLightImportance(tree, p, n);
     if (!(total > 0.0)) return 0.0;
     if (ref < frame.topLightCount) return topLightImportance(ref, p, n) / total;
     float pmf = tree / total;
     LightRef r = lights[ref];
     uint depth = 0u;
-    uint table = lightGridTable(p, n);
     if (table != PN_NO_HIT) {
         uint base = frame.lightGridOffset;
         uint prefixMask = (1u << lightGrid[base + PN_LIGHT_GRID_LEVELS]) - 1u;
         uint index = lightGrid[base + PN_LIGHT_GRID_PREFIXES + (r.trailLo & prefixMask)];
-        pmf *= lightGridProbability(lightGrid[table + 2u * index + 1u], lightGrid[base + PN_LIGHT_GRID_COUNT]);
+        pmf *= lightGridProbability(lightGrid[lightGridTableWord(table) + 2u * index + 1u], lightGrid[base + PN_LIGHT_GRID_COUNT]);
         uvec4 cluster = lightGridCluster(index);
         if (cluster.w != 0u) return pmf * lightInClusterProbability(ref, cluster.w);
         node = cluster.x;

@@ -165,13 +165,15 @@ using namespace penumbra::gpu_types;
 // the cluster of every trail prefix of L bits (2^L words), then each cluster's words (node word,
 // level, first light entry, lights); then per cluster an alias table over its lights by power
 // (what the walk below it would choose), one entry per light: (threshold | alias << 17, LightRef);
-// then per LightRef its mass in its cluster's table; then per cell (x fastest) and bin, one
-// alias entry per cluster: (threshold | alias << 17, mass). Every word offset is from the grid's
-// first word.
+// then per LightRef its mass in its cluster's table; then per cell (x fastest) and bin, the tree
+// root's bound over the cell and bin (a float: the tree's weight against the top-level lights);
+// then per cell and bin, one alias entry per cluster: (threshold | alias << 17, mass). Every word
+// offset is from the grid's first word.
 #define PN_LIGHT_GRID_COUNT 7u             // header word: the clusters
 #define PN_LIGHT_GRID_LEVELS 8u            // header word: L
 #define PN_LIGHT_GRID_FIRST_TABLE 9u       // header word: where the tables start
 #define PN_LIGHT_GRID_FIRST_MASS 10u       // header word: where the lights' masses start (one per LightRef)
+#define PN_LIGHT_GRID_FIRST_TREE 11u       // header word: where the tree's weights start (one per table)
 #define PN_LIGHT_GRID_PREFIXES 16u         // word of the prefix -> cluster map
 #define PN_LIGHT_GRID_CLUSTER_WORDS 4u     // per cluster: node word, level, first light entry, lights (0: walk below)
 #define PN_LIGHT_GRID_MAX_LEVELS 8u        // at most 256 clusters

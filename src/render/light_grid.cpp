@@ -193,17 +193,21 @@ ClusterPicks clusterPicks(std::span<const shader::LightTreeNode> tree, const std
 }
 
 // The header, the prefix map and the clusters' words (node word, level, first entry, count).
+struct GridLayout {
+    std::uint32_t firstEntry, firstMass, firstTree, firstTable;
+};
+
 void writeHeader(std::vector<std::uint32_t>& words, const GridShape& g, const std::vector<Cluster>& clusters,
-                 std::uint32_t levels, const ClusterPicks& picks, std::uint32_t firstEntry, std::uint32_t firstMass,
-                 std::uint32_t firstTable) {
-    auto putFloat = [&](std::size_t at, float v) { std::memcpy(&words[at], &v, 4); };
+                 std::uint32_t levels, const ClusterPicks& picks, const GridLayout& at) {
+    auto putFloat = [&](std::size_t word, float v) { std::memcpy(&words[word], &v, 4); };
     for (int k = 0; k < 3; ++k) putFloat(std::size_t(k), g.origin[k]);
     putFloat(3, 1.0f / g.cellSize);
     for (int k = 0; k < 3; ++k) words[4 + std::size_t(k)] = g.dims[k];
     words[PN_LIGHT_GRID_COUNT] = std::uint32_t(clusters.size());
     words[PN_LIGHT_GRID_LEVELS] = levels;
-    words[PN_LIGHT_GRID_FIRST_TABLE] = firstTable;
-    words[PN_LIGHT_GRID_FIRST_MASS] = firstMass;
+    words[PN_LIGHT_GRID_FIRST_TABLE] = at.firstTable;
+    words[PN_LIGHT_GRID_FIRST_MASS] = at.firstMass;
+    words[PN_LIGHT_GRID_FIRST_TREE] = at.firstTree;
     const std::uint32_t clusterWords = PN_LIGHT_GRID_PREFIXES + (1u << levels);
     for (std::uint32_t i = 0; i < clusters.size(); ++i) {
         const Cluster& c = clusters[i];
@@ -212,16 +216,17 @@ void writeHeader(std::vector<std::uint32_t>& words, const GridShape& g, const st
         std::uint32_t* w = &words[clusterWords + PN_LIGHT_GRID_CLUSTER_WORDS * i];
         w[0] = c.word;
         w[1] = c.level;
-        w[2] = firstEntry + 2 * picks.first[i];
+        w[2] = at.firstEntry + 2 * picks.first[i];
         w[3] = picks.count[i];
     }
-    std::copy(picks.entries.begin(), picks.entries.end(), words.begin() + firstEntry);
-    std::copy(picks.masses.begin(), picks.masses.end(), words.begin() + firstMass);
+    std::copy(picks.entries.begin(), picks.entries.end(), words.begin() + at.firstEntry);
+    std::copy(picks.masses.begin(), picks.masses.end(), words.begin() + at.firstMass);
 }
 
-// Every cell's table for every bin: each cluster weighed by its bound widened to the cell and bin.
+// Every cell's table for every bin: each cluster weighed by its bound widened to the cell and bin;
+// and the tree's root weighed the same way.
 void fillCellTables(std::vector<std::uint32_t>& words, const GridShape& g, std::span<const shader::LightTreeNode> tree,
-                    const std::vector<Cluster>& clusters, std::uint32_t firstTable) {
+                    const std::vector<Cluster>& clusters, const GridLayout& layout) {
     const auto count = std::uint32_t(clusters.size());
     // Every point the shaders file under a cell lies within its circumscribed sphere, widened for
     // the rounding of (p - origin) / size.
@@ -243,8 +248,11 @@ void fillCellTables(std::vector<std::uint32_t>& words, const GridShape& g, std::
                     weights[i] = shader::clusterImportanceWithin(widenedCluster(tree[clusters[i].record], cellRadius), centre,
                                                                  axis, true, binSin, kBinCos);
                 const std::vector<std::uint32_t> table = lightGridAliasTable(weights);
-                const std::size_t at = firstTable + (cell * PN_LIGHT_GRID_BINS + bin) * 2 * std::size_t(count);
-                std::copy(table.begin(), table.end(), words.begin() + std::ptrdiff_t(at));
+                const std::size_t index = cell * PN_LIGHT_GRID_BINS + bin;
+                std::copy(table.begin(), table.end(), words.begin() + std::ptrdiff_t(layout.firstTable + index * 2 * count));
+                const float root = shader::clusterImportanceWithin(widenedCluster(tree[0], cellRadius), centre, axis, true,
+                                                                   binSin, kBinCos);
+                std::memcpy(&words[layout.firstTree + index], &root, 4);
             }
         }
     });
@@ -261,15 +269,17 @@ std::vector<std::uint32_t> buildLightGrid(std::span<const shader::LightTreeNode>
     const auto count = std::uint32_t(clusters.size());
     PN_CHECK(count <= (1u << levels));
     const ClusterPicks picks = clusterPicks(tree, clusters, options.drawInClusters);
-    const std::uint32_t firstEntry = PN_LIGHT_GRID_PREFIXES + (1u << levels) + PN_LIGHT_GRID_CLUSTER_WORDS * count;
-    const auto firstMass = std::uint32_t(firstEntry + picks.entries.size());
-    const auto firstTable = std::uint32_t(firstMass + picks.masses.size());
-    const std::uint64_t cellWords = std::uint64_t(PN_LIGHT_GRID_BINS) * count * 2;
-    const std::uint64_t budget = options.maxWords > firstTable ? options.maxWords - firstTable : 0;
+    GridLayout at{};
+    at.firstEntry = PN_LIGHT_GRID_PREFIXES + (1u << levels) + PN_LIGHT_GRID_CLUSTER_WORDS * count;
+    at.firstMass = std::uint32_t(at.firstEntry + picks.entries.size());
+    at.firstTree = std::uint32_t(at.firstMass + picks.masses.size());
+    const std::uint64_t cellWords = std::uint64_t(PN_LIGHT_GRID_BINS) * (count * 2 + 1);  // tables and tree weights
+    const std::uint64_t budget = options.maxWords > at.firstTree ? options.maxWords - at.firstTree : 0;
     const GridShape g = shapeFor(bounds, budget / cellWords);
-    std::vector<std::uint32_t> words(firstTable + g.cells() * cellWords, 0u);
-    writeHeader(words, g, clusters, levels, picks, firstEntry, firstMass, firstTable);
-    fillCellTables(words, g, tree, clusters, firstTable);
+    at.firstTable = std::uint32_t(at.firstTree + g.cells() * PN_LIGHT_GRID_BINS);
+    std::vector<std::uint32_t> words(at.firstTree + g.cells() * cellWords, 0u);
+    writeHeader(words, g, clusters, levels, picks, at);
+    fillCellTables(words, g, tree, clusters, at);
     return words;
 }
 

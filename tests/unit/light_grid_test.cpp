@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <random>
 
@@ -162,6 +163,16 @@ TEST_P(LightGridLevels, CellTablesKeepEveryClusterThatCouldLightAPointOfTheCell)
         const Vec3 p{ux(rng), ux(rng), uz(rng)}, n = randomUnit(rng);
         const std::uint32_t table = lightGridTableAt(grid, p, n);
         ASSERT_NE(table, PN_NO_HIT);
+        // The tree's weight against the top-level lights: the root's bound over the cell and bin.
+        const std::uint32_t index = (table - grid[PN_LIGHT_GRID_FIRST_TABLE]) / (2 * clusters);
+        float treeWeight;
+        std::memcpy(&treeWeight, &grid[grid[PN_LIGHT_GRID_FIRST_TREE] + index], 4);
+        const shader::LightTreeNode& root = tree[0];
+        const shader::LightCluster rootBounds{root.center,    root.radius,    root.axis,      root.phi,
+                                              root.cosThetaO, root.sinThetaO, root.cosThetaE, (root.childOrLight & PN_LIGHT_NODE_TWO_SIDED) != 0};
+        if (shader::clusterImportance(rootBounds, p, n) > 0) {
+            ASSERT_GT(treeWeight, 0.0f);
+        }
         for (std::uint32_t prefix = 0; prefix < prefixes; ++prefix) {
             const std::uint32_t c = grid[PN_LIGHT_GRID_PREFIXES + prefix];
             const shader::LightTreeNode& node = tree[recordAt(tree, prefix, clusterWords[PN_LIGHT_GRID_CLUSTER_WORDS * c + 1])];
