@@ -263,6 +263,9 @@ void fillCellTables(std::vector<std::uint32_t>& words, const GridShape& g, std::
 std::vector<std::uint32_t> buildLightGrid(std::span<const shader::LightTreeNode> tree, const Aabb& bounds,
                                           const LightGridOptions& options) {
     if (tree.empty() || bounds.empty()) return {};
+    // A scene spanning more than a float can hold (its extent overflows) keeps the walk.
+    const Vec3 extent = bounds.extent();
+    if (!std::isfinite(extent.x) || !std::isfinite(extent.y) || !std::isfinite(extent.z)) return {};
     const std::uint32_t levels = std::clamp(options.levels, 1u, PN_LIGHT_GRID_MAX_LEVELS);
     const std::vector<Cluster> clusters = clustersOf(tree, levels);
     if (!deeperThanTheLevels(clusters)) return {};

@@ -33,7 +33,7 @@ struct LightGridOptions {
 
 // The grid's words over `bounds` (where shading points lie: the scene's geometry) for a compact
 // light tree (compactLightTree), or nothing where a grid would not help: no tree, a tree no
-// deeper than options.levels (the walk weighs every light there), or empty bounds.
+// deeper than options.levels (the walk weighs every light there), or empty or unbounded bounds.
 std::vector<std::uint32_t> buildLightGrid(std::span<const shader::LightTreeNode> tree, const Aabb& bounds,
                                           const LightGridOptions& options = {});
 

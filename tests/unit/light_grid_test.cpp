@@ -201,5 +201,19 @@ TEST(LightGrid, ShallowTreesKeepTheWalk) {
     EXPECT_TRUE(buildLightGrid({}, bounds).empty());
 }
 
+TEST(LightGrid, BoundsBeyondFloatsKeepTheWalk) {
+    std::mt19937 rng(8);
+    const std::vector<shader::LightTreeNode> tree = compactLightTree(buildLightTree(randomLights(rng, 400), 0, 0));
+    Aabb huge;
+    huge.grow(Vec3{-3e38f, 0, 0});
+    huge.grow(Vec3{3e38f, 1, 1});  // its extent overflows to infinity
+    EXPECT_TRUE(buildLightGrid(tree, huge).empty());
+    Aabb point;
+    point.grow(Vec3{1, 2, 3});  // no extent at all: one cell
+    const std::vector<std::uint32_t> grid = buildLightGrid(tree, point);
+    ASSERT_FALSE(grid.empty());
+    EXPECT_EQ(grid[4] * grid[5] * grid[6], 1u);
+}
+
 }  // namespace
 }  // namespace penumbra
