@@ -14,10 +14,11 @@
 // PN_LIGHT_TREE_IMPORTANCE_LEVELS levels evaluate them; below, clusters are small and children
 // are chosen by power. The tree's nodes (LightTreeNode) carry what the bound needs precomputed,
 // and the bound spends as few square roots and divisions as it can. Where the tree is deeper than
-// those levels and the scene has a light grid (render/light_grid.h), the importance levels are
-// not walked at all: the cell that holds the point and the bin of its normal hold an alias table
-// over the clusters on that level, weighed by the same bound widened to the whole cell and bin;
-// MIS reads the drawn cluster's probability from the same table.
+// those levels and the scene has a light grid (render/light_grid.h), the tree is not walked at
+// all: the cell that holds the point and the bin of its normal hold an alias table over the
+// clusters on that level, weighed by the same bound widened to the whole cell and bin, and the
+// tree's weight against the top-level lights; each cluster holds an alias table over its lights
+// by power. MIS reads the drawn probabilities back from the same tables.
 #ifndef PN_LIGHT_SAMPLER_GLSL
 #define PN_LIGHT_SAMPLER_GLSL
 
