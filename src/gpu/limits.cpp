@@ -4,19 +4,15 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "core/environment.h"
 #include "core/error.h"
 
 namespace penumbra::gpu {
 namespace {
 
-// A positive number of bytes from the environment, or `fallback`.
+// A positive number of bytes from the environment, at most `fallback` (a test may only lower a limit).
 std::uint64_t lowered(const char* variable, std::uint64_t fallback) {
-    const char* text = std::getenv(variable);
-    if (!text || !*text) return fallback;
-    char* end = nullptr;
-    const unsigned long long value = std::strtoull(text, &end, 10);
-    if (*end != '\0' || value == 0) throw Error(std::string(variable) + "='" + text + "' is not a positive number of bytes");
-    return std::min<std::uint64_t>(value, fallback);
+    return std::min(environmentSetting(variable, fallback, 1, UINT64_MAX), fallback);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "bvh/sprite.h"
 #include "bvh/triangle.h"
 #include "bvh/wide.h"
+#include "core/environment.h"
 #include "core/error.h"
 #include "render/env_table.h"
 #include "render/instance_arrays.h"
@@ -162,29 +163,16 @@ void addLightList(const Scene& scene, std::span<const EmissiveTriangle> emissive
     out.topLightCount = list.topCount;
 }
 
-// A whole number from the environment variable `name` in [low, high], or `fallback` when unset.
-std::uint32_t settingFromEnvironment(const char* name, std::uint32_t fallback, std::uint32_t low, std::uint32_t high) {
-    const char* text = std::getenv(name);
-    if (!text || !*text) return fallback;
-    char* end = nullptr;
-    const unsigned long value = std::strtoul(text, &end, 10);
-    if (*end != '\0' || text[0] == '-' || value < low || value > high)
-        throw UsageError(std::string(name) + " must be a whole number from " + std::to_string(low) + " to " +
-                         std::to_string(high) + " (got '" + text + "')");
-    return std::uint32_t(value);
-}
-
 // The light grid over where shading points lie (the world's BVH, or its top level). For
 // measurements: PENUMBRA_LIGHT_GRID=0 leaves it out (the plain walk), PENUMBRA_LIGHT_GRID_LEVELS
 // sets the tree level it picks among, PENUMBRA_LIGHT_GRID_MB its size cap, and
 // PENUMBRA_LIGHT_GRID_DRAW=0 walks below the clusters instead of drawing from their tables.
 void addLightGrid(SceneArrays& out) {
-    if (settingFromEnvironment("PENUMBRA_LIGHT_GRID", 1, 0, 1) == 0 || out.nodes.empty()) return;
+    if (environmentSetting("PENUMBRA_LIGHT_GRID", 1, 0, 1) == 0 || out.nodes.empty()) return;
     LightGridOptions options;
-    options.drawInClusters = settingFromEnvironment("PENUMBRA_LIGHT_GRID_DRAW", 1, 0, 1) != 0;
-    options.levels = settingFromEnvironment("PENUMBRA_LIGHT_GRID_LEVELS", options.levels, 1, PN_LIGHT_GRID_MAX_LEVELS);
-    options.maxWords = std::uint64_t(settingFromEnvironment("PENUMBRA_LIGHT_GRID_MB", std::uint32_t(options.maxWords * 4 >> 20), 1, 1024))
-                       << 18;  // 2^18 words in a MiB
+    options.drawInClusters = environmentSetting("PENUMBRA_LIGHT_GRID_DRAW", 1, 0, 1) != 0;
+    options.levels = std::uint32_t(environmentSetting("PENUMBRA_LIGHT_GRID_LEVELS", options.levels, 1, PN_LIGHT_GRID_MAX_LEVELS));
+    options.maxWords = environmentSetting("PENUMBRA_LIGHT_GRID_MB", options.maxWords * 4 >> 20, 1, 1024) << 18;  // 2^18 words in a MiB
     const shader::BvhNode& root = out.nodes[out.instances.empty() ? 0 : out.topRoot];
     Aabb bounds;
     bounds.grow(root.boundsMin);

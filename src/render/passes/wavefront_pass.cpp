@@ -6,6 +6,7 @@
 #include <cstring>
 #include <string>
 
+#include "core/environment.h"
 #include "core/error.h"
 #include "core/median.h"
 #include "gpu/check.h"
@@ -32,13 +33,7 @@ constexpr const char* kStageNames[kStageCount] = {"start", "extend", "shade", "s
 constexpr std::uint32_t kDefaultTailPaths = 16384;
 
 std::uint32_t tailPathsSetting() {
-    const char* text = std::getenv("PENUMBRA_WAVE_TAIL_PATHS");
-    if (!text || !*text) return kDefaultTailPaths;
-    char* end = nullptr;
-    const unsigned long long value = std::strtoull(text, &end, 10);
-    if (*end != '\0' || text[0] == '-')
-        throw UsageError(std::string("PENUMBRA_WAVE_TAIL_PATHS must be a whole number of paths (got '") + text + "')");
-    return std::uint32_t(std::min<unsigned long long>(value, UINT32_MAX));
+    return std::uint32_t(environmentSetting("PENUMBRA_WAVE_TAIL_PATHS", kDefaultTailPaths, 0, UINT32_MAX));
 }
 
 }  // namespace
