@@ -63,7 +63,8 @@ float topLightImportance(uint k, vec3 p, vec3 n) {
 // The tree's importance plus every top-level light's: the normaliser of every pick at p.
 float totalLightImportance(float tree, vec3 p, vec3 n) {
     float total = tree;
-    for (uint k = 0u; k < frame.topLightCount; ++k) total += topLightImportance(k, p, n);
+    uint count = PN_HAS(PN_FEATURE_ONE_TOP_LIGHT) ? 1u : frame.topLightCount;
+    for (uint k = 0u; k < count; ++k) total += topLightImportance(k, p, n);
     return total;
 }
 
@@ -131,15 +132,20 @@ float lightTreeWeight(vec3 p, vec3 n, uint table, out uint root) {
 // A grid table entry's probability: its mass over the table's.
 float lightGridProbability(uint mass, uint clusters) { return float(mass) / float(clusters << PN_LIGHT_GRID_MASS_BITS); }
 
-// A cluster drawn from a grid table (Vose's alias method, on integers: the probability drawn is
-// exactly the mass the table stores); pmf is multiplied by its probability.
+// One draw from the alias table of `count` entries at word `entries` of the grid (Vose's alias
+// method, on integers: the probability drawn is exactly the mass the table stores): an entry's index.
+uint aliasDraw(uint entries, uint count, inout uint rng) {
+    uint slot, low;
+    umulExtended(rngNextUint(rng), count, slot, low);  // floor(bits * count / 2^32)
+    uint entry = lightGrid[entries + 2u * slot];
+    uint coin = rngNextUint(rng) >> (32u - PN_LIGHT_GRID_MASS_BITS);
+    return coin < (entry & PN_LIGHT_GRID_THRESHOLD_MASK) ? slot : entry >> PN_LIGHT_GRID_ALIAS_SHIFT;
+}
+
+// A cluster drawn from a grid table; pmf is multiplied by its probability.
 uint pickGridCluster(uint table, inout float pmf, inout uint rng) {
     uint clusters = lightGrid[frame.lightGridOffset + PN_LIGHT_GRID_COUNT];
-    uint slot, low;
-    umulExtended(rngNextUint(rng), clusters, slot, low);  // floor(bits * clusters / 2^32)
-    uint entry = lightGrid[table + 2u * slot];
-    uint coin = rngNextUint(rng) >> (32u - PN_LIGHT_GRID_MASS_BITS);
-    uint cluster = coin < (entry & 0x1ffffu) ? slot : entry >> 17;
+    uint cluster = aliasDraw(table, clusters, rng);
     pmf *= lightGridProbability(lightGrid[table + 2u * cluster + 1u], clusters);
     return cluster;
 }
@@ -162,12 +168,40 @@ float lightInClusterProbability(uint ref, uint lights) {
 // below the cluster would make, in one draw. pmf: the cluster's probability.
 LightPick pickInCluster(uvec4 cluster, float pmf, inout uint rng) {
     uint entries = frame.lightGridOffset + cluster.z;
-    uint slot, low;
-    umulExtended(rngNextUint(rng), cluster.w, slot, low);
-    uint entry = lightGrid[entries + 2u * slot];
-    uint coin = rngNextUint(rng) >> (32u - PN_LIGHT_GRID_MASS_BITS);
-    uint ref = lightGrid[entries + 2u * (coin < (entry & 0x1ffffu) ? slot : entry >> 17) + 1u];
+    uint ref = lightGrid[entries + 2u * aliasDraw(entries, cluster.w, rng) + 1u];
     return LightPick(ref, pmf * lightInClusterProbability(ref, cluster.w));
+}
+
+// The first choice of a pick, with u in [0, 1): one of the top-level lights (returns false, `pick`
+// is final) or the tree (returns true, `pick` holds the tree's probability). A kernel specialised
+// for one top-level light (PN_FEATURE_ONE_TOP_LIGHT) weighs its bound once instead of twice (once
+// for the normaliser, once to choose): the same numbers, so lightPickPmf agrees.
+bool pickTopLevel(vec3 p, vec3 n, float u, float tree, out LightPick pick) {
+    pick = LightPick(PN_NO_LIGHT, 0.0);
+    if (PN_HAS(PN_FEATURE_ONE_TOP_LIGHT)) {
+        float w = topLightImportance(0u, p, n);
+        float total = tree + w;
+        if (!(total > 0.0)) return false;
+        if (w > 0.0) {
+            pick = LightPick(0u, w / total);
+            if (u * total < w || !(tree > 0.0)) return false;
+        }
+        pick = LightPick(PN_NO_LIGHT, tree / total);
+        return true;
+    }
+    float total = totalLightImportance(tree, p, n);
+    if (!(total > 0.0)) return false;
+    float x = u * total;
+    for (uint k = 0u; k < frame.topLightCount; ++k) {
+        float w = topLightImportance(k, p, n);
+        if (!(w > 0.0)) continue;
+        pick = LightPick(k, w / total);
+        if (x < w) return false;
+        x -= w;
+    }
+    if (!(tree > 0.0)) return false;  // rounding carried x past the last top-level light
+    pick = LightPick(PN_NO_LIGHT, tree / total);
+    return true;
 }
 
 // Picks among the top-level lights with u in [0, 1) (a stratified number: a scene with a few
@@ -184,19 +218,8 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
     uint node;
     uint table = lightGridTable(p, n);
     float tree = lightTreeWeight(p, n, table, node);
-    float total = totalLightImportance(tree, p, n);
-    if (!(total > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
-    float x = u * total;
-    LightPick pick = LightPick(PN_NO_LIGHT, 0.0);
-    for (uint k = 0u; k < frame.topLightCount; ++k) {
-        float w = topLightImportance(k, p, n);
-        if (!(w > 0.0)) continue;
-        pick = LightPick(k, w / total);
-        if (x < w) return pick;
-        x -= w;
-    }
-    if (!(tree > 0.0)) return pick;  // rounding carried x past the last top-level light
-    pick = LightPick(PN_NO_LIGHT, tree / total);
+    LightPick pick;
+    if (!pickTopLevel(p, n, u, tree, pick)) return pick;
     uint depth = 0u;
     if (table != PN_NO_HIT) {
         uvec4 cluster = lightGridCluster(pickGridCluster(lightGridTableWord(table), pick.pmf, rng));

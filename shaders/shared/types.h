@@ -89,6 +89,9 @@ using namespace penumbra::gpu_types;
 #define PN_FEATURE_WIDE_BVH 2048u  // --accel wide (lib/wide_bvh.glsl); other kernels carry none of its code
 #define PN_FEATURE_LIGHT_GRID 4096u // light picks from the light grid (render/light_grid.h); without one, none of its code
 #define PN_FEATURE_ALL 0x1fffu   // every feature above
+// Not a capability but a promise, so not in PN_FEATURE_ALL (which must handle any scene): the
+// scene has exactly one top-level light (a WAD level's torch), whose bound a pick then weighs once.
+#define PN_FEATURE_ONE_TOP_LIGHT 8192u
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic
@@ -179,6 +182,8 @@ using namespace penumbra::gpu_types;
 #define PN_LIGHT_GRID_MAX_LEVELS 8u        // at most 256 clusters
 #define PN_LIGHT_GRID_BINS 6u              // shading normals by their largest component: +x, -x, +y, -y, +z, -z
 #define PN_LIGHT_GRID_MASS_BITS 16u        // an entry's threshold is out of 2^16; a table's masses sum to 2^16 x clusters
+#define PN_LIGHT_GRID_ALIAS_SHIFT 17u      // an alias entry's word: threshold (0 to 2^16, 17 bits) | alias << 17
+#define PN_LIGHT_GRID_THRESHOLD_MASK 0x1ffffu
 #define PN_LIGHT_NODE_LEAF 0x80000000u       // LightNode / LightTreeNode.childOrLight: a leaf
 #define PN_LIGHT_NODE_TWO_SIDED 0x40000000u  // LightTreeNode.childOrLight: emits both ways
 #define PN_LIGHT_NODE_INDEX 0x3fffffffu      // LightTreeNode.childOrLight: the child record or the LightRef
@@ -639,6 +644,9 @@ PN_STRUCT(BsdfTestResult) {
 // Layout checks: every offset the shader relies on. A failure here means a field moved.
 static_assert(PN_LIGHT_GRID_FIRST_TABLE < PN_LIGHT_GRID_PREFIXES && PN_LIGHT_GRID_MAX_LEVELS < 15,
               "the light grid's header words come before its prefixes; an alias fits in 15 bits");
+static_assert(PN_LIGHT_GRID_ALIAS_SHIFT == PN_LIGHT_GRID_MASS_BITS + 1 &&
+                  PN_LIGHT_GRID_THRESHOLD_MASK == (1u << PN_LIGHT_GRID_ALIAS_SHIFT) - 1u,
+              "an alias entry's threshold (up to a whole 2^16) fits below its alias");
 static_assert(sizeof(BvhNode) == 32 && offsetof(BvhNode, firstOrRight) == 12 &&
               offsetof(BvhNode, boundsMax) == 16 && offsetof(BvhNode, triCount) == 28);
 static_assert(sizeof(WideNode) == 80 && offsetof(WideNode, exponentsMask) == 12 && offsetof(WideNode, childBase) == 16 &&

@@ -122,7 +122,7 @@ std::vector<std::uint32_t> lightGridAliasTable(std::span<const double> weights) 
     }
     PN_CHECK(small.empty());  // exact integers: what is left is exactly full
     for (std::uint32_t k = 0; k < count; ++k) {
-        table[2 * k] = threshold[k] | (alias[k] << 17);
+        table[2 * k] = threshold[k] | (alias[k] << PN_LIGHT_GRID_ALIAS_SHIFT);
         table[2 * k + 1] = std::uint32_t(mass[k]);
     }
     return table;
@@ -130,9 +130,9 @@ std::vector<std::uint32_t> lightGridAliasTable(std::span<const double> weights) 
 
 double lightGridRealisedProbability(std::span<const std::uint32_t> table, std::uint32_t k) {
     const std::uint32_t count = std::uint32_t(table.size() / 2);
-    std::uint64_t mass = table[2 * k] & 0x1ffffu;
+    std::uint64_t mass = table[2 * k] & PN_LIGHT_GRID_THRESHOLD_MASK;
     for (std::uint32_t j = 0; j < count; ++j)
-        if (j != k && (table[2 * j] >> 17) == k) mass += kOne - (table[2 * j] & 0x1ffffu);
+        if (j != k && (table[2 * j] >> PN_LIGHT_GRID_ALIAS_SHIFT) == k) mass += kOne - (table[2 * j] & PN_LIGHT_GRID_THRESHOLD_MASK);
     return double(mass) / (double(kOne) * count);
 }
 
@@ -155,7 +155,7 @@ namespace {
 // its mass there, which MIS reads back. A cluster that is a leaf, or too large for an alias index,
 // keeps the walk (count 0).
 struct ClusterPicks {
-    std::vector<std::uint32_t> entries;  // per light: (threshold | alias << 17, LightRef)
+    std::vector<std::uint32_t> entries;  // per light: (threshold | alias << PN_LIGHT_GRID_ALIAS_SHIFT, LightRef)
     std::vector<std::uint32_t> masses;   // per LightRef: its mass in its cluster's table
     std::vector<std::uint32_t> first, count;  // per cluster: its first entry, its lights
 };
@@ -234,6 +234,10 @@ void fillCellTables(std::vector<std::uint32_t>& words, const GridShape& g, std::
                         g.cellSize * float(std::max({g.dims[0], g.dims[1], g.dims[2]}));
     const float cellRadius = 0.5f * g.cellSize * std::sqrt(3.0f) * 1.001f + reach * 1e-5f;
     const float binSin = std::sqrt(1.0f - kBinCos * kBinCos);
+    // The clusters (and the root) grown by a cell's radius: the same for every cell.
+    std::vector<shader::LightCluster> widened(count);
+    for (std::uint32_t i = 0; i < count; ++i) widened[i] = widenedCluster(tree[clusters[i].record], cellRadius);
+    const shader::LightCluster widenedRoot = widenedCluster(tree[0], cellRadius);
     parallelFor(g.cells(), 64, [&](std::size_t begin, std::size_t end) {
         std::vector<double> weights(count);
         for (std::size_t cell = begin; cell < end; ++cell) {
@@ -245,13 +249,11 @@ void fillCellTables(std::vector<std::uint32_t>& words, const GridShape& g, std::
                 Vec3 axis{0.0f};
                 axis[int(bin / 2)] = bin % 2 == 0 ? 1.0f : -1.0f;
                 for (std::uint32_t i = 0; i < count; ++i)
-                    weights[i] = shader::clusterImportanceWithin(widenedCluster(tree[clusters[i].record], cellRadius), centre,
-                                                                 axis, true, binSin, kBinCos);
+                    weights[i] = shader::clusterImportanceWithin(widened[i], centre, axis, true, binSin, kBinCos);
                 const std::vector<std::uint32_t> table = lightGridAliasTable(weights);
                 const std::size_t index = cell * PN_LIGHT_GRID_BINS + bin;
                 std::copy(table.begin(), table.end(), words.begin() + std::ptrdiff_t(layout.firstTable + index * 2 * count));
-                const float root = shader::clusterImportanceWithin(widenedCluster(tree[0], cellRadius), centre, axis, true,
-                                                                   binSin, kBinCos);
+                const float root = shader::clusterImportanceWithin(widenedRoot, centre, axis, true, binSin, kBinCos);
                 std::memcpy(&words[layout.firstTree + index], &root, 4);
             }
         }

@@ -6,6 +6,7 @@
 
 #include "chi_square.h"
 #include "gpu_fixture.h"
+#include "render/kernel_features.h"
 #include "render/renderer.h"
 #include "render_helpers.h"
 #include "scene/presets/mesh_builder.h"
@@ -68,11 +69,16 @@ std::vector<shader::RayDesc> queryPoints() {
 }
 
 // Picks at the query points, from the light grid's tables (render/light_grid.h) or (withGrid
-// false) by the walk's own importance levels.
-void expectPicksFollowTheProbabilitiesMisUses(const gpu::Context& ctx, bool withGrid) {
-    SCOPED_TRACE(withGrid ? "light grid" : "tree walk");
-    const Scene scene = manyLightsScene(300, 0.6f, 5);
+// false) by the walk's own importance levels. With oneTopLight the sky is black, so the sun is
+// the only top-level light, and the kernel is specialised for the scene as the renderers do it
+// (PN_FEATURE_ONE_TOP_LIGHT among its features).
+void expectPicksFollowTheProbabilitiesMisUses(const gpu::Context& ctx, bool withGrid, bool oneTopLight = false) {
+    SCOPED_TRACE(std::string(withGrid ? "light grid" : "tree walk") + (oneTopLight ? ", one top-level light" : ""));
+    Scene scene = manyLightsScene(300, 0.6f, 5);
+    if (oneTopLight) scene.background = Vec3{0.0f};
     const SceneArrays arrays = buildSceneArrays(scene);
+    const std::uint32_t features = oneTopLight ? kernelFeatures(arrays, Accel::Bvh) : PN_FEATURE_ALL;
+    ASSERT_TRUE(!oneTopLight || (features & PN_FEATURE_ONE_TOP_LIGHT));
     ASSERT_FALSE(arrays.lightGrid.empty());  // 600 emitters: deeper than the importance levels
     const auto noGrid = [withGrid](shader::FrameUniforms& f) {
         if (!withGrid) f.lightGridOffset = 0;
@@ -80,15 +86,17 @@ void expectPicksFollowTheProbabilitiesMisUses(const gpu::Context& ctx, bool with
     const auto points = queryPoints();
     const std::size_t refs = arrays.lightRefs.size();
     ASSERT_GT(refs, 600u);
-    ASSERT_EQ(arrays.topLightCount, 2u);  // the sky and the sun
+    ASSERT_EQ(arrays.topLightCount, oneTopLight ? 1u : 2u);  // the sky and the sun
 
     const auto pmfs = runSceneKernel<Vec4, shader::RayDesc>(ctx, scene, arrays, "test_light_pick", points,
                                                             points.size() * refs,
-                                                            {0, 1, std::uint32_t(points.size() * refs), 0}, {}, noGrid);
+                                                            {0, 1, std::uint32_t(points.size() * refs), 0}, {}, noGrid,
+                                                            features);
     const std::uint32_t perPoint = 200000;
     const auto picks = runSceneKernel<Vec4, shader::RayDesc>(ctx, scene, arrays, "test_light_pick", points,
                                                              points.size() * perPoint,
-                                                             {perPoint, 0, std::uint32_t(points.size() * perPoint), 0}, {}, noGrid);
+                                                             {perPoint, 0, std::uint32_t(points.size() * perPoint), 0}, {}, noGrid,
+                                                             features);
     for (std::size_t p = 0; p < points.size(); ++p) {
         double sum = 0;
         int reachable = 0;
@@ -130,6 +138,7 @@ void expectPicksFollowTheProbabilitiesMisUses(const gpu::Context& ctx, bool with
 TEST_F(GpuTest, LightPicksFollowTheProbabilitiesMisUses) {
     expectPicksFollowTheProbabilitiesMisUses(*ctx, true);
     expectPicksFollowTheProbabilitiesMisUses(*ctx, false);
+    expectPicksFollowTheProbabilitiesMisUses(*ctx, true, true);
 }
 
 // Uniform picks among 3 * 2^22 lights: a pick made as floor(u * count) from a 24-bit float u can

@@ -1,6 +1,6 @@
 // Runs a test kernel (shaders/test/*.comp) over a scene: the scene uploaded, the frame uniforms
 // filled for it as the renderers fill them, an input buffer at PN_BINDING_SCRATCH and an output
-// buffer at PN_BINDING_SCRATCH2, one thread per item.
+// buffer at PN_BINDING_SCRATCH2, one thread per item; the kernel specialised for `features`.
 #pragma once
 
 #include <cstring>
@@ -19,7 +19,8 @@ template <typename Out, typename In>
 std::vector<Out> runSceneKernel(const gpu::Context& ctx, const Scene& scene, const SceneArrays& arrays,
                                 const std::string& kernel, std::span<const In> input, std::size_t outCount,
                                 shader::PassPush push, const RenderSettings& settings = {},
-                                const std::function<void(shader::FrameUniforms&)>& editFrame = {}) {
+                                const std::function<void(shader::FrameUniforms&)>& editFrame = {},
+                                std::uint32_t features = PN_FEATURE_ALL) {
     gpu::Commands commands(ctx);
     GpuScene gpuScene(ctx, commands, arrays);
     shader::FrameUniforms frame =
@@ -30,7 +31,8 @@ std::vector<Out> runSceneKernel(const gpu::Context& ctx, const Scene& scene, con
     gpu::Buffer in = gpu::uploadStorageBuffer<In>(ctx, commands, input);
     gpu::Buffer out(ctx, outCount * sizeof(Out), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                     gpu::MemoryKind::DeviceLocal);
-    auto pipeline = makeScenePipeline(ctx, kernel, gpuScene, frameBuffer, {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2});
+    auto pipeline =
+        makeScenePipeline(ctx, kernel, gpuScene, frameBuffer, {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2}, features);
     pipeline->bind(PN_BINDING_SCRATCH, in);
     pipeline->bind(PN_BINDING_SCRATCH2, out);
     commands.run([&](VkCommandBuffer cmd) {
