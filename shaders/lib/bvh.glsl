@@ -7,7 +7,7 @@
 #include "lib/textures.glsl"
 #include "lib/sprite.glsl"
 
-// Traversal statistics hooks: empty, except in heatmap.comp, which counts with them.
+// Traversal statistics hooks: empty, except in heatmap.comp and raybench_count.comp, which count with them.
 #ifndef PN_COUNT_NODE
 #define PN_COUNT_NODE()
 #endif
@@ -151,6 +151,7 @@ Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
 // Primitives [first, end) for the brute-force oracle, in the space the ray is given in.
 void bruteRange(uint first, uint end, vec3 o, vec3 d, uint instance, bool anyHit, inout Hit hit) {
     for (uint i = first; i < end; ++i) {
+        PN_COUNT_TRIANGLE();
         float t, u, v;
         if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
             hit = Hit(t, i, u, v, instance);

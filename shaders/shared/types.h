@@ -107,6 +107,10 @@ using namespace penumbra::gpu_types;
 #define PN_RAYBENCH_PRIMARY 0u
 #define PN_RAYBENCH_SHADOW 1u
 #define PN_RAYBENCH_DIFFUSE 2u
+// raybench_count.comp's word per pixel: the nodes a ray visited (low PN_RAY_WORK_BITS bits) and
+// the primitives it tested (the high bits), each saturating at PN_RAY_WORK_MAX.
+#define PN_RAY_WORK_BITS 16u
+#define PN_RAY_WORK_MAX 0xffffu
 
 // ---- material flags ----
 #define PN_MATERIAL_EMISSIVE 1u

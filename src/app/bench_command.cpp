@@ -1,5 +1,6 @@
 // penumbra bench [SCENE]: BVH build time, rays per second by kind, and one frame's GPU time.
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <memory>
 
@@ -39,6 +40,10 @@ struct BenchArgs {
 };
 
 double mrays(std::uint64_t rays, double ms) { return ms > 0 ? double(rays) / (ms * 1e3) : 0.0; }
+
+std::array<std::pair<const char*, const TraversalWork*>, 3> rayWork(const RayBenchResult& r) {
+    return {{{"primary", &r.primaryWork}, {"shadow", &r.shadowWork}, {"diffuse", &r.diffuseWork}}};
+}
 
 // A JSON string's contents: quotes, backslashes and control characters escaped.
 std::string jsonEscape(const std::string& text) {
@@ -167,12 +172,20 @@ void runBench(const BenchArgs& args) {
             "  \"bounces\": %u,\n  \"repeats\": %d,\n  \"triangles\": %zu,\n  \"bvh_nodes\": %zu,\n  \"wide_nodes\": %zu,\n  \"bvh_sah_cost\": %.3f,\n"
             "  \"bvh_build_ms\": %.3f,\n  \"bvh_from_cache\": %s,\n  \"primary_mrays_per_s\": %.1f,\n  \"shadow_mrays_per_s\": %.1f,\n"
             "  \"diffuse_mrays_per_s\": %.1f,\n  \"primary_ms\": %.4f,\n  \"shadow_ms\": %.4f,\n  \"diffuse_ms\": %.4f,\n"
-            "  \"frame_ms\": %.4f,\n  \"frame_rays\": %llu,\n  \"frame_mrays_per_s\": %.1f\n}\n",
+            "  \"frame_ms\": %.4f,\n  \"frame_rays\": %llu,\n  \"frame_mrays_per_s\": %.1f,\n",
             scene.name.c_str(), ctx->info().name.c_str(), accelName(settings.accel), settings.width, settings.height,
             settings.maxBounces, r.repeats, a.triVerts.size(), a.nodes.size(), a.wideNodes.size(), a.stats.sahCost,
             a.buildMilliseconds, a.bvhFromCache ? "true" : "false", mrays(r.primaryRays, r.primaryMs), mrays(r.shadowRays, r.shadowMs), mrays(r.diffuseRays, r.diffuseMs),
             r.primaryMs, r.shadowMs, r.diffuseMs, r.frameMs, static_cast<unsigned long long>(r.frameRays),
             mrays(r.frameRays, r.frameMs));
+        std::printf("  \"traversal\": {");
+        const char* sep = "";
+        for (const auto& [kind, w] : rayWork(r)) {
+            std::printf("%s\n    \"%s\": {\"rays\": %llu, \"nodes_per_ray\": %.2f, \"primitives_per_ray\": %.2f, \"lane_use\": %.3f}",
+                        sep, kind, static_cast<unsigned long long>(w->rays), w->nodesPerRay, w->primitivesPerRay, w->laneUse);
+            sep = ",";
+        }
+        std::printf("\n  }\n}\n");
         return;
     }
     std::printf("%s on %s, %ux%u, accel %s, medians of %d runs\n", scene.name.c_str(), ctx->info().name.c_str(),
@@ -186,6 +199,9 @@ void runBench(const BenchArgs& args) {
     std::printf("  diffuse bounces  %10.1f Mrays/s  (%.3f ms)\n", mrays(r.diffuseRays, r.diffuseMs), r.diffuseMs);
     std::printf("  frame, 1 spp, %u bounces + NEE: %.3f ms (%.1f Mrays/s)\n", settings.maxBounces, r.frameMs,
                 mrays(r.frameRays, r.frameMs));
+    for (const auto& [kind, w] : rayWork(r))
+        std::printf("  %-8s walk: %.1f nodes and %.1f primitives per ray, %.0f%% of warp lanes busy\n", kind, w->nodesPerRay,
+                    w->primitivesPerRay, 100.0 * w->laneUse);
 }
 
 }  // namespace

@@ -11,6 +11,39 @@
 
 namespace penumbra {
 
+namespace {
+constexpr std::uint32_t kWarpLanes = 32;
+static_assert(kWarpLanes % PN_TRACE_GROUP_X == 0 && (PN_TRACE_GROUP_X * PN_TRACE_GROUP_Y) % kWarpLanes == 0,
+              "a warp is whole rows of a trace group");
+constexpr std::uint32_t kWarpRows = kWarpLanes / PN_TRACE_GROUP_X;
+}  // namespace
+
+TraversalWork traversalWork(std::span<const std::uint32_t> words, std::uint32_t width, std::uint32_t height) {
+    PN_CHECK(words.size() == std::size_t(width) * height);
+    TraversalWork w;
+    std::uint64_t nodes = 0, primitives = 0, laneSteps = 0;
+    for (std::uint32_t y0 = 0; y0 < height; y0 += kWarpRows)
+        for (std::uint32_t x0 = 0; x0 < width; x0 += PN_TRACE_GROUP_X) {
+            std::uint32_t longest = 0;
+            for (std::uint32_t y = y0; y < std::min(y0 + kWarpRows, height); ++y)
+                for (std::uint32_t x = x0; x < std::min(x0 + PN_TRACE_GROUP_X, width); ++x) {
+                    const std::uint32_t word = words[std::size_t(y) * width + x];
+                    if (word == 0) continue;
+                    const std::uint32_t n = word & PN_RAY_WORK_MAX;
+                    ++w.rays;
+                    nodes += n;
+                    primitives += word >> PN_RAY_WORK_BITS;
+                    longest = std::max(longest, n);
+                }
+            laneSteps += std::uint64_t(longest) * kWarpLanes;
+        }
+    if (w.rays == 0) return w;
+    w.nodesPerRay = double(nodes) / double(w.rays);
+    w.primitivesPerRay = double(primitives) / double(w.rays);
+    w.laneUse = laneSteps > 0 ? double(nodes) / double(laneSteps) : 0.0;
+    return w;
+}
+
 RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repeats) {
     if (!ctx.timestampsSupported())
         throw Error("device '" + ctx.info().name + "' has no GPU timestamps, so it cannot be benchmarked");
@@ -28,6 +61,12 @@ RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repe
                                       kernelFeatures(renderer.sceneArrays(), renderer.settings().accel));
     pipeline->bind(PN_BINDING_SCRATCH, points);
     pipeline->bind(PN_BINDING_SCRATCH2, results);
+
+    auto counting = makeScenePipeline(ctx, "raybench_count", renderer.gpuScene(), renderer.frameUniforms(),
+                                      {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2},
+                                      kernelFeatures(renderer.sceneArrays(), renderer.settings().accel));
+    counting->bind(PN_BINDING_SCRATCH, points);
+    counting->bind(PN_BINDING_SCRATCH2, results);
 
     auto timeMode = [&](std::uint32_t mode, std::uint32_t pass) {
         timer.reset();
@@ -66,6 +105,20 @@ RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repe
     r.shadowMs = median(shadow);
     r.diffuseMs = median(diffuse);
     r.frameMs = median(frame);
+
+    // The walk's work for the rays of pass 0, untimed (primary first: it writes the points).
+    auto countMode = [&](std::uint32_t mode) {
+        commands.run([&](VkCommandBuffer cmd) {
+            shader::PassPush push{0, mode, 0, 0};
+            counting->dispatch(cmd, (s.width + PN_TRACE_GROUP_X - 1) / PN_TRACE_GROUP_X,
+                               (s.height + PN_TRACE_GROUP_Y - 1) / PN_TRACE_GROUP_Y, 1, &push);
+        });
+        const auto words = gpu::downloadBuffer<std::uint32_t>(ctx, commands, results, pixels);
+        return traversalWork(words, s.width, s.height);
+    };
+    r.primaryWork = countMode(PN_RAYBENCH_PRIMARY);
+    r.shadowWork = countMode(PN_RAYBENCH_SHADOW);
+    r.diffuseWork = countMode(PN_RAYBENCH_DIFFUSE);
 
     // One more frame, counted, for the frame's ray total (counting adds atomics, so untimed).
     const RenderStats before = renderer.stats();

@@ -81,6 +81,38 @@ TEST_F(BenchCliTest, RayBenchRunsTheWideBvhAndInfoReportsIt) {
     expectOneLineError(run("info cornell --accel narrow"), 2, "--accel");
 }
 
+// The walk's work per ray, counted for the rays the bench times: under brute force a closest-hit
+// ray tests every primitive exactly once and visits no node; the BVH visits nodes and tests far
+// fewer primitives, and no ray kind leaves its warps' lanes more than fully busy.
+TEST_F(BenchCliTest, RayBenchCountsTheWalksWork) {
+    auto traversal = [&](const std::string& accel) {
+        RunResult r = run("bench cornell --width 32 --height 20 --repeats 1 --accel " + accel + " --json");
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return r.exitCode == 0 ? nlohmann::json::parse(r.out) : nlohmann::json();
+    };
+    const nlohmann::json brute = traversal("brute");
+    ASSERT_FALSE(brute.is_null());
+    const double triangles = brute.at("triangles").get<double>();
+    for (const char* kind : {"primary", "diffuse"}) {
+        const auto& w = brute.at("traversal").at(kind);
+        EXPECT_GT(w.at("rays").get<int>(), 0) << kind;
+        EXPECT_EQ(w.at("primitives_per_ray").get<double>(), triangles) << kind;
+        EXPECT_EQ(w.at("nodes_per_ray").get<double>(), 0.0) << kind;
+    }
+    const nlohmann::json bvh = traversal("bvh");
+    ASSERT_FALSE(bvh.is_null());
+    for (const char* kind : {"primary", "shadow", "diffuse"}) {
+        const auto& w = bvh.at("traversal").at(kind);
+        EXPECT_GT(w.at("rays").get<int>(), 0) << kind;
+        EXPECT_GE(w.at("nodes_per_ray").get<double>(), 1.0) << kind;
+        EXPECT_LT(w.at("primitives_per_ray").get<double>(), triangles / 2) << kind;
+        EXPECT_GT(w.at("lane_use").get<double>(), 0.0) << kind;
+        EXPECT_LE(w.at("lane_use").get<double>(), 1.0) << kind;
+    }
+    // Every camera ray of the closed box hits it: one primary ray per pixel.
+    EXPECT_EQ(bvh.at("traversal").at("primary").at("rays").get<int>(), 32 * 20);
+}
+
 // Russian roulette starts where the viewer starts it: bounce 3, bounce 2 on Doom levels (the scene
 // asks for it), or where --roulette-start says.
 TEST_F(BenchCliTest, ViewerRouletteStartFollowsTheSceneUnlessGiven) {
