@@ -172,34 +172,20 @@ LightPick pickInCluster(uvec4 cluster, float pmf, inout uint rng) {
     return LightPick(ref, pmf * lightInClusterProbability(ref, cluster.w));
 }
 
-// The first choice of a pick, with u in [0, 1): one of the top-level lights (returns false, `pick`
-// is final) or the tree (returns true, `pick` holds the tree's probability). A kernel specialised
-// for one top-level light (PN_FEATURE_ONE_TOP_LIGHT) weighs its bound once instead of twice (once
-// for the normaliser, once to choose): the same numbers, so lightPickPmf agrees.
-bool pickTopLevel(vec3 p, vec3 n, float u, float tree, out LightPick pick) {
+// The first choice of a pick in a kernel specialised for one top-level light
+// (PN_FEATURE_ONE_TOP_LIGHT, a WAD level's torch), with u in [0, 1): the light (returns false,
+// `pick` is final) or the tree (returns true, `pick` holds the tree's probability). The light's
+// bound is weighed once, where pickLight's loop weighs each top-level light twice (once for the
+// normaliser, once to choose); the numbers are the same, so lightPickPmf agrees.
+bool pickBesideOneTopLight(vec3 p, vec3 n, float u, float tree, out LightPick pick) {
     pick = LightPick(PN_NO_LIGHT, 0.0);
-    if (PN_HAS(PN_FEATURE_ONE_TOP_LIGHT)) {
-        float w = topLightImportance(0u, p, n);
-        float total = tree + w;
-        if (!(total > 0.0)) return false;
-        if (w > 0.0) {
-            pick = LightPick(0u, w / total);
-            if (u * total < w || !(tree > 0.0)) return false;
-        }
-        pick = LightPick(PN_NO_LIGHT, tree / total);
-        return true;
-    }
-    float total = totalLightImportance(tree, p, n);
+    float w = topLightImportance(0u, p, n);
+    float total = tree + w;
     if (!(total > 0.0)) return false;
-    float x = u * total;
-    for (uint k = 0u; k < frame.topLightCount; ++k) {
-        float w = topLightImportance(k, p, n);
-        if (!(w > 0.0)) continue;
-        pick = LightPick(k, w / total);
-        if (x < w) return false;
-        x -= w;
+    if (w > 0.0) {
+        pick = LightPick(0u, w / total);
+        if (u * total < w || !(tree > 0.0)) return false;
     }
-    if (!(tree > 0.0)) return false;  // rounding carried x past the last top-level light
     pick = LightPick(PN_NO_LIGHT, tree / total);
     return true;
 }
@@ -218,8 +204,23 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
     uint node;
     uint table = lightGridTable(p, n);
     float tree = lightTreeWeight(p, n, table, node);
-    LightPick pick;
-    if (!pickTopLevel(p, n, u, tree, pick)) return pick;
+    LightPick pick = LightPick(PN_NO_LIGHT, 0.0);
+    if (PN_HAS(PN_FEATURE_ONE_TOP_LIGHT)) {
+        if (!pickBesideOneTopLight(p, n, u, tree, pick)) return pick;
+    } else {
+        float total = totalLightImportance(tree, p, n);
+        if (!(total > 0.0)) return LightPick(PN_NO_LIGHT, 0.0);
+        float x = u * total;
+        for (uint k = 0u; k < frame.topLightCount; ++k) {
+            float w = topLightImportance(k, p, n);
+            if (!(w > 0.0)) continue;
+            pick = LightPick(k, w / total);
+            if (x < w) return pick;
+            x -= w;
+        }
+        if (!(tree > 0.0)) return pick;  // rounding carried x past the last top-level light
+        pick = LightPick(PN_NO_LIGHT, tree / total);
+    }
     uint depth = 0u;
     if (table != PN_NO_HIT) {
         uvec4 cluster = lightGridCluster(pickGridCluster(lightGridTableWord(table), pick.pmf, rng));
