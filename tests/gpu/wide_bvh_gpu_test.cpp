@@ -1,6 +1,6 @@
 // The wide BVH walk on the GPU (lib/wide_bvh.glsl) against the binary walk and brute force, on
-// what only the shaders intersect: a WAD map (sprites, alpha-tested walls) and stacked alpha-tested
-// quads whose holes let rays through to the layers behind. (Soups and spheres, with the CPU
+// the Stanford bunny and on what only the shaders intersect: a WAD map (sprites, alpha-tested
+// walls) and stacked alpha-tested quads whose holes let rays through to the layers behind. (Soups and spheres, with the CPU
 // reference walks, are in bvh_gpu_test.cpp and sphere_bvh_test.cpp.)
 #include <filesystem>
 #include <random>
@@ -45,12 +45,13 @@ struct Agreement {
 
 // Wide, binary and brute force on the GPU: the same rays hit, at the same distance (the primitive
 // may differ only where two tie), and any-hit agrees. Returns what the binary walk found.
+// withBrute false compares the two walks alone (see the bunny's test).
 Agreement expectGpuWalksAgree(const gpu::Context& ctx, const SceneArrays& arrays,
-                              const std::vector<shader::RayDesc>& rays) {
+                              const std::vector<shader::RayDesc>& rays, bool withBrute = true) {
     EXPECT_FALSE(arrays.wideNodes.empty());
     const GpuHits bvh = traceOnGpu(ctx, arrays, rays, Accel::Bvh);
     const GpuHits wide = traceOnGpu(ctx, arrays, rays, Accel::Wide);
-    const GpuHits brute = traceOnGpu(ctx, arrays, rays, Accel::Brute);
+    const GpuHits brute = withBrute ? traceOnGpu(ctx, arrays, rays, Accel::Brute) : bvh;
     Agreement out;
     for (std::size_t i = 0; i < rays.size(); ++i) {
         const shader::HitRecord& b = bvh.closest[i];
@@ -85,6 +86,21 @@ TEST_F(GpuTest, WideBvhMatchesBinaryAndBruteForceOnAWadMap) {
     const std::vector<shader::RayDesc> rays = boxRays(scene.bounds(), 1500, 21);
     const Agreement a = expectGpuWalksAgree(*ctx, arrays, rays);
     EXPECT_GT(a.hits, rays.size() / 3) << "too few rays hit the map for the test to mean much";
+}
+
+// The Stanford bunny: 69,666 small triangles of a scanned surface, a tree far deeper than the map's.
+// The two walks only: brute force on lavapipe goes wrong from 32,768 primitives up (32,000 agree):
+// its any-hit reports occluders for rays both walks and its own closest hit find unoccluded, and
+// its closest hit misses some hits. Not understood yet (noted in docs/RELIABILITY.md).
+TEST_F(GpuTest, WideBvhMatchesTheBinaryWalkOnTheBunny) {
+    const std::filesystem::path bunny = "/usr/share/glmark2/models/bunny.obj";
+    PENUMBRA_REQUIRE_ASSET(bunny);
+    const Scene scene = loadSceneFile(bunny, LoadOptions{});
+    ASSERT_EQ(scene.triangleCount(), 69666u);
+    const SceneArrays arrays = buildSceneArrays(scene, {}, Accel::Wide);
+    const std::vector<shader::RayDesc> rays = boxRays(scene.bounds(), 1000, 23);
+    const Agreement a = expectGpuWalksAgree(*ctx, arrays, rays, false);
+    EXPECT_GT(a.hits, rays.size() / 4) << "too few rays hit the bunny for the test to mean much";
 }
 
 // Four layers of 4x4 quads at z = 0, -1, -2, -3 under one alpha-tested texture with a
