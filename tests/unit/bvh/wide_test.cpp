@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <filesystem>
 #include <cstring>
 #include <random>
 #include <string>
@@ -15,6 +16,8 @@
 #include "bvh/traverse_wide_cpu.h"
 #include "bvh_test_util.h"
 #include "core/error.h"
+#include "scene/io/obj.h"
+#include "../io/io_test_util.h"
 
 namespace penumbra::bvh {
 namespace {
@@ -207,6 +210,21 @@ TEST(WideBvh, SameHitsAsBinaryAndBruteOnSoups) {
         Trees t = buildBoth(fromTriangles(tris));
         expectSameHits(t, mixedRays(tris, 3000, std::uint32_t(n)));
     }
+}
+
+// A scanned surface of 69,666 small triangles: a deeper, denser tree than any soup above.
+TEST(WideBvh, SameHitsAsBinaryAndBruteOnTheBunny) {
+    const std::filesystem::path path = "/usr/share/glmark2/models/bunny.obj";
+    PENUMBRA_REQUIRE_ASSET(path);
+    const Scene scene = loadObj(path);
+    std::vector<Triangle> tris;
+    for (const Mesh& m : scene.meshes)
+        for (std::size_t k = 0; k + 2 < m.indices.size(); k += 3)
+            tris.push_back({m.positions[m.indices[k]], m.positions[m.indices[k + 1]], m.positions[m.indices[k + 2]]});
+    ASSERT_EQ(tris.size(), 69666u);
+    Trees t = buildBoth(fromTriangles(tris));
+    checkStructure(t);
+    expectSameHits(t, mixedRays(tris, 1200, 17));
 }
 
 TEST(WideBvh, SameHitsWithSpheres) {
