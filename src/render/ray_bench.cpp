@@ -56,25 +56,29 @@ RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repe
                        gpu::MemoryKind::DeviceLocal);
     gpu::Buffer results(ctx, pixels * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                         gpu::MemoryKind::DeviceLocal);
-    auto pipeline = makeScenePipeline(ctx, "raybench", renderer.gpuScene(), renderer.frameUniforms(),
-                                      {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2},
-                                      kernelFeatures(renderer.sceneArrays(), renderer.settings().accel));
-    pipeline->bind(PN_BINDING_SCRATCH, points);
-    pipeline->bind(PN_BINDING_SCRATCH2, results);
-
-    auto counting = makeScenePipeline(ctx, "raybench_count", renderer.gpuScene(), renderer.frameUniforms(),
-                                      {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2},
-                                      kernelFeatures(renderer.sceneArrays(), renderer.settings().accel));
-    counting->bind(PN_BINDING_SCRATCH, points);
-    counting->bind(PN_BINDING_SCRATCH2, results);
+    // The timed kernel and its counting twin, over the same points and results.
+    const std::uint32_t features = kernelFeatures(renderer.sceneArrays(), renderer.settings().accel);
+    auto makeBench = [&](const char* shader) {
+        auto made = makeScenePipeline(ctx, shader, renderer.gpuScene(), renderer.frameUniforms(),
+                                      {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2}, features);
+        made->bind(PN_BINDING_SCRATCH, points);
+        made->bind(PN_BINDING_SCRATCH2, results);
+        return made;
+    };
+    auto pipeline = makeBench("raybench");
+    auto counting = makeBench("raybench_count");
+    // One ray of kind `mode` per pixel.
+    auto dispatchRays = [&](const gpu::ComputePipeline& p, VkCommandBuffer cmd, std::uint32_t mode, std::uint32_t pass) {
+        shader::PassPush push{pass, mode, 0, 0};
+        p.dispatch(cmd, (s.width + PN_TRACE_GROUP_X - 1) / PN_TRACE_GROUP_X, (s.height + PN_TRACE_GROUP_Y - 1) / PN_TRACE_GROUP_Y,
+                   1, &push);
+    };
 
     auto timeMode = [&](std::uint32_t mode, std::uint32_t pass) {
         timer.reset();
         commands.run([&](VkCommandBuffer cmd) {
-            shader::PassPush push{pass, mode, 0, 0};
             timer.begin(cmd, 0);
-            pipeline->dispatch(cmd, (s.width + PN_TRACE_GROUP_X - 1) / PN_TRACE_GROUP_X,
-                               (s.height + PN_TRACE_GROUP_Y - 1) / PN_TRACE_GROUP_Y, 1, &push);
+            dispatchRays(*pipeline, cmd, mode, pass);
             timer.end(cmd, 0);
         });
         return timer.milliseconds(0);
@@ -108,11 +112,7 @@ RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repe
 
     // The walk's work for the rays of pass 0, untimed (primary first: it writes the points).
     auto countMode = [&](std::uint32_t mode) {
-        commands.run([&](VkCommandBuffer cmd) {
-            shader::PassPush push{0, mode, 0, 0};
-            counting->dispatch(cmd, (s.width + PN_TRACE_GROUP_X - 1) / PN_TRACE_GROUP_X,
-                               (s.height + PN_TRACE_GROUP_Y - 1) / PN_TRACE_GROUP_Y, 1, &push);
-        });
+        commands.run([&](VkCommandBuffer cmd) { dispatchRays(*counting, cmd, mode, 0); });
         const auto words = gpu::downloadBuffer<std::uint32_t>(ctx, commands, results, pixels);
         return traversalWork(words, s.width, s.height);
     };
