@@ -14,8 +14,10 @@ layout(local_size_x = PN_WAVE_GROUP) in;
 void main() {
     uint i = gl_GlobalInvocationID.x;
     bool live = i < liveRays();
+    uint slot = live ? queueIn(i) : 0u;
+    // A camera ray shared by a pixel's samples is traced for the first one (hitSlot).
+    live = live && hitSlot(slot) == slot;
     if (live) {
-        uint slot = queueIn(i);
         vec3 origin = unpackVec(pathField(0u, slot)), direction = unpackVec(pathField(1u, slot));
         storeHit(slot, traceClosest(origin, direction, PN_INFINITY));
     }

@@ -19,7 +19,7 @@ void main() {
     PendingShadow shadow = noShadow();
     if (i < liveRays()) {
         slot = queueIn(i);
-        Hit hit = loadHit(slot);
+        Hit hit = loadHit(hitSlot(slot));
         uvec3 p = slotPixel(slot);
         Path path = loadPathForShading(slot, p, hit);
         alive = extendPath(path, hit, p.y * frame.width + p.x, shadow);

@@ -18,7 +18,7 @@ void main() {
         uvec3 p = slotPixel(slot);
         if (pixelSampled(p.xy)) {
             uint pixelIndex = p.y * frame.width + p.x;
-            storePath(slot, startPath(p.xy, pixelIndex, pathSampleIndex(p)));
+            storePath(slot, startPath(p.xy, pixelIndex, pathSampleIndex(p), cameraSampleOf(p)));
             startPathResult(slot);
             started = true;
         }

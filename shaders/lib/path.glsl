@@ -77,11 +77,19 @@ struct PendingShadow {
 
 PendingShadow noShadow() { return PendingShadow(ShadowRay(vec3(0.0), vec3(0.0, 0.0, 1.0), 0.0), vec3(0.0), false); }
 
-Path startPath(uvec2 pixel, uint pixelIndex, uint sampleIndex) {
+// The camera ray of sample cameraSample (the path's own, or its pass's first under
+// PN_TRACE_SHARED_CAMERA). The path's stream makes the same draws either way, so its later numbers
+// do not depend on whose camera ray it took.
+Path startPath(uvec2 pixel, uint pixelIndex, uint sampleIndex, uint cameraSample) {
     Path path;
     path.rng = rngSeed(pixelIndex, sampleIndex, frame.seed);
     vec2 jitter = rngNext2(path.rng);
     cameraRay(vec2(pixel) + jitter, path.rng, path.origin, path.direction);
+    if (cameraSample != sampleIndex) {
+        uint cameraRng = rngSeed(pixelIndex, cameraSample, frame.seed);
+        jitter = rngNext2(cameraRng);
+        cameraRay(vec2(pixel) + jitter, cameraRng, path.origin, path.direction);
+    }
     path.throughput = vec3(1.0);
     path.result = vec3(0.0);
     path.medium = vec3(0.0);

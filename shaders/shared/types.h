@@ -495,6 +495,10 @@ PN_STRUCT(FrameUniforms) {
 #define PN_TRACE_MASKED 1u       // PassPush.mode bit of trace.comp: read the active mask (adaptive sampling)
 #define PN_TRACE_REPLACE 2u      // PassPush.mode bit of trace.comp and wave_finish.comp: store the pixel's sums
                                  // instead of adding them (a pass that samples every pixel: no clear before it)
+// PassPush.mode bit of trace.comp and the wavefront: a pixel's samples in one pass share their camera
+// ray (sub-pixel position and lens point, drawn from the pass's first sample's stream), so the
+// wavefront traces it once per pixel. For the viewer, whose many passes spread it over the pixel.
+#define PN_TRACE_SHARED_CAMERA 4u
 #define PN_GBUFFER_SUBPIXEL 1u    // PassPush.mode bit of gbuffer.comp: trace cell passIndex of a 4x4 grid in the pixel
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
 // The denoiser's per-pixel guide, written by temporal.comp: x = the shading normal, octahedral,

@@ -149,6 +149,7 @@ void InteractiveRenderer::setMaterial(std::uint32_t index, const Material& mater
         vkCmdUpdateBuffer(cmd, gpuScene_->materials.get(), VkDeviceSize(index) * sizeof(gm), sizeof(gm), &gm);
     });
     historyValid_ = false;
+    stillGBuffer_[0] = stillGBuffer_[1] = false;  // the albedo changed
 }
 
 void InteractiveRenderer::setInstanceTransforms(const Scene& scene) {
@@ -229,9 +230,13 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
 }
 
 void InteractiveRenderer::createPasses() {
+    stillGBuffer_[0] = stillGBuffer_[1] = false;  // new buffers, or a new scene in them
     features_ = penumbra::kernelFeatures(arrays_, Accel::Bvh);
     trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, features_);
     trace_->setReplacesAccumulation(true);  // one pass per frame: no clear before it
+    // A frame's samples share a camera ray: the frames that follow spread it over the pixel, and
+    // the wavefront traces it once per pixel instead of once per sample.
+    trace_->setSharesCameraRays(true);
     auto gbufferPass = [&](const gpu::Buffer& out) {
         return std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, out, features_,
                                              &instancesPrev_);
@@ -282,7 +287,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     recorded_ = 0;
     timer_.begin(cmd, std::uint32_t(ViewerPass::Frame));
     recordUploads(cmd, camera, s, instancesMoved, heat);
-    recordPasses(cmd, s, heat, v.denoise != 0);
+    recordPasses(cmd, s, heat, v.denoise != 0, moved);
     if (s.debug == DebugView::BvhBoxes) recordBoxOverlay(cmd, s);
     timer_.end(cmd, std::uint32_t(ViewerPass::Frame));
     recorded_ |= 1u << std::uint32_t(ViewerPass::Frame);
@@ -366,12 +371,20 @@ void InteractiveRenderer::recordUploads(VkCommandBuffer cmd, const Camera& camer
     transferToComputeBarrier(cmd);
 }
 
-void InteractiveRenderer::recordPasses(VkCommandBuffer cmd, const ViewSettings& s, bool heat, bool denoise) {
+void InteractiveRenderer::recordGBuffer(VkCommandBuffer cmd, bool toB, bool moved) {
+    if (moved) stillGBuffer_[0] = stillGBuffer_[1] = false;
+    stats_.gbufferSkipped = stillGBuffer_[0] && stillGBuffer_[1];
+    if (stats_.gbufferSkipped) return;
+    timed(cmd, ViewerPass::GBuffer, [&] { (toB ? gbufferPassB_ : gbufferPassA_)->record(cmd, width_, height_); });
+    stillGBuffer_[toB ? 1 : 0] = !moved;
+}
+
+void InteractiveRenderer::recordPasses(VkCommandBuffer cmd, const ViewSettings& s, bool heat, bool denoise, bool moved) {
     // This frame writes the letter last frame read (startHistory swapped them).
     const bool toB = historyIn_ == &historyA_;
     timed(cmd, ViewerPass::Trace,
           [&] { trace_->record(cmd, width_, height_, s.samplesPerFrame, tracedFrames_++, s.maxBounces, true); });
-    timed(cmd, ViewerPass::GBuffer, [&] { (toB ? gbufferPassB_ : gbufferPassA_)->record(cmd, width_, height_); });
+    recordGBuffer(cmd, toB, moved);
     if (heat) timed(cmd, ViewerPass::Heatmap, [&] { heatmap_->record(cmd, width_, height_); });
     gpu::computeBarrier(cmd);
     timed(cmd, ViewerPass::Temporal, [&] { (toB ? temporalAB_ : temporalBA_)->record(cmd, width_, height_); });

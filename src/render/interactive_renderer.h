@@ -30,6 +30,7 @@ struct ViewerStats {
     double passMilliseconds[std::size_t(ViewerPass::Count)] = {};  // last frame; -1: no timestamps
     double raysPerSecond = 0;           // last frame's rays over its trace time
     std::uint64_t rays = 0;             // last frame's rays: closest hits and shadow rays
+    bool gbufferSkipped = false;        // last frame reused the still view's G-buffer
     std::uint32_t heatMaxNodes = 0, heatMaxTriangles = 0;  // last heat-map frame
     std::uint32_t heatMaxLeafDepth = 0, heatMaxLeafTriangles = 0;
 };
@@ -100,7 +101,9 @@ private:
     shader::FrameUniforms frameUniforms(const Camera& camera, const ViewSettings& s) const;
     shader::ViewerUniforms viewerUniforms(const ViewSettings& s, const shader::FrameUniforms& f, bool moved) const;
     void recordUploads(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& s, bool instancesMoved, bool heat);
-    void recordPasses(VkCommandBuffer cmd, const ViewSettings& s, bool heat, bool denoise);
+    void recordPasses(VkCommandBuffer cmd, const ViewSettings& s, bool heat, bool denoise, bool moved);
+    // Records this frame's G-buffer pass unless both letters already hold this still view.
+    void recordGBuffer(VkCommandBuffer cmd, bool toB, bool moved);
     void recordBoxOverlay(VkCommandBuffer cmd, const ViewSettings& s);
     // Records body between the pass's timestamps and notes that the pass ran this frame.
     template <class Body>
@@ -145,6 +148,10 @@ private:
     std::uint32_t width_ = 0, height_ = 0;
     std::uint32_t features_ = PN_FEATURE_ALL;  // what the scene kernels are specialised for
     bool historyValid_ = false;
+    // Whether G-buffer A / B holds the current view with no motion. While the camera and the
+    // scene hold still, the pixel-centre rays hit the same points every frame: once both letters
+    // hold that G-buffer, the pass is not recorded (the temporal pass reads both).
+    bool stillGBuffer_[2] = {false, false};
     std::uint32_t frameIndex_ = 0;  // frames since the history was last reset
     // Frames traced since the renderer was made, never reset: the trace pass index that seeds the
     // random numbers, so frames without history (temporal off, settings changed) still differ.

@@ -37,6 +37,7 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
     trace_ = std::make_unique<TracePass>(ctx, *gpuScene_, frameUniforms_, accumulation_, counters_,
                                          kernelFeatures(arrays_, settings_.accel), &activeMask_);
     trace_->setPathBudget(settings_.pathsPerDispatch);
+    trace_->setSharesCameraRays(settings_.shareCameraRays);
     trace_->reserve(settings_.width, settings_.height, settings_.samplesPerPass);
 }
 

@@ -26,6 +26,9 @@ struct RenderSettings {
     // oracle that tests compare the light sampler with (same mean, more noise).
     bool uniformLightPick = false;
     float time = 0.0f;  // seconds: the moment animated textures show (render --time)
+    // A pixel's samples in one pass share their camera ray (TracePass::setSharesCameraRays): the
+    // viewer's setting, here so that tests can render with it.
+    bool shareCameraRays = false;
     // Paths per trace dispatch (render/passes/trace_tiles.h); 0: the device's default.
     std::uint64_t pathsPerDispatch = 0;
 };

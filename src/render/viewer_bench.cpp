@@ -149,6 +149,8 @@ ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bo
     for (int k = 0; k < o.frames; ++k) {
         renderFrame(renderer, nextCamera(), o.view);
         const ViewerStats& st = renderer.stats();
+        // A still view's frames reuse its G-buffer: their G-buffer pass costs nothing.
+        if (st.gbufferSkipped) passMs[viewerPassName(ViewerPass::GBuffer)].push_back(0.0);
         for (std::uint32_t p = 0; p < std::uint32_t(ViewerPass::Count); ++p) {
             if (st.passMilliseconds[p] <= 0) continue;
             if (ViewerPass(p) == ViewerPass::Frame) frameMs.push_back(st.passMilliseconds[p]);

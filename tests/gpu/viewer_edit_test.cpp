@@ -1,6 +1,9 @@
 // Editing in the viewer: picking agrees with the G-buffer, a moved sphere moves in the G-buffer,
 // a material edit changes the image as it must, and depth-of-field changes restart the mean.
 #include <cmath>
+#include <cstring>
+#include <initializer_list>
+#include <vector>
 
 #include "render/interactive_renderer.h"
 #include "render/scene_objects.h"
@@ -149,6 +152,62 @@ TEST_F(ViewerEditTest, ABlackWallTurnsBlackAndTheMeanRestarts) {
     // A Lambertian wall of albedo 0 that emits nothing reflects nothing: exactly black.
     EXPECT_EQ(meanOver(h1, g1, 0), 0.0);
     EXPECT_GT(meanOver(h1, g1, 1), 0.0);  // the sphere still shows
+}
+
+bool sameBytes(const std::vector<shader::GBufferTexel>& a, const std::vector<shader::GBufferTexel>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+}
+
+// No pixel moved (up to the rounding of projecting a point back through the same camera).
+bool stands(const std::vector<shader::GBufferTexel>& g) {
+    for (const shader::GBufferTexel& t : g)
+        if (std::abs(t.motion.x) > 1e-3f || std::abs(t.motion.y) > 1e-3f) return false;
+    return true;
+}
+
+// A still view's G-buffer is the same every frame, so once both of the viewer's G-buffers hold it
+// the pass is skipped; a moved camera or an edited material traces it again, twice (both letters).
+TEST_F(ViewerEditTest, AStillViewReusesItsGBufferUntilSomethingChanges) {
+    Scene scene = wallAndSphere();
+    InteractiveRenderer viewer(*ctx, scene, false);
+    viewer.resize(kW, kH);
+    ViewSettings vs;
+    vs.maxBounces = 1;
+    auto frames = [&](const Camera& camera, std::initializer_list<bool> skipped) {
+        std::vector<std::vector<shader::GBufferTexel>> out;
+        for (bool skip : skipped) {
+            out.push_back(renderGBuffer(*ctx, viewer, camera, vs));
+            EXPECT_EQ(viewer.stats().gbufferSkipped, skip) << "frame " << out.size();
+        }
+        return out;
+    };
+    const auto still = frames(scene.camera, {false, false, true, true});
+    for (const auto& g : still) {
+        EXPECT_TRUE(sameBytes(g, still[0]));
+        EXPECT_TRUE(stands(g));
+    }
+    Camera moved = scene.camera;
+    moved.position.x += 0.5f;
+    moved.lookAt.x += 0.5f;
+    const auto moving = frames(moved, {false});
+    EXPECT_FALSE(stands(moving[0])) << "the moved camera's frame has motion vectors";
+    const auto settled = frames(moved, {false, false, true});
+    EXPECT_TRUE(stands(settled[0]));
+    EXPECT_FALSE(sameBytes(settled[0], still[0]));
+    EXPECT_TRUE(sameBytes(settled[2], settled[0]));
+
+    Material red = scene.materials[0];
+    red.albedo = Vec3{0.6f, 0.1f, 0.1f};
+    viewer.setMaterial(0, red);
+    const auto edited = frames(moved, {false, false, true});
+    std::uint32_t wall = 0;
+    for (const shader::GBufferTexel& t : edited[2])
+        if (t.surfaceId == 1) {
+            EXPECT_NEAR(t.albedo.x, 0.6f, 1e-6f);
+            EXPECT_NEAR(t.albedo.y, 0.1f, 1e-6f);
+            ++wall;
+        }
+    EXPECT_GT(wall, 0u);
 }
 
 TEST_F(ViewerEditTest, DepthOfFieldChangesRestartTheMean) {

@@ -57,6 +57,10 @@ public:
     // caller that takes one pass per frame (the viewer) need not clear the buffer first. Only for
     // passes that sample every pixel (not masked).
     void setReplacesAccumulation(bool on) { replace_ = on; }
+    // On: a pixel's samples in one pass share their camera ray (PN_TRACE_SHARED_CAMERA), which the
+    // wavefront then traces once per pixel. For callers whose many passes spread the ray over the
+    // pixel (the viewer), not for a few passes of many samples.
+    void setSharesCameraRays(bool on) { shareCamera_ = on; }
 
     // Paths per dispatch: by device type unless set (0 puts the device's default back), never more
     // than the wavefront's working buffers can hold on this device.
@@ -77,6 +81,7 @@ private:
     gpu::Buffer placeholderMask_;
     bool hasMask_;
     bool replace_ = false;
+    bool shareCamera_ = false;
     std::uint64_t defaultBudget_, pathBudget_;
     std::uint64_t maxBudget_;  // the wavefront's working buffers bound it
     std::unique_ptr<gpu::ComputePipeline> pipeline_;  // the megakernel
