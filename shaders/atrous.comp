@@ -14,7 +14,7 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 
 layout(push_constant) uniform PushBlock { PassPush push; };
 layout(std430, set = 0, binding = PN_BINDING_GBUFFER) readonly buffer GBufferIn { GBufferTexel gbuffer[]; };
-layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) readonly buffer GuideIn { uvec2 guide[]; };
+layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) readonly buffer GuideIn { vec4 guide[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) readonly buffer FilterIn { vec4 src[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_OUT) writeonly buffer FilterOut { vec4 dst[]; };
 
@@ -23,7 +23,7 @@ const float kLog2e = 1.4426950409;  // exp(x) = exp2(x * log2(e))
 // The 3x3 Gaussian that smooths the variance estimate: the linear B-spline (1/4, 1/2, 1/4).
 const float kB1[2] = float[2](1.0 / 2.0, 1.0 / 4.0);
 
-float depthAt(ivec2 q, float fallback) { return insideImage(q) ? uintBitsToFloat(guide[pixelIndex(q)].y) : fallback; }
+float depthAt(ivec2 q, float fallback) { return insideImage(q) ? guide[pixelIndex(q)].w : fallback; }
 
 // What every tap is compared with: the centre pixel's guide and noise level.
 struct Centre {
@@ -49,11 +49,11 @@ struct FilterSums {
 void addTap(inout FilterSums sums, Centre c, ivec2 p, ivec2 offset, float kernel) {
     ivec2 q = p + offset;
     uint qi = pixelIndex(clampToImage(q));
-    uvec2 tapGuide = guide[qi];
-    float tapDepth = uintBitsToFloat(tapGuide.y);
+    vec4 tapGuide = guide[qi];
+    float tapDepth = tapGuide.w;
     bool usable = insideImage(q) && tapDepth > 0.0;
     vec4 s = src[qi];
-    float cosNormal = max(dot(c.normal, octDecode(unpackSnorm2x16(tapGuide.x))), 1e-30);
+    float cosNormal = max(dot(c.normal, tapGuide.xyz), 1e-30);
     float depthScale = viewer.sigmaDepth * abs(dot(c.gradient, vec2(offset))) + 1e-3 * c.depth;
     float exponent = viewer.sigmaNormal * log2(cosNormal) - kLog2e * abs(c.depth - tapDepth) / depthScale -
                      abs(c.luminance - luminance(s.rgb)) * c.invLumScale;
@@ -67,9 +67,9 @@ void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (!insideImage(p)) return;
     uint i = pixelIndex(p);
-    uvec2 centreGuide = guide[i];
-    float depth = uintBitsToFloat(centreGuide.y);
-    vec3 normal = octDecode(unpackSnorm2x16(centreGuide.x));
+    vec4 centreGuide = guide[i];
+    float depth = centreGuide.w;
+    vec3 normal = centreGuide.xyz;
     vec4 centre = src[i];
     vec4 result = centre;
     if (depth > 0.0) {

@@ -19,7 +19,7 @@ layout(std430, set = 0, binding = PN_BINDING_GBUFFER_PREV) readonly buffer GBuff
 layout(std430, set = 0, binding = PN_BINDING_HISTORY) readonly buffer HistoryIn { HistoryTexel history[]; };
 layout(std430, set = 0, binding = PN_BINDING_HISTORY_OUT) writeonly buffer HistoryOut { HistoryTexel historyOut[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) writeonly buffer FilterIn { vec4 filterIn[]; };
-layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) writeonly buffer GuideOut { uvec2 guide[]; };
+layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) writeonly buffer GuideOut { vec4 guide[]; };
 
 // This frame's mean radiance at a pixel.
 vec3 currentRadiance(uint i) { return accum[i].rgb / float(viewer.samplesPerFrame); }
@@ -33,19 +33,11 @@ bool sameSurface(GBufferTexel g, float expectedDepth, GBufferTexel prev) {
     return dot(g.normal, prev.normal) >= viewer.normalTolerance;
 }
 
-void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (!insideImage(p)) return;
-    uint i = pixelIndex(p);
-    float spp = float(viewer.samplesPerFrame);
-    vec3 current = currentRadiance(i);
-    float currentM1 = luminance(current);
-    float currentM2 = accum[i].a / spp;
-    GBufferTexel g = gbuffer[i];
-
-    // The current frame's 3x3 neighbourhood in YCoCg: clamp box, and the spatial variance used
-    // while a pixel has too little history for its own moments to mean anything.
-    vec3 mean = vec3(0.0), meanSquares = vec3(0.0);
+// The current frame's 3x3 neighbourhood in YCoCg: its mean and deviation, the clamp box, and the
+// spatial variance used while a pixel has too little history for its own moments to mean anything.
+void neighbourhood(ivec2 p, out vec3 mean, out vec3 sigma) {
+    mean = vec3(0.0);
+    vec3 meanSquares = vec3(0.0);
     float count = 0.0;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
@@ -57,7 +49,24 @@ void main() {
             count += 1.0;
         }
     mean /= count;
-    vec3 sigma = sqrt(max(meanSquares / count - mean * mean, vec3(0.0)));
+    sigma = sqrt(max(meanSquares / count - mean * mean, vec3(0.0)));
+}
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (!insideImage(p)) return;
+    uint i = pixelIndex(p);
+    float spp = float(viewer.samplesPerFrame);
+    vec3 current = currentRadiance(i);
+    float currentM1 = luminance(current);
+    float currentM2 = accum[i].a / spp;
+    GBufferTexel g = gbuffer[i];
+
+    // The current frame's 3x3 neighbourhood: read where it is used (a moving camera's clamp, or
+    // the variance while history is short), which a still view's converging pixels skip.
+    bool moving = viewer.historyValid != 0u && viewer.cameraMoved != 0u;
+    vec3 mean = vec3(0.0), sigma = vec3(0.0);
+    if (moving) neighbourhood(p, mean, sigma);
 
     bool haveHistory = false;
     HistoryTexel h;
@@ -121,10 +130,11 @@ void main() {
     historyOut[i] = o;
 
     // Variance of the mean's luminance; from the neighbourhood while history is short (SVGF).
-    float variance = o.samples >= 4.0 * spp ? max(o.moment2 - o.moment1 * o.moment1, 0.0) / o.samples
-                                            : sigma.x * sigma.x;
+    bool longHistory = o.samples >= 4.0 * spp;
+    if (!longHistory && !moving) neighbourhood(p, mean, sigma);
+    float variance = longHistory ? max(o.moment2 - o.moment1 * o.moment1, 0.0) / o.samples : sigma.x * sigma.x;
     vec3 albedo = demodulationAlbedo(g);
     float albedoLuminance = max(luminance(albedo), 1e-3);
     filterIn[i] = vec4(o.color / albedo, variance / (albedoLuminance * albedoLuminance));
-    guide[i] = packDenoiseGuide(g.normal, g.surfaceId != 0u ? g.depth : 0.0);
+    guide[i] = denoiseGuide(g.normal, g.surfaceId != 0u ? g.depth : 0.0);
 }

@@ -23,8 +23,7 @@ void tracePixel(uvec2 pixel, uint pixelIndex) {
     vec3 sum = vec3(0.0);
     float sumSquares = 0.0;
     for (uint k = 0u; k < frame.samplesPerPass; ++k) {
-        uint cameraSample = (push.mode & PN_TRACE_SHARED_CAMERA) != 0u ? firstSample : firstSample + k;
-        Path path = startPath(pixel, pixelIndex, firstSample + k, cameraSample);
+        Path path = startPath(pixel, pixelIndex, firstSample + k, (push.mode & PN_TRACE_SHARED_CAMERA) != 0u);
         finishPath(path, pixelIndex, closestRays, shadowRays);
         addSample(path.result, sum, sumSquares);
     }

@@ -18,7 +18,7 @@ void main() {
         uvec3 p = slotPixel(slot);
         if (pixelSampled(p.xy)) {
             uint pixelIndex = p.y * frame.width + p.x;
-            storePath(slot, startPath(p.xy, pixelIndex, pathSampleIndex(p), cameraSampleOf(p)));
+            storePath(slot, startPath(p.xy, pixelIndex, pathSampleIndex(p), (push.mode & PN_TRACE_SHARED_CAMERA) != 0u));
             startPathResult(slot);
             started = true;
         }

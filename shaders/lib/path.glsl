@@ -10,6 +10,7 @@
 #include "lib/offset.glsl"
 #include "lib/bvh.glsl"
 #include "lib/camera.glsl"
+#include "shared/pass_jitter.h"
 #include "lib/surface.glsl"
 #include "lib/light_sampler.glsl"
 #include "lib/material.glsl"
@@ -77,18 +78,20 @@ struct PendingShadow {
 
 PendingShadow noShadow() { return PendingShadow(ShadowRay(vec3(0.0), vec3(0.0, 0.0, 1.0), 0.0), vec3(0.0), false); }
 
-// The camera ray of sample cameraSample (the path's own, or its pass's first under
-// PN_TRACE_SHARED_CAMERA). The path's stream makes the same draws either way, so its later numbers
-// do not depend on whose camera ray it took.
-Path startPath(uvec2 pixel, uint pixelIndex, uint sampleIndex, uint cameraSample) {
+// The path's camera ray is its own, or under PN_TRACE_SHARED_CAMERA (sharedCamera) its pass's: the
+// pass's R2 point in the pixel (shared/pass_jitter.h) and a lens point from the pass's first
+// sample's stream. The path's stream makes the same draws either way, so its later numbers do not
+// depend on whose camera ray it took.
+Path startPath(uvec2 pixel, uint pixelIndex, uint sampleIndex, bool sharedCamera) {
     Path path;
     path.rng = rngSeed(pixelIndex, sampleIndex, frame.seed);
     vec2 jitter = rngNext2(path.rng);
     cameraRay(vec2(pixel) + jitter, path.rng, path.origin, path.direction);
-    if (cameraSample != sampleIndex) {
-        uint cameraRng = rngSeed(pixelIndex, cameraSample, frame.seed);
-        jitter = rngNext2(cameraRng);
-        cameraRay(vec2(pixel) + jitter, cameraRng, path.origin, path.direction);
+    if (sharedCamera) {
+        uint pass = sampleIndex / frame.samplesPerPass;
+        uint rotation = pcgHash(pixelIndex ^ pcgHash(frame.seed ^ 0x85ebca6bu));
+        uint lensRng = rngSeed(pixelIndex, pass * frame.samplesPerPass, frame.seed);
+        cameraRay(vec2(pixel) + passJitter(rotation, pcgHash(rotation), pass), lensRng, path.origin, path.direction);
     }
     path.throughput = vec3(1.0);
     path.result = vec3(0.0);

@@ -37,23 +37,9 @@ vec2 projectDirectionPrev(vec3 d) {
 }
 vec2 projectPointPrev(vec3 p) { return projectDirectionPrev(p - viewer.prevCameraPosition); }
 
-// Octahedral mapping of a unit vector to [-1, 1]^2 and back (Cigolle et al. 2014), for the
-// denoiser's 32-bit normals.
-vec2 octEncode(vec3 n) {
-    n /= abs(n.x) + abs(n.y) + abs(n.z);
-    vec2 e = n.xy;
-    if (n.z < 0.0) e = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
-    return e;
-}
-vec3 octDecode(vec2 e) {
-    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
-    float t = max(-n.z, 0.0);
-    n.xy += vec2(n.x >= 0.0 ? -t : t, n.y >= 0.0 ? -t : t);
-    return normalize(n);
-}
-
-uvec2 packDenoiseGuide(vec3 normal, float depth) {
-    return uvec2(depth > 0.0 ? packSnorm2x16(octEncode(normal)) : 0u, floatBitsToUint(depth));
+// The a-trous passes' guide (PN_DENOISE_GUIDE_BYTES): the normal, zero where nothing was hit.
+vec4 denoiseGuide(vec3 normal, float depth) {
+    return vec4(depth > 0.0 ? normal : vec3(0.0), depth);
 }
 
 // The albedo the denoiser divides out: 1 where the primary ray missed or the surface is black.

@@ -36,7 +36,6 @@ uint slotOf(uvec2 pixel, uint sampleInPass) {
 // Under PN_TRACE_SHARED_CAMERA a pixel's paths start on one camera ray: bounce 0 traces it for the
 // pixel's first sample only, and the others read that slot's hit (cameraRaySlot).
 bool camerasShared() { return (push.mode & PN_TRACE_SHARED_CAMERA) != 0u && push.waveBounce == 0u; }
-uint cameraSampleOf(uvec3 p) { return (push.mode & PN_TRACE_SHARED_CAMERA) != 0u ? pathSampleIndex(uvec3(p.xy, 0u)) : pathSampleIndex(p); }
 uint hitSlot(uint slot) { return camerasShared() ? slot % (push.tileWidth * push.tileHeight) : slot; }
 
 const uint PN_WAVE_AFTER_DELTA = 0x80000000u;

@@ -20,7 +20,7 @@ protected:
     std::vector<Vec3> denoise(const std::vector<Vec3>& radiance, const std::vector<Vec3>& albedo, std::uint32_t iterations) {
         gpu::Buffer accum = pixels<Vec4>(), gbuffer = pixels<shader::GBufferTexel>(), gbufferPrev = pixels<shader::GBufferTexel>();
         gpu::Buffer history = pixels<shader::HistoryTexel>(), historyOut = pixels<shader::HistoryTexel>();
-        gpu::Buffer a = pixels<Vec4>(), b = pixels<Vec4>(), guide = pixels<std::uint64_t>();
+        gpu::Buffer a = pixels<Vec4>(), b = pixels<Vec4>(), guide = pixelBytes(PN_DENOISE_GUIDE_BYTES);
         for (std::uint32_t i = 0; i < width * height; ++i) {
             float y = luminance(radiance[i]);
             view<Vec4>(accum)[i] = Vec4{radiance[i].x, radiance[i].y, radiance[i].z, y * y};

@@ -65,6 +65,8 @@ protected:
     }
     template <typename T>
     gpu::Buffer pixels() { return storage(VkDeviceSize(width) * height * sizeof(T)); }
+    // A buffer of `bytes` per pixel (a layout named by a size in shared/types.h, like the guide).
+    gpu::Buffer pixelBytes(VkDeviceSize bytes) { return storage(VkDeviceSize(width) * height * bytes); }
     template <typename T>
     static T* view(const gpu::Buffer& b) { return static_cast<T*>(b.mapped()); }
 

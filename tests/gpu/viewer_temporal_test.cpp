@@ -20,7 +20,7 @@ protected:
         historyA = pixels<shader::HistoryTexel>();
         historyB = pixels<shader::HistoryTexel>();
         filterIn = pixels<Vec4>();
-        guide = pixels<std::uint64_t>();
+        guide = pixelBytes(PN_DENOISE_GUIDE_BYTES);
         auto make = [&](gpu::Buffer& in, gpu::Buffer& out) {
             return std::make_unique<TemporalPass>(
                 *ctx, TemporalBuffers{&frame, &viewer, &accum, &gbuffer, &gbufferPrev, &in, &out, &filterIn, &guide});

@@ -102,8 +102,10 @@ void TracePass::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t h
                        std::uint32_t passIndex, std::uint32_t maxBounces, bool countRays, bool masked) {
     PN_CHECK(!masked || hasMask_);
     PN_CHECK(!masked || !replace_);  // a skipped pixel would keep the last pass's sums
+    // One sample per pass has its camera ray to itself: sharing would only change its position.
+    const bool shareCamera = shareCamera_ && samplesPerPass > 1;
     const std::uint32_t mode = (masked ? PN_TRACE_MASKED : 0u) | (replace_ ? PN_TRACE_REPLACE : 0u) |
-                               (shareCamera_ ? PN_TRACE_SHARED_CAMERA : 0u);
+                               (shareCamera ? PN_TRACE_SHARED_CAMERA : 0u);
     const std::vector<TraceTile> tiles = traceTiles(width, height, samplesPerPass, pathBudget_);
     if (kernelFor(width, height, samplesPerPass) == TraceKernel::Wavefront) {
         WavefrontPass& wave = wavefront();

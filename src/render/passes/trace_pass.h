@@ -57,9 +57,10 @@ public:
     // caller that takes one pass per frame (the viewer) need not clear the buffer first. Only for
     // passes that sample every pixel (not masked).
     void setReplacesAccumulation(bool on) { replace_ = on; }
-    // On: a pixel's samples in one pass share their camera ray (PN_TRACE_SHARED_CAMERA), which the
-    // wavefront then traces once per pixel. For callers whose many passes spread the ray over the
-    // pixel (the viewer), not for a few passes of many samples.
+    // On: a pixel's samples in one pass of several share their camera ray (PN_TRACE_SHARED_CAMERA),
+    // which the wavefront then traces once per pixel; successive passes move it over the pixel
+    // evenly (shared/pass_jitter.h). For callers that take many passes (the viewer), not for a
+    // few passes of many samples.
     void setSharesCameraRays(bool on) { shareCamera_ = on; }
 
     // Paths per dispatch: by device type unless set (0 puts the device's default back), never more
