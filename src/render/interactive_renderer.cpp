@@ -59,7 +59,7 @@ bool changesTheImage(const ViewSettings& a, const ViewSettings& b) {
     auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
     return a.apertureRadius != b.apertureRadius || a.focusDistance != b.focusDistance ||
            a.samplesPerFrame != b.samplesPerFrame || a.maxBounces != b.maxBounces ||
-           a.rouletteStart != b.rouletteStart || a.torch != b.torch ||
+           a.rouletteStart != b.rouletteStart || a.shareCameraRays != b.shareCameraRays || a.torch != b.torch ||
            !same(a.torchColor, b.torchColor) || a.torchIntensity != b.torchIntensity || a.torchRange != b.torchRange;
 }
 
@@ -234,9 +234,6 @@ void InteractiveRenderer::createPasses() {
     features_ = penumbra::kernelFeatures(arrays_, Accel::Bvh);
     trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, features_);
     trace_->setReplacesAccumulation(true);  // one pass per frame: no clear before it
-    // A frame's samples share a camera ray: the frames that follow spread it over the pixel, and
-    // the wavefront traces it once per pixel instead of once per sample.
-    trace_->setSharesCameraRays(true);
     auto gbufferPass = [&](const gpu::Buffer& out) {
         return std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, out, features_,
                                              &instancesPrev_);
@@ -382,6 +379,7 @@ void InteractiveRenderer::recordGBuffer(VkCommandBuffer cmd, bool toB, bool move
 void InteractiveRenderer::recordPasses(VkCommandBuffer cmd, const ViewSettings& s, bool heat, bool denoise, bool moved) {
     // This frame writes the letter last frame read (startHistory swapped them).
     const bool toB = historyIn_ == &historyA_;
+    trace_->setSharesCameraRays(s.shareCameraRays);
     timed(cmd, ViewerPass::Trace,
           [&] { trace_->record(cmd, width_, height_, s.samplesPerFrame, tracedFrames_++, s.maxBounces, true); });
     recordGBuffer(cmd, toB, moved);

@@ -21,6 +21,7 @@ TEST_F(BenchCliTest, ViewerJsonHasEveryKeyScriptsRead) {
     EXPECT_EQ(j.at("width").get<int>(), 64);
     EXPECT_EQ(j.at("height").get<int>(), 40);
     EXPECT_EQ(j.at("bounces").get<int>(), 4);
+    EXPECT_FALSE(j.at("shared_camera_rays").get<bool>());  // the viewer's default
     // At least the camera ray; every path in the closed box also sends shadow rays.
     EXPECT_GT(j.at("rays_per_pixel_per_sample").get<double>(), 1.0);
     const auto& passes = j.at("passes");
@@ -40,6 +41,9 @@ TEST_F(BenchCliTest, ViewerCameraMotionsRunAndBadOnesAreUsageErrors) {
         EXPECT_EQ(nlohmann::json::parse(r.out).at("camera_motion").get<std::string>(), motion);
     }
     expectOneLineError(run(std::string(kTinyViewer) + " --camera-motion spin"), 2, "static, orbit or walk");
+    RunResult shared = run(std::string(kTinyViewer) + " --spp 3 --share-camera-rays");
+    ASSERT_EQ(shared.exitCode, 0) << shared.err;
+    EXPECT_TRUE(nlohmann::json::parse(shared.out).at("shared_camera_rays").get<bool>());
     expectOneLineError(run(std::string(kTinyViewer) + " --denoise 9"), 2, "--denoise");
 }
 

@@ -23,9 +23,9 @@ using ViewerRenderTest = GpuTest;
 class ViewerRenderKernelTest : public GpuTest, public ::testing::WithParamInterface<const char*> {};
 
 // The viewer's running mean after `frames` still frames of samplesPerFrame samples each equals
-// the headless render of as many passes; the viewer's samples in a frame share their camera ray,
-// so the reference is rendered so too (at one sample per pass that changes nothing).
-void expectStillViewerMatchesTheRender(const gpu::Context& ctx, std::uint32_t samplesPerFrame) {
+// the headless render of as many passes, with the samples of a frame (a pass) sharing their
+// camera ray or not.
+void expectStillViewerMatchesTheRender(const gpu::Context& ctx, std::uint32_t samplesPerFrame, bool shareCameraRays) {
     Scene scene = makeCornellBox();
     const std::uint32_t w = 24, h = 18, frames = 6;
     RenderSettings rs;
@@ -34,7 +34,7 @@ void expectStillViewerMatchesTheRender(const gpu::Context& ctx, std::uint32_t sa
     rs.samplesPerPixel = frames * samplesPerFrame;
     rs.samplesPerPass = samplesPerFrame;
     rs.maxBounces = 6;
-    rs.shareCameraRays = samplesPerFrame > 1;
+    rs.shareCameraRays = shareCameraRays;
     Renderer reference(ctx, scene, rs);
     reference.render();
     ImageRgb expected = reference.image();
@@ -43,6 +43,7 @@ void expectStillViewerMatchesTheRender(const gpu::Context& ctx, std::uint32_t sa
     viewer.resize(w, h);
     ViewSettings vs;
     vs.samplesPerFrame = samplesPerFrame;
+    vs.shareCameraRays = shareCameraRays;
     vs.maxBounces = rs.maxBounces;
     vs.rouletteStart = rs.rouletteStart;
     for (std::uint32_t k = 0; k < frames; ++k) {
@@ -65,8 +66,9 @@ void expectStillViewerMatchesTheRender(const gpu::Context& ctx, std::uint32_t sa
 
 TEST_P(ViewerRenderKernelTest, StillCameraConvergesToTheHeadlessRender) {
     ScopedEnv kernel("PENUMBRA_TRACE_KERNEL", GetParam());
-    expectStillViewerMatchesTheRender(*ctx, 1);
-    expectStillViewerMatchesTheRender(*ctx, 3);
+    expectStillViewerMatchesTheRender(*ctx, 1, false);
+    expectStillViewerMatchesTheRender(*ctx, 3, false);
+    expectStillViewerMatchesTheRender(*ctx, 3, true);
 }
 
 INSTANTIATE_TEST_SUITE_P(Kernels, ViewerRenderKernelTest, ::testing::Values("mega", "wavefront"));

@@ -190,6 +190,7 @@ void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& s
         if (ImGui::SliderInt("spp per frame", &spp, 1, 64)) s.samplesPerFrame = std::uint32_t(spp);
         if (ImGui::SliderInt("max bounces", &bounces, 0, 32)) s.maxBounces = std::uint32_t(bounces);
         ImGui::SliderFloat("resolution scale", &s.resolutionScale, 0.25f, 1.0f, "%.2f");
+        ImGui::Checkbox("one camera ray per pixel per frame", &s.shareCameraRays);
         ImGui::Checkbox("temporal accumulation", &s.temporal);
         ImGui::SliderFloat("history clamp (0: off)", &s.clampSigma, 0.0f, 4.0f, "%.2f sigma");
         ImGui::SliderFloat("max history (moving)", &s.maxHistory, 1.0f, 256.0f, "%.0f");
