@@ -11,14 +11,8 @@ namespace penumbra::shader {
 using namespace penumbra::gpu_types;
 using std::floor;
 using std::min;
-#ifndef PN_INLINE
-#define PN_INLINE inline
 #endif
-#else
-#ifndef PN_INLINE
-#define PN_INLINE
-#endif
-#endif
+#include "shared/inline.h"
 
 // Frames shown since time 0 at `time` seconds, each for `secondsPerFrame`: the animation clock's
 // tick. 0 for a still texture (no positive frame time) or a time that is not a number >= 0.

@@ -5,14 +5,8 @@
 
 #ifdef __cplusplus
 namespace penumbra::shader {
-#ifndef PN_INLINE
-#define PN_INLINE inline
 #endif
-#else
-#ifndef PN_INLINE
-#define PN_INLINE
-#endif
-#endif
+#include "shared/inline.h"
 
 // The unit direction of the pinhole ray through a continuous pixel position (pixels, row 0 at
 // the top of the image, (0.5, 0.5) the centre of the first pixel).

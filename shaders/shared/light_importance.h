@@ -15,14 +15,8 @@ using std::max;
 using std::min;
 using std::sqrt;
 inline float inversesqrt(float x) { return 1.0f / std::sqrt(x); }
-#ifndef PN_INLINE
-#define PN_INLINE inline
 #endif
-#else
-#ifndef PN_INLINE
-#define PN_INLINE
-#endif
-#endif
+#include "shared/inline.h"
 
 // cos(max(0, a - b)) and sin(max(0, a - b)) from the sines and cosines of angles a, b in [0, pi].
 PN_INLINE float cosSubClamped(float sinA, float cosA, float sinB, float cosB) { return cosA > cosB ? 1.0f : cosA * cosB + sinA * sinB; }

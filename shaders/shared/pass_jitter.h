@@ -9,14 +9,8 @@
 
 #ifdef __cplusplus
 namespace penumbra::shader {
-#ifndef PN_INLINE
-#define PN_INLINE inline
 #endif
-#else
-#ifndef PN_INLINE
-#define PN_INLINE
-#endif
-#endif
+#include "shared/inline.h"
 
 // 2^32 / g and 2^32 / g^2, g = 1.3247179572... (the real root of x^3 = x + 1): fixed point, so the
 // sequence wraps exactly however many passes there are.
