@@ -16,7 +16,8 @@ layout(push_constant) uniform PushBlock { PassPush push; };
 uint groupsFor(uint items) { return (items + PN_WAVE_GROUP - 1u) / PN_WAVE_GROUP; }
 
 void main() {
-    uint live = control.rayCount[push.waveBounce & 1u];
+    // PN_WAVE_CAMERA_IN_PLACE: bounce 0's paths are every slot, never queued (wave_state.glsl).
+    uint live = PN_WAVE_MAKES_CAMERA_PATHS(push.mode, push.waveBounce) ? push.itemCount : control.rayCount[push.waveBounce & 1u];
     bool tail = live <= push.waveTailPaths;
     control.extendGroups = uint[4](tail ? 0u : groupsFor(live), 1u, 1u, 0u);
     control.tailGroups = uint[4](tail ? groupsFor(live) : 0u, 1u, 1u, 0u);

@@ -14,11 +14,19 @@ layout(local_size_x = PN_WAVE_GROUP) in;
 void main() {
     uint i = gl_GlobalInvocationID.x;
     bool live = i < liveRays();
-    uint slot = live ? queueIn(i) : 0u;
+    uint slot = live ? liveSlot(i) : 0u;
     // A camera ray shared by a pixel's samples is traced for the first one (hitSlot).
     live = live && hitSlot(slot) == slot;
     if (live) {
-        vec3 origin = unpackVec(pathField(0u, slot)), direction = unpackVec(pathField(1u, slot));
+        vec3 origin, direction;
+        if (cameraInPlace()) {
+            Path camera = cameraPath(slotPixel(slot));
+            origin = camera.origin;
+            direction = camera.direction;
+        } else {
+            origin = unpackVec(pathField(0u, slot));
+            direction = unpackVec(pathField(1u, slot));
+        }
         storeHit(slot, traceClosest(origin, direction, PN_INFINITY));
     }
     countRays(live ? 1u : 0u, 0u);

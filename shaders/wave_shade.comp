@@ -18,13 +18,16 @@ void main() {
     bool alive = false;
     PendingShadow shadow = noShadow();
     if (i < liveRays()) {
-        slot = queueIn(i);
+        slot = liveSlot(i);
         Hit hit = loadHit(hitSlot(slot));
         uvec3 p = slotPixel(slot);
-        Path path = loadPathForShading(slot, p, hit);
+        bool inPlace = cameraInPlace();
+        Path path = inPlace ? cameraPath(p) : loadPathForShading(slot, p, hit);
         alive = extendPath(path, hit, p.y * frame.width + p.x, shadow);
-        // The path's own light (emission, an escape) is rare: read-modify-write only then.
-        if (path.result != vec3(0.0)) addToPathResult(slot, path.result);
+        // The path's own light (emission, an escape) is rare: read-modify-write only then. A path
+        // made in place has no stored result yet: it starts it.
+        if (inPlace) setPathResult(slot, path.result);
+        else if (path.result != vec3(0.0)) addToPathResult(slot, path.result);
         if (alive) storePath(slot, path);
     }
     uint next = appendIndex(alive, (push.waveBounce + 1u) & 1u);

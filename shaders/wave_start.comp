@@ -17,8 +17,7 @@ void main() {
     if (slot < push.itemCount) {
         uvec3 p = slotPixel(slot);
         if (pixelSampled(p.xy)) {
-            uint pixelIndex = p.y * frame.width + p.x;
-            storePath(slot, startPath(p.xy, pixelIndex, pathSampleIndex(p), (push.mode & PN_TRACE_SHARED_CAMERA) != 0u));
+            storePath(slot, cameraPath(p));
             startPathResult(slot);
             started = true;
         }

@@ -140,9 +140,18 @@ uint appendIndex(bool want, uint counter) {
     return subgroupBroadcastFirst(base) + subgroupBallotExclusiveBitCount(ballot);
 }
 
+// PN_WAVE_CAMERA_IN_PLACE: bounce 0 makes its camera paths in place, every slot live in order.
+bool cameraInPlace() { return PN_WAVE_MAKES_CAMERA_PATHS(push.mode, push.waveBounce); }
+
 // The queue a bounce reads (its live paths) and the one it fills for the next bounce.
 uint queueIn(uint i) { return waveQueues[(push.waveBounce & 1u) * push.waveStride + i]; }
+
+uint liveSlot(uint i) { return cameraInPlace() ? i : queueIn(i); }
+// The camera path the start step stores for the slot whose pixel is p.
+Path cameraPath(uvec3 p) {
+    return startPath(p.xy, p.y * frame.width + p.x, pathSampleIndex(p), (push.mode & PN_TRACE_SHARED_CAMERA) != 0u);
+}
 void queueNext(uint i, uint slot) { waveQueues[((push.waveBounce + 1u) & 1u) * push.waveStride + i] = slot; }
-uint liveRays() { return control.rayCount[push.waveBounce & 1u]; }
+uint liveRays() { return cameraInPlace() ? push.itemCount : control.rayCount[push.waveBounce & 1u]; }
 
 #endif

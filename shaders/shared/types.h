@@ -499,6 +499,11 @@ PN_STRUCT(FrameUniforms) {
 // ray (shared/pass_jitter.h), so the wavefront traces it once per pixel. For the viewer, whose
 // many passes spread it over the pixel; set only for passes of more than one sample.
 #define PN_TRACE_SHARED_CAMERA 4u
+// PassPush.mode bit the wavefront sets for itself: bounce 0's extend and shade make each slot's
+// camera path where they need it (startPath) instead of reading what a start step stored, and take
+// slot i as queue entry i (every slot is live: not for masked passes, nor for a tail from the start).
+#define PN_WAVE_CAMERA_IN_PLACE 8u
+#define PN_WAVE_MAKES_CAMERA_PATHS(mode, bounce) (((mode) & PN_WAVE_CAMERA_IN_PLACE) != 0u && (bounce) == 0u)
 #define PN_GBUFFER_SUBPIXEL 1u    // PassPush.mode bit of gbuffer.comp: trace cell passIndex of a 4x4 grid in the pixel
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
 // The denoiser's per-pixel guide, written by temporal.comp: xyz = the shading normal, w = the

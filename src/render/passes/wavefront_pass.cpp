@@ -152,12 +152,19 @@ void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint
     const std::uint32_t tileWidth = inside.width, tileHeight = inside.height;
     const std::uint64_t slots = std::uint64_t(tileWidth) * tileHeight * samplesPerPass;
     reserve(slots);
-    shader::PassPush push{passIndex,           traceMode, std::uint32_t(slots),
+    // Every slot of an unmasked pass is live at bounce 0: unless the tail takes the pass from its
+    // camera rays (it reads stored paths), bounce 0 makes the camera paths where it needs them and
+    // the start step, its stores and its queue are skipped.
+    const bool cameraInPlace = (traceMode & PN_TRACE_MASKED) == 0 && slots > tailPaths_;
+    const std::uint32_t mode = traceMode | (cameraInPlace ? PN_WAVE_CAMERA_IN_PLACE : 0u);
+    shader::PassPush push{passIndex,           mode, std::uint32_t(slots),
                           countRays ? 1u : 0u, tile.x, tile.y, tileWidth, tileHeight, std::uint32_t(capacity_), 0u, tailPaths_, 0u};
     vkCmdFillBuffer(cmd, control_.get(), 0, VK_WHOLE_SIZE, 0);
     gpu::computeBarrier(cmd);
-    timed(cmd, kStart, 0, [&] { start_->dispatch(cmd, groupsFor(slots), 1, 1, &push); });
-    gpu::computeBarrier(cmd);
+    if (!cameraInPlace) {
+        timed(cmd, kStart, 0, [&] { start_->dispatch(cmd, groupsFor(slots), 1, 1, &push); });
+        gpu::computeBarrier(cmd);
+    }
     // Bounce b traces the live paths' closest hits and shades them, while the shadow rays that
     // bounce b - 1 queued are traced alongside the closest hits (they touch disjoint state). Once
     // few paths are left, the args step hands them to the tail instead (extend and shade then
