@@ -73,7 +73,7 @@ void main() {
     if (viewer.historyValid != 0u) {
         if (viewer.cameraMoved == 0u) {
             // Same pixel, same camera: only a changed surface (a moved object) breaks history.
-            if (sameSurface(g, g.depth, gbufferPrev[i])) {
+            if (viewer.gbufferReused != 0u || sameSurface(g, g.depth, gbufferPrev[i])) {
                 h = history[i];
                 haveHistory = true;
             }
@@ -136,5 +136,6 @@ void main() {
     vec3 albedo = demodulationAlbedo(g);
     float albedoLuminance = max(luminance(albedo), 1e-3);
     filterIn[i] = vec4(o.color / albedo, variance / (albedoLuminance * albedoLuminance));
-    guide[i] = denoiseGuide(g.normal, g.surfaceId != 0u ? g.depth : 0.0);
+    // A reused G-buffer's guide is the one last frame wrote.
+    if (viewer.gbufferReused == 0u) guide[i] = denoiseGuide(g.normal, g.surfaceId != 0u ? g.depth : 0.0);
 }

@@ -567,7 +567,7 @@ PN_STRUCT(ViewerUniforms) {
     uint denoise;          // nonzero: the tonemap input is the denoiser's output
     float debugOpacity;    // the debug view blended over the image: 1 shows only the view, 0 only the image
     uint debugInset;       // nonzero: the debug view in a small window over the image (PN_DEBUG_INSET_*)
-    uint pad0;
+    uint gbufferReused;    // nonzero: both G-buffers hold this still view (last frame's guide stands too)
 };
 
 // Largest counts of a heat-map frame (for the legend), 16 bytes. heatmap.comp writes a pixel's

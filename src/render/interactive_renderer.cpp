@@ -273,7 +273,12 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
         !arrays_.instances.empty() && std::memcmp(lastFrameInstances_.data(), arrays_.instances.data(),
                                                   arrays_.instances.size() * sizeof(shader::Instance)) != 0;
     const bool moved = previousFrame_ && (!sameCamera(*previousFrame_, f) || animating || instancesMoved);
-    const shader::ViewerUniforms v = viewerUniforms(s, f, moved);
+    // A still view whose G-buffers both hold it reuses them (recordGBuffer): the temporal pass is
+    // told, so it neither compares them nor writes the denoiser's guide again.
+    if (moved) stillGBuffer_[0] = stillGBuffer_[1] = false;
+    const bool reuseGBuffer = stillGBuffer_[0] && stillGBuffer_[1];
+    shader::ViewerUniforms v = viewerUniforms(s, f, moved);
+    v.gbufferReused = reuseGBuffer ? 1u : 0u;
     const bool heat = isHeatView(s.debug);
     std::memcpy(frameUniforms_.mapped(), &f, sizeof(f));
     std::memcpy(viewerUniforms_.mapped(), &v, sizeof(v));
@@ -284,7 +289,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     recorded_ = 0;
     timer_.begin(cmd, std::uint32_t(ViewerPass::Frame));
     recordUploads(cmd, camera, s, instancesMoved, heat);
-    recordPasses(cmd, s, heat, v.denoise != 0, moved);
+    recordPasses(cmd, s, heat, v.denoise != 0, moved, reuseGBuffer);
     if (s.debug == DebugView::BvhBoxes) recordBoxOverlay(cmd, s);
     timer_.end(cmd, std::uint32_t(ViewerPass::Frame));
     recorded_ |= 1u << std::uint32_t(ViewerPass::Frame);
@@ -368,21 +373,21 @@ void InteractiveRenderer::recordUploads(VkCommandBuffer cmd, const Camera& camer
     transferToComputeBarrier(cmd);
 }
 
-void InteractiveRenderer::recordGBuffer(VkCommandBuffer cmd, bool toB, bool moved) {
-    if (moved) stillGBuffer_[0] = stillGBuffer_[1] = false;
-    stats_.gbufferSkipped = stillGBuffer_[0] && stillGBuffer_[1];
-    if (stats_.gbufferSkipped) return;
+void InteractiveRenderer::recordGBuffer(VkCommandBuffer cmd, bool toB, bool moved, bool reuse) {
+    stats_.gbufferSkipped = reuse;
+    if (reuse) return;
     timed(cmd, ViewerPass::GBuffer, [&] { (toB ? gbufferPassB_ : gbufferPassA_)->record(cmd, width_, height_); });
     stillGBuffer_[toB ? 1 : 0] = !moved;
 }
 
-void InteractiveRenderer::recordPasses(VkCommandBuffer cmd, const ViewSettings& s, bool heat, bool denoise, bool moved) {
+void InteractiveRenderer::recordPasses(VkCommandBuffer cmd, const ViewSettings& s, bool heat, bool denoise, bool moved,
+                                       bool reuseGBuffer) {
     // This frame writes the letter last frame read (startHistory swapped them).
     const bool toB = historyIn_ == &historyA_;
     trace_->setSharesCameraRays(s.shareCameraRays);
     timed(cmd, ViewerPass::Trace,
           [&] { trace_->record(cmd, width_, height_, s.samplesPerFrame, tracedFrames_++, s.maxBounces, true); });
-    recordGBuffer(cmd, toB, moved);
+    recordGBuffer(cmd, toB, moved, reuseGBuffer);
     if (heat) timed(cmd, ViewerPass::Heatmap, [&] { heatmap_->record(cmd, width_, height_); });
     gpu::computeBarrier(cmd);
     timed(cmd, ViewerPass::Temporal, [&] { (toB ? temporalAB_ : temporalBA_)->record(cmd, width_, height_); });

@@ -74,6 +74,7 @@ public:
     const gpu::Buffer& display() const { return display_; }  // uint RGBA8 per pixel
     const gpu::Buffer& history() const { return *historyOut_; }  // HistoryTexel per pixel
     const gpu::Buffer& gbuffer() const { return historyOut_ == &historyA_ ? gbufferA_ : gbufferB_; }
+    const gpu::Buffer& denoiseGuide() const { return guide_; }  // PN_DENOISE_GUIDE_BYTES per pixel
     // After a heat view's frame: vec4 per pixel (nodes, triangles, leaf depth, leaf primitives).
     const gpu::Buffer& heatCounts() const { return filterB_; }
     // The linear image the tonemap pass read last frame (vec4 per pixel, rgb radiance): the
@@ -101,9 +102,9 @@ private:
     shader::FrameUniforms frameUniforms(const Camera& camera, const ViewSettings& s) const;
     shader::ViewerUniforms viewerUniforms(const ViewSettings& s, const shader::FrameUniforms& f, bool moved) const;
     void recordUploads(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& s, bool instancesMoved, bool heat);
-    void recordPasses(VkCommandBuffer cmd, const ViewSettings& s, bool heat, bool denoise, bool moved);
-    // Records this frame's G-buffer pass unless both letters already hold this still view.
-    void recordGBuffer(VkCommandBuffer cmd, bool toB, bool moved);
+    void recordPasses(VkCommandBuffer cmd, const ViewSettings& s, bool heat, bool denoise, bool moved, bool reuseGBuffer);
+    // Records this frame's G-buffer pass unless both letters already hold this still view (reuse).
+    void recordGBuffer(VkCommandBuffer cmd, bool toB, bool moved, bool reuse);
     void recordBoxOverlay(VkCommandBuffer cmd, const ViewSettings& s);
     // Records body between the pass's timestamps and notes that the pass ran this frame.
     template <class Body>

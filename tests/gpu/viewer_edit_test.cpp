@@ -173,11 +173,24 @@ TEST_F(ViewerEditTest, AStillViewReusesItsGBufferUntilSomethingChanges) {
     viewer.resize(kW, kH);
     ViewSettings vs;
     vs.maxBounces = 1;
+    // The denoiser's guide holds this frame's G-buffer normal and depth (zero where nothing was
+    // hit), also in frames that reuse the G-buffer and leave the guide as it was.
+    static_assert(sizeof(Vec4) == PN_DENOISE_GUIDE_BYTES);
+    auto expectGuideOf = [&](const std::vector<shader::GBufferTexel>& g) {
+        const auto guide = gpu::downloadBuffer<Vec4>(*ctx, viewer.commands(), viewer.denoiseGuide(), kW * kH);
+        for (std::uint32_t i = 0; i < kW * kH; ++i) {
+            const bool hit = g[i].surfaceId != 0;
+            ASSERT_EQ(guide[i].x, hit ? g[i].normal.x : 0.0f) << i;
+            ASSERT_EQ(guide[i].z, hit ? g[i].normal.z : 0.0f) << i;
+            ASSERT_EQ(guide[i].w, hit ? g[i].depth : 0.0f) << i;
+        }
+    };
     auto frames = [&](const Camera& camera, std::initializer_list<bool> skipped) {
         std::vector<std::vector<shader::GBufferTexel>> out;
         for (bool skip : skipped) {
             out.push_back(renderGBuffer(*ctx, viewer, camera, vs));
             EXPECT_EQ(viewer.stats().gbufferSkipped, skip) << "frame " << out.size();
+            expectGuideOf(out.back());
         }
         return out;
     };
