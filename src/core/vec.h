@@ -10,6 +10,11 @@ namespace penumbra {
 
 struct Vec2 {
     float x = 0, y = 0;
+
+    constexpr Vec2() = default;
+    // So that vec2(x, y) in code shared with GLSL compiles with every C++20 compiler (clang 14
+    // has no parenthesised aggregate initialisation).
+    constexpr Vec2(float x_, float y_) : x(x_), y(y_) {}
 };
 
 struct Vec3 {
