@@ -62,11 +62,8 @@ void main() {
     float currentM2 = accum[i].a / spp;
     GBufferTexel g = gbuffer[i];
 
-    // The current frame's 3x3 neighbourhood: read where it is used (a moving camera's clamp, or
-    // the variance while history is short), which a still view's converging pixels skip.
-    bool moving = viewer.historyValid != 0u && viewer.cameraMoved != 0u;
-    vec3 mean = vec3(0.0), sigma = vec3(0.0);
-    if (moving) neighbourhood(p, mean, sigma);
+    vec3 mean, sigma;
+    neighbourhood(p, mean, sigma);
 
     bool haveHistory = false;
     HistoryTexel h;
@@ -130,9 +127,8 @@ void main() {
     historyOut[i] = o;
 
     // Variance of the mean's luminance; from the neighbourhood while history is short (SVGF).
-    bool longHistory = o.samples >= 4.0 * spp;
-    if (!longHistory && !moving) neighbourhood(p, mean, sigma);
-    float variance = longHistory ? max(o.moment2 - o.moment1 * o.moment1, 0.0) / o.samples : sigma.x * sigma.x;
+    float variance = o.samples >= 4.0 * spp ? max(o.moment2 - o.moment1 * o.moment1, 0.0) / o.samples
+                                            : sigma.x * sigma.x;
     vec3 albedo = demodulationAlbedo(g);
     float albedoLuminance = max(luminance(albedo), 1e-3);
     filterIn[i] = vec4(o.color / albedo, variance / (albedoLuminance * albedoLuminance));

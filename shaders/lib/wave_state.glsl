@@ -34,7 +34,7 @@ uint slotOf(uvec2 pixel, uint sampleInPass) {
 }
 
 // Under PN_TRACE_SHARED_CAMERA a pixel's paths start on one camera ray: bounce 0 traces it for the
-// pixel's first sample only, and the others read that slot's hit (cameraRaySlot).
+// pixel's first sample only, and the others read that slot's hit (hitSlot).
 bool camerasShared() { return (push.mode & PN_TRACE_SHARED_CAMERA) != 0u && push.waveBounce == 0u; }
 uint hitSlot(uint slot) { return camerasShared() ? slot % (push.tileWidth * push.tileHeight) : slot; }
 
@@ -145,13 +145,14 @@ bool cameraInPlace() { return PN_WAVE_MAKES_CAMERA_PATHS(push.mode, push.waveBou
 
 // The queue a bounce reads (its live paths) and the one it fills for the next bounce.
 uint queueIn(uint i) { return waveQueues[(push.waveBounce & 1u) * push.waveStride + i]; }
-
+void queueNext(uint i, uint slot) { waveQueues[((push.waveBounce + 1u) & 1u) * push.waveStride + i] = slot; }
+uint liveRays() { return cameraInPlace() ? push.itemCount : control.rayCount[push.waveBounce & 1u]; }
+// The slot of this bounce's i-th live path.
 uint liveSlot(uint i) { return cameraInPlace() ? i : queueIn(i); }
+
 // The camera path the start step stores for the slot whose pixel is p.
 Path cameraPath(uvec3 p) {
     return startPath(p.xy, p.y * frame.width + p.x, pathSampleIndex(p), (push.mode & PN_TRACE_SHARED_CAMERA) != 0u);
 }
-void queueNext(uint i, uint slot) { waveQueues[((push.waveBounce + 1u) & 1u) * push.waveStride + i] = slot; }
-uint liveRays() { return cameraInPlace() ? push.itemCount : control.rayCount[push.waveBounce & 1u]; }
 
 #endif

@@ -33,7 +33,7 @@ struct ViewSettings {
     std::uint32_t rouletteStart = 3;
     // A pixel's samples in a frame share one camera ray, which the wavefront traces once instead of
     // once per sample; frames move it over the pixel (shared/pass_jitter.h). Faster at several
-    // samples per frame (DOOM1 E1M1 1280x800 x 4: 0.26 ms of 4.8), and the denoised image is as
+    // samples per frame (DOOM1 E1M1 1280x800 x 4: 0.25 ms of 4.74), and the denoised image is as
     // good or better at equal time, but the raw mean can be noisier where textures have detail
     // below a pixel (Freedoom E1M1: +6%), so it is off unless asked for.
     bool shareCameraRays = false;
