@@ -92,6 +92,10 @@ using namespace penumbra::gpu_types;
 // Not a capability but a promise, so not in PN_FEATURE_ALL (which must handle any scene): the
 // scene has exactly one top-level light (a WAD level's torch), whose bound a pick then weighs once.
 #define PN_FEATURE_ONE_TOP_LIGHT 8192u
+// Not a scene's feature but a kernel variant: the wavefront's bounce-0 extend and shade, which make
+// their camera paths in place (PN_WAVE_CAMERA_IN_PLACE); the later rounds' kernels carry none of
+// that code (in wave_shade it cost eight registers in every round).
+#define PN_FEATURE_CAMERA_IN_PLACE 16384u
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic

@@ -43,8 +43,8 @@ WavefrontPass::WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, con
                              const gpu::Buffer& activeMask, std::uint32_t features)
     : ctx_(ctx) {
     const std::vector<std::uint32_t> extra(std::begin(kWorkingBindings), std::end(kWorkingBindings));
-    auto make = [&](const char* shader) {
-        auto pipeline = makeScenePipeline(ctx, shader, scene, frameUniforms, extra, features);
+    auto make = [&](const char* shader, std::uint32_t variant = 0) {
+        auto pipeline = makeScenePipeline(ctx, shader, scene, frameUniforms, extra, features | variant);
         pipeline->bind(PN_BINDING_ACCUM, accumulation);
         pipeline->bind(PN_BINDING_COUNTERS, counters);
         pipeline->bind(PN_BINDING_ACTIVE_MASK, activeMask);
@@ -53,6 +53,8 @@ WavefrontPass::WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, con
     start_ = make("wave_start");
     extend_ = make("wave_extend");
     shade_ = make("wave_shade");
+    extendCamera_ = make("wave_extend", PN_FEATURE_CAMERA_IN_PLACE);
+    shadeCamera_ = make("wave_shade", PN_FEATURE_CAMERA_IN_PLACE);
     shadow_ = make("wave_shadow");
     tail_ = make("wave_tail");
     finish_ = make("wave_finish");
@@ -134,7 +136,8 @@ void WavefrontPass::reserve(std::uint64_t slots) {
 }
 
 void WavefrontPass::bindWorkingBuffers() {
-    for (gpu::ComputePipeline* p : {start_.get(), extend_.get(), shade_.get(), shadow_.get(), tail_.get(), finish_.get()}) {
+    for (gpu::ComputePipeline* p : {start_.get(), extend_.get(), shade_.get(), extendCamera_.get(), shadeCamera_.get(),
+                                    shadow_.get(), tail_.get(), finish_.get()}) {
         p->bind(PN_BINDING_WAVE_PATHS, paths_);
         p->bind(PN_BINDING_WAVE_HITS, hits_);
         p->bind(PN_BINDING_WAVE_SHADOWS, shadows_);
@@ -176,11 +179,15 @@ void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint
         push.waveBounce = b;
         args_->dispatch(cmd, 1, 1, 1, &push);
         gpu::indirectBarrier(cmd);
-        if (b <= maxBounces) timed(cmd, kExtend, b, [&] { extend_->dispatchIndirect(cmd, control_, extendArgs, &push); });
+        // Bounce 0 of a pass that makes its camera paths in place runs the kernels made for it.
+        const bool camera = b == 0 && cameraInPlace;
+        const gpu::ComputePipeline& extend = camera ? *extendCamera_ : *extend_;
+        const gpu::ComputePipeline& shade = camera ? *shadeCamera_ : *shade_;
+        if (b <= maxBounces) timed(cmd, kExtend, b, [&] { extend.dispatchIndirect(cmd, control_, extendArgs, &push); });
         if (b >= 1) timed(cmd, kShadow, b, [&] { shadow_->dispatchIndirect(cmd, control_, shadowArgs, &push); });
         gpu::computeBarrier(cmd);
         if (b <= maxBounces) {
-            timed(cmd, kShade, b, [&] { shade_->dispatchIndirect(cmd, control_, extendArgs, &push); });
+            timed(cmd, kShade, b, [&] { shade.dispatchIndirect(cmd, control_, extendArgs, &push); });
             if (tailPaths_ != 0) timed(cmd, kTail, b, [&] { tail_->dispatchIndirect(cmd, control_, tailArgs, &push); });
             gpu::computeBarrier(cmd);
         }

@@ -71,6 +71,8 @@ private:
     std::uint32_t tailPaths_ = 0;  // PassPush.waveTailPaths
     gpu::Buffer paths_, hits_, shadows_, queues_, control_;
     std::unique_ptr<gpu::ComputePipeline> start_, args_, extend_, shade_, shadow_, tail_, finish_;
+    // Bounce 0's extend and shade when they make the camera paths (PN_FEATURE_CAMERA_IN_PLACE).
+    std::unique_ptr<gpu::ComputePipeline> extendCamera_, shadeCamera_;
     struct StageTimes {
         explicit StageTimes(const gpu::Context& ctx) : timer(ctx, kSections) {}
         static constexpr std::uint32_t kSections = 256;
