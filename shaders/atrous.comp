@@ -3,7 +3,8 @@
 // push.passIndex pixels apart (1, 2, 4, ...), weighted down across normal and depth edges and
 // across luminance differences large compared with the local noise (the variance channel, which
 // each pass filters with the squared weights). It runs on illumination (albedo divided out by
-// temporal.comp); the last pass multiplies the albedo back, so texture detail is never blurred.
+// temporal.comp); the last pass multiplies the albedo back, so texture detail is never blurred,
+// and may write the display too (PN_ATROUS_DISPLAY).
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/types.h"
@@ -11,12 +12,14 @@
 layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 
 #include "lib/viewer_common.glsl"
+#include "lib/display.glsl"
 
 layout(push_constant) uniform PushBlock { PassPush push; };
 layout(std430, set = 0, binding = PN_BINDING_GBUFFER) readonly buffer GBufferIn { GBufferTexel gbuffer[]; };
 layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) readonly buffer GuideIn { vec4 guide[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) readonly buffer FilterIn { vec4 src[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_OUT) writeonly buffer FilterOut { vec4 dst[]; };
+layout(std430, set = 0, binding = PN_BINDING_DISPLAY) writeonly buffer DisplayBuffer { uint display[]; };
 
 const float kB3[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
 const float kLog2e = 1.4426950409;  // exp(x) = exp2(x * log2(e))
@@ -29,7 +32,7 @@ float depthAt(ivec2 q, float fallback) { return insideImage(q) ? guide[pixelInde
 struct Centre {
     vec3 normal;
     float depth;
-    vec2 gradient;     // screen-space depth gradient, so slanted surfaces are not cut into strips
+    vec2 depthSlope;   // sigmaDepth times the depth gradient per tap step, so slanted surfaces are not cut into strips
     float luminance;
     float invLumScale; // log2(e) over the luminance tolerance
 };
@@ -40,27 +43,38 @@ struct FilterSums {
     float weight;
 };
 
-// Adds the tap at p + offset with kernel weight `kernel`. The three edge-stopping weights,
-// pow(max(cos, 0), sigmaNormal) * exp(-depthTerm) * exp(-lumTerm), are folded into one exp2: the
-// filter is bound by special-function throughput (log, exp, reciprocal), not by its reads. A
-// cosine <= 0 gives log2 of a tiny floor, so the weight rounds to 0 as pow(0, sigma) does, with
-// no 0 * -inf. Branch-free: a tap outside the image reads the nearest pixel and weighs 0, so the
-// loops unroll into straight-line code.
-void addTap(inout FilterSums sums, Centre c, ivec2 p, ivec2 offset, float kernel) {
-    ivec2 q = p + offset;
-    uint qi = pixelIndex(clampToImage(q));
+// Adds the tap `tap` steps from p (push.passIndex pixels per step) with kernel weight `kernel`. The
+// three edge-stopping weights, pow(max(cos, 0), sigmaNormal) * exp(-depthTerm) * exp(-lumTerm), are
+// folded into one exp2. A cosine <= 0 gives log2 of a tiny floor, so the weight rounds to 0 as
+// pow(0, sigma) does, with no 0 * -inf. `nearEdge` (a literal at each call, so it compiles away)
+// is for pixels whose footprint may leave the image: a tap outside reads the nearest pixel and
+// weighs 0, so the loops unroll into straight-line code either way.
+void addTap(inout FilterSums sums, Centre c, ivec2 p, ivec2 tap, float kernel, bool nearEdge) {
+    ivec2 q = p + tap * int(push.passIndex);
+    uint qi = pixelIndex(nearEdge ? clampToImage(q) : q);
     vec4 tapGuide = guide[qi];
     float tapDepth = tapGuide.w;
-    bool usable = insideImage(q) && tapDepth > 0.0;
+    bool usable = (!nearEdge || insideImage(q)) && tapDepth > 0.0;
     vec4 s = src[qi];
     float cosNormal = max(dot(c.normal, tapGuide.xyz), 1e-30);
-    float depthScale = viewer.sigmaDepth * abs(dot(c.gradient, vec2(offset))) + 1e-3 * c.depth;
+    float depthScale = abs(dot(c.depthSlope, vec2(tap))) + 1e-3 * c.depth;
     float exponent = viewer.sigmaNormal * log2(cosNormal) - kLog2e * abs(c.depth - tapDepth) / depthScale -
                      abs(c.luminance - luminance(s.rgb)) * c.invLumScale;
     float w = usable ? kernel * exp2(exponent) : 0.0;
     sums.color += w * s.rgb;
     sums.variance += w * w * s.a;
     sums.weight += w;
+}
+
+// The 5x5 taps around p; the centre's own weight is its kernel weight (it matches itself), so it
+// is added up front rather than computed.
+FilterSums filterTaps(Centre c, ivec2 p, vec4 centre, bool nearEdge) {
+    float k0 = kB3[0] * kB3[0];
+    FilterSums sums = FilterSums(k0 * centre.rgb, k0 * k0 * centre.a, k0);
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx)
+            if (dx != 0 || dy != 0) addTap(sums, c, p, ivec2(dx, dy), kB3[abs(dx)] * kB3[abs(dy)], nearEdge);
+    return sums;
 }
 
 void main() {
@@ -85,17 +99,19 @@ void main() {
         Centre c;
         c.normal = normal;
         c.depth = depth;
-        c.gradient = 0.5 * vec2(depthAt(p + ivec2(1, 0), depth) - depthAt(p - ivec2(1, 0), depth),
-                                depthAt(p + ivec2(0, 1), depth) - depthAt(p - ivec2(0, 1), depth));
+        int step = int(push.passIndex);
+        vec2 gradient = 0.5 * vec2(depthAt(p + ivec2(1, 0), depth) - depthAt(p - ivec2(1, 0), depth),
+                                   depthAt(p + ivec2(0, 1), depth) - depthAt(p - ivec2(0, 1), depth));
+        c.depthSlope = viewer.sigmaDepth * float(step) * gradient;
         c.luminance = luminance(centre.rgb);
         c.invLumScale = kLog2e / (viewer.sigmaLuminance * sqrt(max(variance / kernelSum, 0.0)) + 1e-6);
-        int step = int(push.passIndex);
-        FilterSums sums = FilterSums(vec3(0.0), 0.0, 0.0);
-        for (int dy = -2; dy <= 2; ++dy)
-            for (int dx = -2; dx <= 2; ++dx) addTap(sums, c, p, ivec2(dx, dy) * step, kB3[abs(dx)] * kB3[abs(dy)]);
+        bool nearEdge = any(lessThan(p, ivec2(2 * step))) || any(greaterThanEqual(p + 2 * step, ivec2(frame.width, frame.height)));
+        FilterSums sums = nearEdge ? filterTaps(c, p, centre, true) : filterTaps(c, p, centre, false);
         // The centre tap always has a weight > 0.
         result = vec4(sums.color / sums.weight, sums.variance / (sums.weight * sums.weight));
     }
     if ((push.mode & PN_ATROUS_LAST) != 0u) result.rgb *= demodulationAlbedo(gbuffer[i]);
     dst[i] = result;
+    // What the tonemap pass would make of it, saving that pass a read of the image and a barrier.
+    if ((push.mode & PN_ATROUS_DISPLAY) != 0u) display[i] = displayPixel(toneMapped(result.rgb));
 }

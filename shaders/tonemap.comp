@@ -1,7 +1,8 @@
 #version 460
 // Display: exposure, a tone curve and sRGB encoding of the temporal (or denoised) radiance, and a
 // debug view blended over it (over the whole image or in a small window), packed as RGBA8 for the
-// copy to the window. Must match src/image/tonemap.cpp.
+// copy to the window (lib/display.glsl). When the denoiser runs and no debug view is drawn, its
+// last pass writes the display itself and this pass is not recorded.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/types.h"
@@ -9,27 +10,12 @@
 layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 
 #include "lib/viewer_common.glsl"
+#include "lib/display.glsl"
 
 layout(std430, set = 0, binding = PN_BINDING_HISTORY_OUT) readonly buffer HistoryBuffer { HistoryTexel history[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_OUT) readonly buffer FilteredBuffer { vec4 filtered[]; };
 layout(std430, set = 0, binding = PN_BINDING_GBUFFER) readonly buffer GBufferIn { GBufferTexel gbuffer[]; };
 layout(std430, set = 0, binding = PN_BINDING_DISPLAY) writeonly buffer DisplayBuffer { uint display[]; };
-
-float reinhard(float x) { return x > 0.0 ? (isinf(x) ? 1.0 : x / (1.0 + x)) : 0.0; }
-
-// Narkowicz's fit of the ACES reference rendering and output transforms.
-float acesFilmic(float x) {
-    if (!(x > 0.0)) return 0.0;
-    if (isinf(x)) return 1.0;
-    return clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-}
-
-float srgbOetf(float x) { return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055; }
-
-uint toSrgb8(float linear) {
-    float v = linear > 0.0 ? min(linear, 1.0) : 0.0;
-    return uint(srgbOetf(v) * 255.0 + 0.5);
-}
 
 // Blue (0) through green and yellow to red (1): the heat-map legend uses the same ramp.
 vec3 heatRamp(float t) {
@@ -58,12 +44,7 @@ vec3 debugColor(uint i) {
 }
 
 // The tone-mapped image in display-linear light.
-vec3 imageColor(uint i) {
-    vec3 radiance = (viewer.denoise != 0u ? filtered[i].rgb : history[i].color) * exp2(viewer.exposure);
-    return viewer.toneMapper == PN_TONEMAP_ACES
-               ? vec3(acesFilmic(radiance.r), acesFilmic(radiance.g), acesFilmic(radiance.b))
-               : vec3(reinhard(radiance.r), reinhard(radiance.g), reinhard(radiance.b));
-}
+vec3 imageColor(uint i) { return toneMapped(viewer.denoise != 0u ? filtered[i].rgb : history[i].color); }
 
 // The debug view over the image at pixel p: over all of it, or scaled down into the small
 // window at the bottom right (nearest pixel), framed by a one-pixel white line.
@@ -86,5 +67,5 @@ void main() {
     uint i = pixelIndex(p);
     vec3 rgb = imageColor(i);
     if (viewer.debugMode != PN_DEBUG_NONE) rgb = withDebugView(p, rgb);
-    display[i] = toSrgb8(rgb.r) | (toSrgb8(rgb.g) << 8) | (toSrgb8(rgb.b) << 16) | (255u << 24);
+    display[i] = displayPixel(rgb);
 }

@@ -510,6 +510,7 @@ PN_STRUCT(FrameUniforms) {
 #define PN_WAVE_MAKES_CAMERA_PATHS(mode, bounce) (((mode) & PN_WAVE_CAMERA_IN_PLACE) != 0u && (bounce) == 0u)
 #define PN_GBUFFER_SUBPIXEL 1u    // PassPush.mode bit of gbuffer.comp: trace cell passIndex of a 4x4 grid in the pixel
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
+#define PN_ATROUS_DISPLAY 2u     // PassPush.mode bit: ... and tone-maps it into the display (no debug view over it)
 // The denoiser's per-pixel guide, written by temporal.comp: xyz = the shading normal, w = the
 // linear depth (0: the primary ray missed). 16 bytes instead of a 48-byte GBufferTexel per tap
 // keeps the 25-tap filter in cache; plain floats rather than an 8-byte octahedral normal, because

@@ -3,23 +3,13 @@
 #include <cmath>
 
 #include "shared/color.h"
+#include "shared/tone_curve.h"
 
 namespace penumbra {
 
-float reinhard(float x) {
-    // Written so that NaN fails the comparison and maps to 0, and +inf maps to 1 rather than
-    // inf / inf = NaN.
-    if (!(x > 0)) return 0;
-    if (std::isinf(x)) return 1;
-    return x / (1 + x);
-}
+float reinhard(float x) { return shader::reinhard(x); }
 
-float acesFilmic(float x) {
-    if (!(x > 0)) return 0;
-    if (std::isinf(x)) return 1;
-    float y = x * (2.51f * x + 0.03f) / (x * (2.43f * x + 0.59f) + 0.14f);
-    return y < 1 ? y : 1;
-}
+float acesFilmic(float x) { return shader::acesFilmic(x); }
 
 float srgbOetf(float x) { return shader::linearToSrgb(x); }
 

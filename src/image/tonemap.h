@@ -4,7 +4,7 @@
 // value above 1, so bright coloured lights fade to white the way film and most renderers'
 // previews do; luminance-based Reinhard keeps the hue but pushes saturated highlights past 1,
 // where they clip and shift hue anyway. It is also the simplest thing to match exactly in
-// shaders/lib/color.glsl, which must implement the same curve so the viewer and PNGs agree.
+// shaders/shared/tone_curve.h, written once for this and the viewer's shaders, so they agree.
 #pragma once
 
 #include <cstdint>

@@ -249,7 +249,8 @@ void InteractiveRenderer::createPasses() {
     temporalAB_ = temporal(historyA_, gbufferA_, historyB_, gbufferB_);
     temporalBA_ = temporal(historyB_, gbufferB_, historyA_, gbufferA_);
     auto denoise = [&](const gpu::Buffer& gbuffer) {
-        return std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer, guide_, filterA_, filterB_);
+        return std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer, guide_, filterA_, filterB_,
+                                             &display_);
     };
     denoiseA_ = denoise(gbufferA_);
     denoiseB_ = denoise(gbufferB_);
@@ -393,17 +394,23 @@ void InteractiveRenderer::recordPasses(VkCommandBuffer cmd, const ViewSettings& 
     timed(cmd, ViewerPass::Temporal, [&] { (toB ? temporalAB_ : temporalBA_)->record(cmd, width_, height_); });
     gpu::computeBarrier(cmd);
     TonemapPass& tonemap = toB ? *tonemapB_ : *tonemapA_;
+    // With nothing drawn over the image, the denoiser's last pass writes the display itself.
+    const bool denoiserDisplays = denoise && shownDebugView(s) == DebugView::None;
+    stats_.tonemapInDenoiser = denoiserDisplays;
     if (denoise) {
         const DenoisePass& filter = toB ? *denoiseB_ : *denoiseA_;
-        timed(cmd, ViewerPass::Denoise, [&] { filter.record(cmd, width_, height_, s.denoiseIterations); });
+        timed(cmd, ViewerPass::Denoise,
+              [&] { filter.record(cmd, width_, height_, s.denoiseIterations, denoiserDisplays); });
         denoised_ = &filter.output(s.denoiseIterations);
         tonemap.setFiltered(*denoised_);
     } else {
         denoised_ = nullptr;
         tonemap.setFiltered(filterB_);  // the heat map's counts, when it ran
     }
-    timed(cmd, ViewerPass::Tonemap, [&] { tonemap.record(cmd, width_, height_); });
-    gpu::computeBarrier(cmd);
+    if (!denoiserDisplays) {
+        timed(cmd, ViewerPass::Tonemap, [&] { tonemap.record(cmd, width_, height_); });
+        gpu::computeBarrier(cmd);
+    }
 }
 
 void InteractiveRenderer::recordBoxOverlay(VkCommandBuffer cmd, const ViewSettings& s) {

@@ -31,6 +31,7 @@ struct ViewerStats {
     double raysPerSecond = 0;           // last frame's rays over its trace time
     std::uint64_t rays = 0;             // last frame's rays: closest hits and shadow rays
     bool gbufferSkipped = false;        // last frame reused the still view's G-buffer
+    bool tonemapInDenoiser = false;     // last frame's denoiser wrote the display (no tonemap pass)
     std::uint32_t heatMaxNodes = 0, heatMaxTriangles = 0;  // last heat-map frame
     std::uint32_t heatMaxLeafDepth = 0, heatMaxLeafTriangles = 0;
 };

@@ -154,6 +154,8 @@ ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bo
         const ViewerStats& st = renderer.stats();
         // A still view's frames reuse its G-buffer: their G-buffer pass costs nothing.
         if (st.gbufferSkipped) passMs[viewerPassName(ViewerPass::GBuffer)].push_back(0.0);
+        // Denoised with no debug view, the denoiser's last pass tone-maps: no tonemap pass of its own.
+        if (st.tonemapInDenoiser) passMs[viewerPassName(ViewerPass::Tonemap)].push_back(0.0);
         for (std::uint32_t p = 0; p < std::uint32_t(ViewerPass::Count); ++p) {
             if (st.passMilliseconds[p] <= 0) continue;
             if (ViewerPass(p) == ViewerPass::Frame) frameMs.push_back(st.passMilliseconds[p]);

@@ -16,8 +16,9 @@ namespace {
 class DenoiseTest : public ViewerPassTest {
 protected:
     // One first frame through temporal (which demodulates) and then `iterations` a-trous passes;
-    // returns the denoised radiance per pixel.
-    std::vector<Vec3> denoise(const std::vector<Vec3>& radiance, const std::vector<Vec3>& albedo, std::uint32_t iterations) {
+    // returns the denoised radiance per pixel. With a display buffer the last pass also fills it.
+    std::vector<Vec3> denoise(const std::vector<Vec3>& radiance, const std::vector<Vec3>& albedo, std::uint32_t iterations,
+                              const gpu::Buffer* display = nullptr) {
         gpu::Buffer accum = pixels<Vec4>(), gbuffer = pixels<shader::GBufferTexel>(), gbufferPrev = pixels<shader::GBufferTexel>();
         gpu::Buffer history = pixels<shader::HistoryTexel>(), historyOut = pixels<shader::HistoryTexel>();
         gpu::Buffer a = pixels<Vec4>(), b = pixels<Vec4>(), guide = pixelBytes(PN_DENOISE_GUIDE_BYTES);
@@ -27,12 +28,12 @@ protected:
             view<shader::GBufferTexel>(gbuffer)[i] = surfaceTexel(3.0f, {0, 0, -1}, albedo[i]);
         }
         TemporalPass temporal(*ctx, TemporalBuffers{&frame, &viewer, &accum, &gbuffer, &gbufferPrev, &history, &historyOut, &a, &guide});
-        DenoisePass pass(*ctx, frame, viewer, gbuffer, guide, a, b);
+        DenoisePass pass(*ctx, frame, viewer, gbuffer, guide, a, b, display);
         const gpu::Buffer* result = nullptr;
         submit([&](VkCommandBuffer cmd) {
             temporal.record(cmd, width, height);
             gpu::computeBarrier(cmd);
-            result = &pass.record(cmd, width, height, iterations);
+            result = &pass.record(cmd, width, height, iterations, display != nullptr);
         });
         std::vector<Vec3> out(width * height);
         for (std::uint32_t i = 0; i < width * height; ++i) {
@@ -80,6 +81,35 @@ TEST_F(DenoiseTest, NoiseOnAFlatSurfaceIsReducedAndItsMeanKept) {
     EXPECT_LT(outVar, inVar / 10) << "in " << inVar << " out " << outVar;
     // The input mean's standard error is 0.5 sigma / sqrt(pixels) ~ 0.0034; allow 5 of them.
     EXPECT_NEAR(outMean, inMean, 5 * 0.5 * sigma / std::sqrt(double(width * height)));
+}
+
+TEST_F(DenoiseTest, ItsLastPassDisplaysWhatTheTonemapPassWould) {
+    // The viewer skips the tonemap pass when the denoiser's last pass writes the display: the
+    // pixels must be the tonemap pass's own, byte for byte, for both curves and any exposure.
+    setUpImage(40, 32);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<Vec3> radiance(width * height), albedo(width * height);
+    for (std::uint32_t i = 0; i < width * height; ++i) {
+        albedo[i] = Vec3{0.2f + 0.7f * unit(rng), 0.5f, 0.3f + 0.6f * unit(rng)};
+        radiance[i] = albedo[i] * (4.0f * unit(rng) * unit(rng));
+    }
+    gpu::Buffer display = pixels<std::uint32_t>(), tonemapped = pixels<std::uint32_t>(), filtered = pixels<Vec4>();
+    gpu::Buffer history = pixels<shader::HistoryTexel>(), gbuffer = pixels<shader::GBufferTexel>();
+    TonemapPass tonemap(*ctx, frame, viewer, history, filtered, gbuffer, tonemapped);
+    viewerUniforms.denoise = 1;
+    for (ToneMapper curve : {ToneMapper::Reinhard, ToneMapper::Aces})
+        for (float exposure : {0.0f, 2.5f}) {
+            viewerUniforms.toneMapper = std::uint32_t(curve);
+            viewerUniforms.exposure = exposure;
+            writeViewer();
+            const std::vector<Vec3> out = denoise(radiance, albedo, 3, &display);
+            for (std::uint32_t i = 0; i < width * height; ++i) view<Vec4>(filtered)[i] = Vec4{out[i].x, out[i].y, out[i].z, 0.0f};
+            submit([&](VkCommandBuffer cmd) { tonemap.record(cmd, width, height); });
+            for (std::uint32_t i = 0; i < width * height; ++i)
+                ASSERT_EQ(view<std::uint32_t>(display)[i], view<std::uint32_t>(tonemapped)[i])
+                    << "pixel " << i << (curve == ToneMapper::Aces ? " ACES" : " Reinhard") << " exposure " << exposure;
+        }
 }
 
 TEST_F(ViewerPassTest, TonemapPassMatchesTheCpuToneMapper) {

@@ -9,15 +9,18 @@ namespace penumbra {
 
 DenoisePass::DenoisePass(const gpu::Context& ctx, const gpu::Buffer& frameUniforms, const gpu::Buffer& viewerUniforms,
                          const gpu::Buffer& gbuffer, const gpu::Buffer& guide, const gpu::Buffer& a,
-                         const gpu::Buffer& b)
-    : a_(a), b_(b) {
+                         const gpu::Buffer& b, const gpu::Buffer* display)
+    : a_(a), b_(b), hasDisplay_(display != nullptr) {
+    // Without a display the binding still needs a buffer; the shader writes it only when told to.
+    const gpu::Buffer& displayOrUnused = display ? *display : b;
     auto make = [&](const gpu::Buffer& in, const gpu::Buffer& out) {
         return makeImagePipeline(ctx, "atrous", frameUniforms,
                                  {{PN_BINDING_VIEWER, &viewerUniforms},
                                   {PN_BINDING_GBUFFER, &gbuffer},
                                   {PN_BINDING_DENOISE_GUIDE, &guide},
                                   {PN_BINDING_FILTER_IN, &in},
-                                  {PN_BINDING_FILTER_OUT, &out}},
+                                  {PN_BINDING_FILTER_OUT, &out},
+                                  {PN_BINDING_DISPLAY, &displayOrUnused}},
                                  sizeof(shader::PassPush));
     };
     aToB_ = make(a, b);
@@ -25,10 +28,11 @@ DenoisePass::DenoisePass(const gpu::Context& ctx, const gpu::Buffer& frameUnifor
 }
 
 const gpu::Buffer& DenoisePass::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height,
-                                       std::uint32_t iterations) const {
-    PN_CHECK(iterations >= 1);
+                                       std::uint32_t iterations, bool toDisplay) const {
+    PN_CHECK(iterations >= 1 && (!toDisplay || hasDisplay_));
+    const std::uint32_t lastMode = PN_ATROUS_LAST | (toDisplay ? PN_ATROUS_DISPLAY : 0u);
     for (std::uint32_t i = 0; i < iterations; ++i) {
-        shader::PassPush push{1u << i, i + 1 == iterations ? PN_ATROUS_LAST : 0u, 0, 0};
+        shader::PassPush push{1u << i, i + 1 == iterations ? lastMode : 0u, 0, 0};
         dispatchImage(i % 2 == 0 ? *aToB_ : *bToA_, cmd, width, height, &push);
         gpu::computeBarrier(cmd);
     }

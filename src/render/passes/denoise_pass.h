@@ -10,19 +10,24 @@ namespace penumbra {
 
 class DenoisePass {
 public:
-    // a holds temporal.comp's output (illumination, variance); b is scratch of the same size.
+    // a holds temporal.comp's output (illumination, variance); b is scratch of the same size;
+    // display (optional): the viewer's RGBA8 pixels, which the last pass can write (below).
     DenoisePass(const gpu::Context& ctx, const gpu::Buffer& frameUniforms, const gpu::Buffer& viewerUniforms,
-                const gpu::Buffer& gbuffer, const gpu::Buffer& guide, const gpu::Buffer& a, const gpu::Buffer& b);
+                const gpu::Buffer& gbuffer, const gpu::Buffer& guide, const gpu::Buffer& a, const gpu::Buffer& b,
+                const gpu::Buffer* display = nullptr);
 
-    // iterations >= 1. Returns the buffer that holds the result (radiance, variance).
+    // iterations >= 1. Returns the buffer that holds the result (radiance, variance). With
+    // toDisplay (only if a display was given), the last pass also writes what the tonemap pass
+    // would make of the result with no debug view, so that pass need not run.
     const gpu::Buffer& record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height,
-                              std::uint32_t iterations) const;
+                              std::uint32_t iterations, bool toDisplay = false) const;
     // Where the result of `iterations` passes lands, without recording anything.
     const gpu::Buffer& output(std::uint32_t iterations) const { return iterations % 2 ? b_ : a_; }
 
 private:
     const gpu::Buffer& a_;
     const gpu::Buffer& b_;
+    bool hasDisplay_;
     std::unique_ptr<gpu::ComputePipeline> aToB_, bToA_;
 };
 
