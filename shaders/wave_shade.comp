@@ -33,5 +33,6 @@ void main() {
     uint next = appendIndex(alive, (push.waveBounce + 1u) & 1u);
     if (alive) queueNext(next, slot);
     uint queued = appendIndex(shadow.pending, 2u);
-    if (shadow.pending) storeShadow(queued, slot, shadow);
+    if (shadow.pending) storeShadow(queued, slot, shadow, alive);
+    if (alive) setPendingShadow(slot, shadow.pending ? queued + 1u : 0u);
 }

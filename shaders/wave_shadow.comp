@@ -1,6 +1,8 @@
 #version 460
 // Wavefront trace, step 4: the queued shadow rays; an unblocked one adds its light to its path.
-// Each path queues at most one per bounce, so no two invocations touch the same path.
+// Each path queues at most one per bounce, so no two invocations touch the same path. In a round
+// the tail takes, the rays of the paths that go on are the tail's (wave_tail.comp), which runs
+// beside this pass.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 
@@ -13,11 +15,12 @@ layout(local_size_x = PN_WAVE_GROUP) in;
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
-    bool live = i < control.shadowLive;
-    if (live) {
+    bool tailRound = control.tailGroups[0] != 0u;
+    bool traced = i < control.shadowLive && !(tailRound && shadowPathGoesOn(i));
+    if (traced) {
         uint slot;
         PendingShadow s = loadShadow(i, slot);
         if (!traceOccluded(s.ray.origin, s.ray.direction, s.ray.tMax)) addToPathResult(slot, s.light);
     }
-    countRays(0u, live ? 1u : 0u);
+    countRays(0u, traced ? 1u : 0u);
 }

@@ -2,8 +2,8 @@
 // Wavefront trace, the tail (wave_args.comp decides when): each of the few live paths left is
 // followed to its end in one invocation, as the megakernel would (lib/path.glsl finishPath), so
 // the last bounces cost one dispatch instead of a round of extend, shade and shadow each. It runs
-// after the shadow rays queued for these paths have added their light, and adds to that light in
-// the megakernel's order.
+// beside that round's shadow pass: each path first traces the shadow ray its last vertex queued
+// (the shadow pass leaves those to it), then goes on, adding light in the megakernel's order.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 
@@ -21,6 +21,7 @@ void main() {
         uint slot = queueIn(i);
         uvec3 p = slotPixel(slot);
         Path path = loadPathToFinish(slot, p);
+        if (tracePendingShadow(slot, path.result)) ++shadowRays;
         finishPath(path, p.y * frame.width + p.x, closestRays, shadowRays);
         setPathResult(slot, path.result);
     }

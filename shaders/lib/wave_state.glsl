@@ -114,17 +114,39 @@ Hit loadHit(uint slot) {
     return Hit(uintBitsToFloat(u.x), u.y, uintBitsToFloat(u.z), uintBitsToFloat(u.w), instance);
 }
 
-void storeShadow(uint index, uint slot, PendingShadow s) {
+// A shadow ray's record also says whether its path goes on after the vertex that queued it: in a
+// round the tail takes, the tail traces those rays itself (tracePendingShadow) and the shadow pass
+// the others, so the two run side by side.
+void storeShadow(uint index, uint slot, PendingShadow s, bool pathGoesOn) {
     waveShadows[index] = packVec(s.ray.origin, s.ray.tMax);
     waveShadows[push.waveStride + index] = packVec(s.ray.direction, slot);
-    waveShadows[2u * push.waveStride + index] = packVec(s.light, 0u);
+    waveShadows[2u * push.waveStride + index] = packVec(s.light, pathGoesOn ? 1u : 0u);
 }
+
+bool shadowPathGoesOn(uint index) { return waveShadows[2u * push.waveStride + index].w != 0u; }
 
 // The queued shadow ray `index`: its ray, the light it carries, and (out) its path's slot.
 PendingShadow loadShadow(uint index, out uint slot) {
     uvec4 a = waveShadows[index], b = waveShadows[push.waveStride + index], c = waveShadows[2u * push.waveStride + index];
     slot = b.w;
     return PendingShadow(ShadowRay(unpackVec(a), unpackVec(b), uintBitsToFloat(a.w)), unpackVec(c), true);
+}
+
+// A path that goes on keeps the index + 1 of the shadow ray its last vertex queued (0: none) in
+// the w of its result field, which nothing else reads; a shade step sets it for every path it
+// keeps, so it is never stale.
+void setPendingShadow(uint slot, uint indexPlusOne) { wavePaths[3u * push.waveStride + slot].w = indexPlusOne; }
+
+// The tail's first step for a path it takes: the shadow ray the path's last vertex queued, traced
+// and added here rather than by that round's shadow pass, in the same order (the vertex's own
+// light was added first). Returns whether there was one.
+bool tracePendingShadow(uint slot, inout vec3 result) {
+    uint pending = pathField(3u, slot).w;
+    if (pending == 0u) return false;
+    uint owner;
+    PendingShadow s = loadShadow(pending - 1u, owner);
+    if (!traceOccluded(s.ray.origin, s.ray.direction, s.ray.tMax)) result = result + s.light;
+    return true;
 }
 
 // Appends for the invocations that want to: one atomic per subgroup, offsets by ballot. Returns

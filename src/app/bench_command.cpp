@@ -57,6 +57,17 @@ std::string jsonEscape(const std::string& text) {
     return out;
 }
 
+// ,"key": { "executable: statistic": "value", ... } (the driver's words for each pipeline).
+void printStatisticsJson(const char* key, const std::vector<gpu::PipelineStatistic>& statistics) {
+    std::printf(",\n  \"%s\": {", key);
+    const char* sep = "";
+    for (const gpu::PipelineStatistic& s : statistics) {
+        std::printf("%s\n    \"%s\": \"%s\"", sep, jsonEscape(s.executable + ": " + s.name).c_str(), jsonEscape(s.value).c_str());
+        sep = ",";
+    }
+    std::printf("\n  }");
+}
+
 void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Context& ctx, const ViewerBenchOptions& o,
                      const ViewerBenchResult& r) {
     std::printf("{\n  \"scene\": \"%s\",\n  \"device\": \"%s\",\n  \"width\": %u,\n  \"height\": %u,\n"
@@ -73,13 +84,9 @@ void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Conte
     }
     std::printf("\n  },\n  \"rays_per_pixel_per_sample\": %.3f,\n  \"trace_mrays_per_s\": %.1f", r.raysPerPixelPerSample,
                 r.mraysPerSecond);
-    std::printf(",\n  \"kernel_features\": \"%s\",\n  \"trace_pipeline\": {", r.kernelFeatures.c_str());
-    sep = "";
-    for (const gpu::PipelineStatistic& s : r.traceStatistics) {
-        std::printf("%s\n    \"%s\": \"%s\"", sep, jsonEscape(s.executable + ": " + s.name).c_str(), jsonEscape(s.value).c_str());
-        sep = ",";
-    }
-    std::printf("\n  }");
+    std::printf(",\n  \"kernel_features\": \"%s\"", r.kernelFeatures.c_str());
+    printStatisticsJson("trace_pipeline", r.traceStatistics);
+    printStatisticsJson("image_pipeline", r.imageStatistics);
     if (r.relMseRaw)
         std::printf(",\n  \"budget_ms\": %.2f,\n  \"budget_frames\": %d,\n  \"error_trials\": %d,\n  \"rel_mse_raw\": %.6g",
                     args.budgetMs, r.budgetFrames, o.errorTrials, *r.relMseRaw);
@@ -100,6 +107,8 @@ void printViewerText(const Scene& scene, const gpu::Context& ctx, const ViewerBe
     std::printf("  kernel specialised for: %s\n", r.kernelFeatures.c_str());
     for (const gpu::PipelineStatistic& s : r.traceStatistics)
         std::printf("  trace pipeline, %s: %s = %s\n", s.executable.c_str(), s.name.c_str(), s.value.c_str());
+    for (const gpu::PipelineStatistic& s : r.imageStatistics)
+        std::printf("  image pipeline, %s: %s = %s\n", s.executable.c_str(), s.name.c_str(), s.value.c_str());
     if (r.relMseRaw)
         std::printf("  equal-time error over %d frames: relMSE raw %.5g", r.budgetFrames, *r.relMseRaw);
     if (r.relMseDenoised) std::printf(", denoised %.5g", *r.relMseDenoised);

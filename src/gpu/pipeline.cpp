@@ -93,6 +93,12 @@ std::string formatStatistic(const VkPipelineExecutableStatisticKHR& s) {
 
 }  // namespace
 
+std::vector<PipelineStatistic> ComputePipeline::namedStatistics() const {
+    std::vector<PipelineStatistic> out = statistics();
+    for (PipelineStatistic& s : out) s.executable = name() + ": " + s.executable;
+    return out;
+}
+
 std::vector<PipelineStatistic> ComputePipeline::statistics() const {
     std::vector<PipelineStatistic> out;
     if (!ctx_.pipelineStatisticsSupported()) return out;

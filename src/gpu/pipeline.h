@@ -33,6 +33,8 @@ public:
     // What the driver says about the compiled pipeline; empty when it cannot say
     // (Context::pipelineStatisticsSupported).
     std::vector<PipelineStatistic> statistics() const;
+    // The same, each executable's name prefixed by the pipeline's ("wave_shade: CS").
+    std::vector<PipelineStatistic> namedStatistics() const;
 
     // Points `binding` at `buffer`. Call between submissions, not while a dispatch is in flight.
     void bind(std::uint32_t binding, const Buffer& buffer);

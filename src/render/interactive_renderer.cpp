@@ -413,6 +413,12 @@ void InteractiveRenderer::recordPasses(VkCommandBuffer cmd, const ViewSettings& 
     }
 }
 
+std::vector<gpu::PipelineStatistic> InteractiveRenderer::imageStatistics() const {
+    std::vector<gpu::PipelineStatistic> out = temporalAB_->statistics();
+    for (gpu::PipelineStatistic& s : denoiseA_->statistics()) out.push_back(std::move(s));
+    return out;
+}
+
 void InteractiveRenderer::recordBoxOverlay(VkCommandBuffer cmd, const ViewSettings& s) {
     if (boxesDepth_ != s.boxDepth) {  // the previous frame has finished, so its boxes are free
         boxes_->setBoxes(bvh::nodesAtDepth(arrays_.nodes, s.boxDepth, PN_MAX_OVERLAY_BOXES));

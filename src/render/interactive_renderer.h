@@ -86,6 +86,8 @@ public:
     const GpuScene& gpuScene() const { return *gpuScene_; }
     // The trace pass's pipeline (for its driver statistics); valid after resize.
     std::vector<gpu::PipelineStatistic> traceStatistics() const { return trace_->statistics(); }
+    // The temporal and a-trous pipelines' (the image passes that run every frame).
+    std::vector<gpu::PipelineStatistic> imageStatistics() const;
     std::map<std::string, double> traceStageMilliseconds() const { return trace_->stageMilliseconds(); }
     std::uint32_t kernelFeatures() const { return features_; }
     const SceneArrays& sceneArrays() const { return arrays_; }

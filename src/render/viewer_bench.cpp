@@ -167,6 +167,7 @@ ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bo
     ViewerBenchResult result;
     result.kernelFeatures = kernelFeatureNames(renderer.kernelFeatures());
     result.traceStatistics = renderer.traceStatistics();
+    result.imageStatistics = renderer.imageStatistics();
     result.frames = o.frames;
     result.frameMs = median(frameMs);
     for (auto& [name, values] : passMs) result.passMs[name] = median(values);

@@ -55,6 +55,7 @@ struct ViewerBenchResult {
     // The trace kernel as compiled: what it was specialised for and the driver's statistics.
     std::string kernelFeatures;
     std::vector<gpu::PipelineStatistic> traceStatistics;
+    std::vector<gpu::PipelineStatistic> imageStatistics;  // temporal and a-trous
 };
 
 ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight,

@@ -23,6 +23,7 @@ public:
                               std::uint32_t iterations, bool toDisplay = false) const;
     // Where the result of `iterations` passes lands, without recording anything.
     const gpu::Buffer& output(std::uint32_t iterations) const { return iterations % 2 ? b_ : a_; }
+    std::vector<gpu::PipelineStatistic> statistics() const { return aToB_->namedStatistics(); }
 
 private:
     const gpu::Buffer& a_;

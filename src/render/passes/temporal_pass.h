@@ -24,6 +24,7 @@ class TemporalPass {
 public:
     TemporalPass(const gpu::Context& ctx, const TemporalBuffers& buffers);
     void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height) const;
+    std::vector<gpu::PipelineStatistic> statistics() const { return pipeline_->namedStatistics(); }
 
 private:
     std::unique_ptr<gpu::ComputePipeline> pipeline_;

@@ -71,11 +71,7 @@ void TracePass::setPathBudget(std::uint64_t paths) { pathBudget_ = paths > 0 ? s
 
 std::vector<gpu::PipelineStatistic> TracePass::statistics() const {
     std::vector<gpu::PipelineStatistic> out;
-    if (pipeline_)
-        for (gpu::PipelineStatistic s : pipeline_->statistics()) {
-            s.executable = pipeline_->name() + ": " + s.executable;
-            out.push_back(std::move(s));
-        }
+    if (pipeline_) out = pipeline_->namedStatistics();
     if (wave_)
         for (gpu::PipelineStatistic& s : wave_->statistics()) out.push_back(std::move(s));
     return out;

@@ -171,7 +171,8 @@ void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint
     // Bounce b traces the live paths' closest hits and shades them, while the shadow rays that
     // bounce b - 1 queued are traced alongside the closest hits (they touch disjoint state). Once
     // few paths are left, the args step hands them to the tail instead (extend and shade then
-    // dispatch nothing), which runs after those shadow rays have added their light.
+    // dispatch nothing), which runs beside the shadow rays too: it traces its own paths' pending
+    // ones itself, first, and the shadow pass leaves them out.
     constexpr VkDeviceSize extendArgs = offsetof(shader::WaveControl, extendGroups);
     constexpr VkDeviceSize shadowArgs = offsetof(shader::WaveControl, shadowGroups);
     constexpr VkDeviceSize tailArgs = offsetof(shader::WaveControl, tailGroups);
@@ -185,10 +186,11 @@ void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint
         const gpu::ComputePipeline& shade = camera ? *shadeCamera_ : *shade_;
         if (b <= maxBounces) timed(cmd, kExtend, b, [&] { extend.dispatchIndirect(cmd, control_, extendArgs, &push); });
         if (b >= 1) timed(cmd, kShadow, b, [&] { shadow_->dispatchIndirect(cmd, control_, shadowArgs, &push); });
+        if (b <= maxBounces && tailPaths_ != 0)
+            timed(cmd, kTail, b, [&] { tail_->dispatchIndirect(cmd, control_, tailArgs, &push); });
         gpu::computeBarrier(cmd);
         if (b <= maxBounces) {
             timed(cmd, kShade, b, [&] { shade.dispatchIndirect(cmd, control_, extendArgs, &push); });
-            if (tailPaths_ != 0) timed(cmd, kTail, b, [&] { tail_->dispatchIndirect(cmd, control_, tailArgs, &push); });
             gpu::computeBarrier(cmd);
         }
     }
@@ -198,10 +200,7 @@ void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint
 std::vector<gpu::PipelineStatistic> WavefrontPass::statistics() const {
     std::vector<gpu::PipelineStatistic> out;
     for (const gpu::ComputePipeline* p : {extend_.get(), shade_.get(), shadow_.get()})
-        for (gpu::PipelineStatistic s : p->statistics()) {
-            s.executable = p->name() + ": " + s.executable;
-            out.push_back(std::move(s));
-        }
+        for (gpu::PipelineStatistic& s : p->namedStatistics()) out.push_back(std::move(s));
     return out;
 }
 
