@@ -184,10 +184,12 @@ void WavefrontPass::record(VkCommandBuffer cmd, const TraceTile& tile, std::uint
         const bool camera = b == 0 && cameraInPlace;
         const gpu::ComputePipeline& extend = camera ? *extendCamera_ : *extend_;
         const gpu::ComputePipeline& shade = camera ? *shadeCamera_ : *shade_;
-        if (b <= maxBounces) timed(cmd, kExtend, b, [&] { extend.dispatchIndirect(cmd, control_, extendArgs, &push); });
-        if (b >= 1) timed(cmd, kShadow, b, [&] { shadow_->dispatchIndirect(cmd, control_, shadowArgs, &push); });
+        // The tail first: its few, long invocations then start at once and run while the shadow
+        // pass fills the rest of the GPU, instead of waiting behind all of its workgroups.
         if (b <= maxBounces && tailPaths_ != 0)
             timed(cmd, kTail, b, [&] { tail_->dispatchIndirect(cmd, control_, tailArgs, &push); });
+        if (b <= maxBounces) timed(cmd, kExtend, b, [&] { extend.dispatchIndirect(cmd, control_, extendArgs, &push); });
+        if (b >= 1) timed(cmd, kShadow, b, [&] { shadow_->dispatchIndirect(cmd, control_, shadowArgs, &push); });
         gpu::computeBarrier(cmd);
         if (b <= maxBounces) {
             timed(cmd, kShade, b, [&] { shade.dispatchIndirect(cmd, control_, extendArgs, &push); });
