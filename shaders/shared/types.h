@@ -94,7 +94,7 @@ using namespace penumbra::gpu_types;
 #define PN_FEATURE_ONE_TOP_LIGHT 8192u
 // Not a scene's feature but a kernel variant: the wavefront's bounce-0 extend and shade, which make
 // their camera paths in place (PN_WAVE_CAMERA_IN_PLACE); the later rounds' kernels carry none of
-// that code (in wave_shade it cost eight registers in every round).
+// that code (measured: DOOM1's shading 1-2% faster; the driver kept the registers, docs/PERFORMANCE.md).
 #define PN_FEATURE_CAMERA_IN_PLACE 16384u
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
