@@ -11,7 +11,10 @@
 #include "shared/color.h"
 
 layout(std430, set = 0, binding = PN_BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
-layout(std430, set = 0, binding = PN_BINDING_COUNTERS) buffer CounterBuffer { RayCounters counters; };
+layout(std430, set = 0, binding = PN_BINDING_COUNTERS) buffer CounterBuffer { RayCounters counterLanes[PN_RAY_COUNTER_LANES]; };
+
+// The counter lane this workgroup adds to (see RayCounters).
+uint counterLane() { return (gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x) % PN_RAY_COUNTER_LANES; }
 layout(std430, set = 0, binding = PN_BINDING_ACTIVE_MASK) readonly buffer ActiveMask { uint activeMask[]; };
 
 // Adaptive sampling (render/adaptive.h): a pixel whose mask entry is 0 takes no samples in a
@@ -35,7 +38,7 @@ void storePixelSums(uint index, vec4 sums) {
 void addSample(vec3 L, inout vec3 sum, inout float sumSquares) {
     if (any(isnan(L)) || any(isinf(L))) {
         L = vec3(0.0);
-        atomicAdd(counters.invalidSamples, 1u);
+        atomicAdd(counterLanes[counterLane()].invalidSamples, 1u);
     }
     sum += L;
     float y = luminance(L);
@@ -43,14 +46,15 @@ void addSample(vec3 L, inout vec3 sum, inout float sumSquares) {
 }
 
 // This invocation's traced rays into the counters (when the pass counts them), one atomic per
-// subgroup. Every invocation of the subgroup must call it.
+// subgroup, on its workgroup's lane. Every invocation of the subgroup must call it.
 void countRays(uint closest, uint shadow) {
     if (push.countRays == 0u) return;
     uint closestSum = subgroupAdd(closest);
     uint shadowSum = subgroupAdd(shadow);
     if (subgroupElect()) {
-        if (closestSum != 0u) atomicAdd(counters.closestRays, closestSum);
-        if (shadowSum != 0u) atomicAdd(counters.shadowRays, shadowSum);
+        uint lane = counterLane();
+        if (closestSum != 0u) atomicAdd(counterLanes[lane].closestRays, closestSum);
+        if (shadowSum != 0u) atomicAdd(counterLanes[lane].shadowRays, shadowSum);
     }
 }
 

@@ -149,17 +149,25 @@ bool tracePendingShadow(uint slot, inout vec3 result) {
     return true;
 }
 
-// Appends for the invocations that want to: one atomic per subgroup, offsets by ballot. Returns
-// the invocation's index in the queue (meaningless where !want). Call from every invocation.
+// Appends for the invocations that want to: one atomic on the queue's counter per workgroup (its
+// subgroups first reserve their runs in a workgroup total), offsets by ballot. Returns the
+// invocation's index in the queue (meaningless where !want). Call from every invocation, in
+// uniform control flow (it has barriers).
+shared uint appendGroupCount;
+shared uint appendGroupBase;
 uint appendIndex(bool want, uint counter) {
     uvec4 ballot = subgroupBallot(want);
     uint total = subgroupBallotBitCount(ballot);
-    uint base = 0u;
-    if (subgroupElect() && total != 0u) {
-        if (counter == 2u) base = atomicAdd(control.shadowCount, total);
-        else base = atomicAdd(control.rayCount[counter], total);
-    }
-    return subgroupBroadcastFirst(base) + subgroupBallotExclusiveBitCount(ballot);
+    if (gl_LocalInvocationIndex == 0u) appendGroupCount = 0u;
+    barrier();
+    uint offset = 0u;
+    if (subgroupElect() && total != 0u) offset = atomicAdd(appendGroupCount, total);
+    barrier();
+    if (gl_LocalInvocationIndex == 0u && appendGroupCount != 0u)
+        appendGroupBase = counter == 2u ? atomicAdd(control.shadowCount, appendGroupCount)
+                                        : atomicAdd(control.rayCount[counter], appendGroupCount);
+    barrier();
+    return appendGroupBase + subgroupBroadcastFirst(offset) + subgroupBallotExclusiveBitCount(ballot);
 }
 
 // PN_WAVE_CAMERA_IN_PLACE: bounce 0 makes its camera paths in place, every slot live in order.

@@ -611,12 +611,16 @@ PN_STRUCT(WaveControl) {
     uint tailGroups[4];    // VkDispatchIndirectCommand, for the tail (the live paths to their end)
 };
 
-// Counters written by the trace pass: rays only when PassPush.countRays is set.
+// Counters written by the trace pass: rays only when PassPush.countRays is set. The buffer holds
+// PN_RAY_COUNTER_LANES of them, 128 bytes apart; each workgroup adds to one lane, so that the
+// atomics of a frame's hundred thousand subgroups do not all queue on one address (on an H200 one
+// address cost Cornell's 1080p frame 0.15 ms). The host sums the lanes (render/ray_counters.h).
+#define PN_RAY_COUNTER_LANES 64u
 PN_STRUCT(RayCounters) {
     uint closestRays;
     uint shadowRays;
     uint invalidSamples;  // NaN or infinite path samples (always counted; dropped from the image)
-    uint pad;
+    uint pad[29];
 };
 
 // A ray for the test and benchmark kernels, 32 bytes.
@@ -729,7 +733,7 @@ static_assert(sizeof(PassPush) == 48 && offsetof(PassPush, countRays) == 12 && o
 static_assert(sizeof(WaveControl) == 64 && offsetof(WaveControl, shadowLive) == 12 &&
               offsetof(WaveControl, extendGroups) == 16 && offsetof(WaveControl, shadowGroups) == 32 &&
               offsetof(WaveControl, tailGroups) == 48);
-static_assert(sizeof(RayCounters) == 16);
+static_assert(sizeof(RayCounters) == 128);
 static_assert(sizeof(RayDesc) == 32 && offsetof(RayDesc, tMax) == 12 && offsetof(RayDesc, direction) == 16);
 static_assert(sizeof(HitRecord) == 16 && offsetof(HitRecord, v) == 12);
 static_assert(sizeof(BsdfTestQuery) == 32 && offsetof(BsdfTestQuery, entering) == 12 &&

@@ -14,6 +14,7 @@
 #include "render/instance_arrays.h"
 #include "render/kernel_features.h"
 #include "render/passes/gbuffer_pass.h"
+#include "render/ray_counters.h"
 #include "shared/animation.h"
 
 namespace penumbra {
@@ -96,12 +97,10 @@ InteractiveRenderer::InteractiveRenderer(const gpu::Context& ctx, const Scene& s
                                  gpu::MemoryKind::HostVisible);
     viewerUniforms_ = gpu::Buffer(ctx, sizeof(shader::ViewerUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                   gpu::MemoryKind::HostVisible);
-    counters_ = gpu::Buffer(ctx, sizeof(shader::RayCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                            gpu::MemoryKind::HostVisible);
+    counters_ = makeRayCounters(ctx);
     heatCounters_ = gpu::Buffer(ctx, sizeof(shader::HeatCounters),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                 gpu::MemoryKind::HostVisible);
-    std::memset(counters_.mapped(), 0, sizeof(shader::RayCounters));
     std::memset(heatCounters_.mapped(), 0, sizeof(shader::HeatCounters));
     std::memset(frameUniforms_.mapped(), 0, sizeof(shader::FrameUniforms));
     std::memset(viewerUniforms_.mapped(), 0, sizeof(shader::ViewerUniforms));
@@ -283,7 +282,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     const bool heat = isHeatView(s.debug);
     std::memcpy(frameUniforms_.mapped(), &f, sizeof(f));
     std::memcpy(viewerUniforms_.mapped(), &v, sizeof(v));
-    std::memset(counters_.mapped(), 0, sizeof(shader::RayCounters));
+    clearRayCounters(counters_);
     heatFrame_ = heat;
 
     timer_.reset();
@@ -431,9 +430,9 @@ void InteractiveRenderer::recordBoxOverlay(VkCommandBuffer cmd, const ViewSettin
 void InteractiveRenderer::finishFrame() {
     for (std::uint32_t p = 0; p < std::uint32_t(ViewerPass::Count); ++p)
         stats_.passMilliseconds[p] = (recorded_ >> p) & 1u ? timer_.milliseconds(p) : 0.0;
-    const auto* counts = static_cast<const shader::RayCounters*>(counters_.mapped());
+    const RayCounts counts = sumRayCounters(counters_);
     const double traceSeconds = stats_.passMilliseconds[std::size_t(ViewerPass::Trace)] * 1e-3;
-    stats_.rays = std::uint64_t(counts->closestRays) + counts->shadowRays;
+    stats_.rays = counts.closestRays + counts.shadowRays;
     stats_.raysPerSecond = traceSeconds > 0 ? double(stats_.rays) / traceSeconds : 0.0;
     if (heatFrame_) {
         const auto* heat = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "render/frame_uniforms.h"
 #include "render/kernel_features.h"
+#include "render/ray_counters.h"
 
 namespace penumbra {
 
@@ -27,9 +28,7 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                     VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                 gpu::MemoryKind::DeviceLocal);
-    counters_ = gpu::Buffer(ctx, sizeof(shader::RayCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                            gpu::MemoryKind::HostVisible);
-    std::memset(counters_.mapped(), 0, sizeof(shader::RayCounters));
+    counters_ = makeRayCounters(ctx);
     commands_.run([&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0); });
     activeMask_ = gpu::Buffer(ctx, pixels * sizeof(std::uint32_t),
                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -60,11 +59,11 @@ double Renderer::renderPasses(std::uint32_t passes, bool countRays, bool masked)
     stats_.samplesPerPixel = passesDone_ * settings_.samplesPerPass;
     const double ms = timer_.milliseconds(0);
     stats_.gpuMilliseconds += std::max(0.0, ms);
-    auto* counts = static_cast<shader::RayCounters*>(counters_.mapped());
-    stats_.closestRays += counts->closestRays;
-    stats_.shadowRays += counts->shadowRays;
-    stats_.invalidSamples += counts->invalidSamples;
-    std::memset(counts, 0, sizeof(*counts));
+    const RayCounts counts = sumRayCounters(counters_);
+    stats_.closestRays += counts.closestRays;
+    stats_.shadowRays += counts.shadowRays;
+    stats_.invalidSamples += counts.invalidSamples;
+    clearRayCounters(counters_);
     return ms;
 }
 
