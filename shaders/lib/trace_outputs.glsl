@@ -12,10 +12,10 @@
 
 layout(std430, set = 0, binding = PN_BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
 layout(std430, set = 0, binding = PN_BINDING_COUNTERS) buffer CounterBuffer { RayCounters counterLanes[PN_RAY_COUNTER_LANES]; };
+layout(std430, set = 0, binding = PN_BINDING_ACTIVE_MASK) readonly buffer ActiveMask { uint activeMask[]; };
 
 // The counter lane this workgroup adds to (see RayCounters).
 uint counterLane() { return (gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x) % PN_RAY_COUNTER_LANES; }
-layout(std430, set = 0, binding = PN_BINDING_ACTIVE_MASK) readonly buffer ActiveMask { uint activeMask[]; };
 
 // Adaptive sampling (render/adaptive.h): a pixel whose mask entry is 0 takes no samples in a
 // masked pass (PN_TRACE_MASKED). Off-image pixels of a partial workgroup never do.

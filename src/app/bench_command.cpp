@@ -68,6 +68,11 @@ void printStatisticsJson(const char* key, const std::vector<gpu::PipelineStatist
     std::printf("\n  }");
 }
 
+void printStatisticsText(const char* kind, const std::vector<gpu::PipelineStatistic>& statistics) {
+    for (const gpu::PipelineStatistic& s : statistics)
+        std::printf("  %s pipeline, %s: %s = %s\n", kind, s.executable.c_str(), s.name.c_str(), s.value.c_str());
+}
+
 void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Context& ctx, const ViewerBenchOptions& o,
                      const ViewerBenchResult& r) {
     std::printf("{\n  \"scene\": \"%s\",\n  \"device\": \"%s\",\n  \"width\": %u,\n  \"height\": %u,\n"
@@ -105,10 +110,8 @@ void printViewerText(const Scene& scene, const gpu::Context& ctx, const ViewerBe
     for (const auto& [name, ms] : r.passMs) std::printf("  %-16s %10.3f ms\n", name.c_str(), ms);
     std::printf("  rays per pixel per sample %.2f, trace %.1f Mrays/s\n", r.raysPerPixelPerSample, r.mraysPerSecond);
     std::printf("  kernel specialised for: %s\n", r.kernelFeatures.c_str());
-    for (const gpu::PipelineStatistic& s : r.traceStatistics)
-        std::printf("  trace pipeline, %s: %s = %s\n", s.executable.c_str(), s.name.c_str(), s.value.c_str());
-    for (const gpu::PipelineStatistic& s : r.imageStatistics)
-        std::printf("  image pipeline, %s: %s = %s\n", s.executable.c_str(), s.name.c_str(), s.value.c_str());
+    printStatisticsText("trace", r.traceStatistics);
+    printStatisticsText("image", r.imageStatistics);
     if (r.relMseRaw)
         std::printf("  equal-time error over %d frames: relMSE raw %.5g", r.budgetFrames, *r.relMseRaw);
     if (r.relMseDenoised) std::printf(", denoised %.5g", *r.relMseDenoised);

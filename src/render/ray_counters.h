@@ -14,10 +14,13 @@ struct RayCounts {
     std::uint64_t closestRays = 0, shadowRays = 0, invalidSamples = 0;
 };
 
+inline constexpr VkDeviceSize kRayCounterBytes = sizeof(shader::RayCounters) * PN_RAY_COUNTER_LANES;
+
+inline void clearRayCounters(gpu::Buffer& counters) { std::memset(counters.mapped(), 0, kRayCounterBytes); }
+
 inline gpu::Buffer makeRayCounters(const gpu::Context& ctx) {
-    constexpr VkDeviceSize bytes = sizeof(shader::RayCounters) * PN_RAY_COUNTER_LANES;
-    gpu::Buffer counters(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryKind::HostVisible);
-    std::memset(counters.mapped(), 0, bytes);
+    gpu::Buffer counters(ctx, kRayCounterBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryKind::HostVisible);
+    clearRayCounters(counters);
     return counters;
 }
 
@@ -31,10 +34,6 @@ inline RayCounts sumRayCounters(const gpu::Buffer& counters) {
         sum.invalidSamples += lanes[i].invalidSamples;
     }
     return sum;
-}
-
-inline void clearRayCounters(gpu::Buffer& counters) {
-    std::memset(counters.mapped(), 0, sizeof(shader::RayCounters) * PN_RAY_COUNTER_LANES);
 }
 
 }  // namespace penumbra
