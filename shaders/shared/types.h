@@ -26,7 +26,7 @@ using namespace penumbra::gpu_types;
 #define PN_LINEAR_GROUP 64
 #define PN_BVH_STACK_SIZE 64  // traversal stack entries; > PN_BVH_MAX_DEPTH, which the builder guarantees
 #define PN_BVH_MAX_DEPTH 60
-#define PN_WAVE_GROUP 64        // threads per workgroup of the wavefront kernels (one path slot each)
+#define PN_WAVE_GROUP 128       // threads per workgroup of the wavefront kernels (one path slot each)
 #define PN_WAVE_PATH_VEC4S 7    // vec4 fields of a path's state in the wavefront buffers (wave_state.glsl)
 #define PN_WAVE_SHADOW_VEC4S 3  // vec4 fields of a queued shadow ray
 
