@@ -18,6 +18,7 @@ layout(std430, set = 0, binding = PN_BINDING_GBUFFER) readonly buffer GBufferIn 
 layout(std430, set = 0, binding = PN_BINDING_GBUFFER_PREV) readonly buffer GBufferPrev { GBufferTexel gbufferPrev[]; };
 layout(std430, set = 0, binding = PN_BINDING_HISTORY) readonly buffer HistoryIn { HistoryTexel history[]; };
 layout(std430, set = 0, binding = PN_BINDING_HISTORY_OUT) writeonly buffer HistoryOut { HistoryTexel historyOut[]; };
+layout(std430, set = 0, binding = PN_BINDING_PIXEL_ESTIMATES) writeonly buffer PixelEstimates { float pixelEstimates[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) writeonly buffer FilterIn { vec4 filterIn[]; };
 layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) writeonly buffer GuideOut { vec4 guide[]; };
 
@@ -125,6 +126,8 @@ void main() {
         o = HistoryTexel(current, spp, currentM1, currentM2, 0.0, 0.0);
     }
     historyOut[i] = o;
+    // The next frame's trace scales its shadow-ray roulette by this (lib/path.glsl).
+    pixelEstimates[i] = o.samples >= float(PN_PIXEL_ESTIMATE_MIN_SAMPLES) ? max(luminance(o.color), 0.0) : 0.0;
 
     // Variance of the mean's luminance; from the neighbourhood while history is short (SVGF).
     float variance = o.samples >= 4.0 * spp ? max(o.moment2 - o.moment1 * o.moment1, 0.0) / o.samples

@@ -13,6 +13,7 @@
 layout(std430, set = 0, binding = PN_BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
 layout(std430, set = 0, binding = PN_BINDING_COUNTERS) buffer CounterBuffer { RayCounters counterLanes[PN_RAY_COUNTER_LANES]; };
 layout(std430, set = 0, binding = PN_BINDING_ACTIVE_MASK) readonly buffer ActiveMask { uint activeMask[]; };
+layout(std430, set = 0, binding = PN_BINDING_PIXEL_ESTIMATES) readonly buffer PixelEstimates { float pixelEstimates[]; };
 
 // The counter lane this workgroup adds to (see RayCounters).
 uint counterLane() { return (gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x) % PN_RAY_COUNTER_LANES; }
@@ -31,6 +32,17 @@ void storePixelSums(uint index, vec4 sums) {
         accum[index] = sums;
     else
         accum[index] += sums;
+}
+
+// What the pixel is worth per sample so far (luminance), as earlier passes left it: the pixel
+// estimates buffer where the caller keeps one (PN_TRACE_PIXEL_ESTIMATES: the viewer's history),
+// else the mean of the sums this pass adds to; 0 (no estimate) before PN_PIXEL_ESTIMATE_MIN_SAMPLES
+// samples, or in a pass that replaces the sums without estimates (they hold only the last pass).
+float pixelEstimate(uint pixelIndex) {
+    if ((push.mode & PN_TRACE_PIXEL_ESTIMATES) != 0u) return pixelEstimates[pixelIndex];
+    uint samples = push.passIndex * frame.samplesPerPass;
+    if ((push.mode & PN_TRACE_REPLACE) != 0u || samples < PN_PIXEL_ESTIMATE_MIN_SAMPLES) return 0.0;
+    return max(luminance(accum[pixelIndex].rgb), 0.0) / float(samples);
 }
 
 // A finished sample into the pixel's sums. A NaN or inf sample would poison the pixel forever:

@@ -71,6 +71,10 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_WAVE_CONTROL 35  // WaveControl
 #define PN_BINDING_LIGHT_TREE 36    // LightTreeNode per node of the light BVH (root first, children side by side)
 #define PN_BINDING_TRI_UVS 37       // TriUvs: entry 0 all zero, then the triangles that have texture coordinates
+#define PN_BINDING_PIXEL_ESTIMATES 38  // float per pixel: its value so far per sample (luminance), the shadow-ray roulette's scale
+// A pixel's value so far scales the shadow-ray roulette only once it rests on this many samples:
+// one sample's value is too noisy a scale (a firefly would roulette the pixel's next rays hard).
+#define PN_PIXEL_ESTIMATE_MIN_SAMPLES 4u
 
 // ---- kernel features: specialization constant 0 of the tracing kernels, a bit set. A pipeline
 // made for a scene leaves out what the scene does not use (render/kernel_features.h); the
@@ -472,7 +476,7 @@ PN_STRUCT(FrameUniforms) {
     uint lightPickUniform; // nonzero: pick every light with the same probability (a test oracle)
     uint topRoot;          // with instanceCount > 0: the top-level BVH's root node
     uint lightGridOffset;  // word of the light grid in the light tree's buffer (0: none, walk the tree)
-    uint pad2;
+    float shadowRouletteShare;  // shadow-ray roulette below this share of the pixel's estimate (lib/path.glsl); 0: off
     uint pad3;
 };
 
@@ -508,6 +512,10 @@ PN_STRUCT(FrameUniforms) {
 // slot i as queue entry i (every slot is live: not for masked passes, nor for a tail from the start).
 #define PN_WAVE_CAMERA_IN_PLACE 8u
 #define PN_WAVE_MAKES_CAMERA_PATHS(mode, bounce) (((mode) & PN_WAVE_CAMERA_IN_PLACE) != 0u && (bounce) == 0u)
+// PassPush.mode bit of trace.comp and the wavefront: the pixel estimates buffer holds each pixel's
+// value so far (the viewer's history); without it a pass that adds to the accumulation buffer
+// estimates from its sums, and one that replaces them has no estimate (lib/trace_outputs.glsl).
+#define PN_TRACE_PIXEL_ESTIMATES 16u
 #define PN_GBUFFER_SUBPIXEL 1u    // PassPush.mode bit of gbuffer.comp: trace cell passIndex of a 4x4 grid in the pixel
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
 #define PN_ATROUS_DISPLAY 2u     // PassPush.mode bit: ... and tone-maps it into the display (no debug view over it)

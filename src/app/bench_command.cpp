@@ -30,6 +30,7 @@ struct BenchArgs {
     std::optional<std::uint32_t> rouletteStart;  // unset: the scene's, as in the viewer
     bool noTemporal = false;
     bool shareCameraRays = false;
+    float shadowRoulette = kDefaultShadowRouletteShare;
     std::string motion = "static";
     int frames = 200;
     int warmupFrames = 30;
@@ -77,10 +78,10 @@ void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Conte
                      const ViewerBenchResult& r) {
     std::printf("{\n  \"scene\": \"%s\",\n  \"device\": \"%s\",\n  \"width\": %u,\n  \"height\": %u,\n"
                 "  \"spp\": %u,\n  \"bounces\": %u,\n  \"roulette_start\": %u,\n  \"temporal\": %s,\n"
-                "  \"denoise_passes\": %u,\n  \"shared_camera_rays\": %s,\n  \"camera_motion\": \"%s\",\n  \"frames\": %d,\n  \"viewer_frame_ms\": %.4f,\n  \"passes\": {",
+                "  \"denoise_passes\": %u,\n  \"shared_camera_rays\": %s,\n  \"shadow_roulette\": %.3g,\n  \"camera_motion\": \"%s\",\n  \"frames\": %d,\n  \"viewer_frame_ms\": %.4f,\n  \"passes\": {",
                 jsonEscape(scene.name).c_str(), jsonEscape(ctx.info().name).c_str(), o.width, o.height, o.view.samplesPerFrame,
                 o.view.maxBounces, o.view.rouletteStart, o.view.temporal ? "true" : "false",
-                o.view.denoise ? o.view.denoiseIterations : 0, o.view.shareCameraRays ? "true" : "false",
+                o.view.denoise ? o.view.denoiseIterations : 0, o.view.shareCameraRays ? "true" : "false", o.view.shadowRouletteShare,
                 cameraMotionName(o.motion), r.frames, r.frameMs);
     const char* sep = "";
     for (const auto& [name, ms] : r.passMs) {
@@ -135,6 +136,9 @@ void runViewerBenchCommand(const BenchArgs& args) {
     if (args.warmupFrames < 0 || args.warmupFrames > 100000) throw UsageError("--warmup-frames must be within [0, 100000]");
     if (args.spp < 1 || args.spp > 64) throw UsageError("--spp must be between 1 and 64 for --viewer");
     if (args.denoise > 5) throw UsageError("--denoise must be between 0 (off) and 5 passes");
+    if (!(args.shadowRoulette >= 0 && args.shadowRoulette <= 1))
+        throw UsageError("--shadow-roulette must be a share between 0 (off) and 1");
+    o.view.shadowRouletteShare = args.shadowRoulette;
     if (!(args.warmupSeconds >= 0 && args.warmupSeconds <= 60)) throw UsageError("--warmup-seconds must be within [0, 60]");
     if (!args.reference.empty()) {
         if (!(args.budgetMs > 0 && args.budgetMs <= 1e6)) throw UsageError("--budget-ms must be within (0, 1e6]");
@@ -239,6 +243,9 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_flag("--no-temporal", args->noTemporal, "--viewer: no temporal accumulation");
     cmd->add_flag("--share-camera-rays", args->shareCameraRays,
                   "--viewer: a pixel's samples in a frame share one camera ray (the viewer's option; faster, raw mean noisier)");
+    cmd->add_option("--shadow-roulette", args->shadowRoulette,
+                    "--viewer: shadow rays carrying less than this share of their pixel's value so far go through "
+                    "Russian roulette (0 traces all; default 0.1)");
     cmd->add_option("--roulette-start", args->rouletteStart, "--viewer: bounce from which Russian roulette may end paths (default as in the viewer: 2 for WAD levels, else 3)");
     cmd->add_option("--camera-motion", args->motion, "--viewer: static, orbit or walk (default static)");
     cmd->add_option("--frames", args->frames, "--viewer: timed frames (default 200)");

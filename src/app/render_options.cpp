@@ -57,6 +57,9 @@ void addRenderOptions(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--accel", a.accel, "bvh, wide (the compressed 8-wide BVH; scenes with instances keep bvh), or brute (every triangle per ray: the oracle)");
     cmd.add_option("--mis", a.mis,
                    "direct light estimators: both (MIS, default), light (light sampling only) or bsdf (BSDF sampling only)");
+    cmd.add_option("--shadow-roulette", a.settings.shadowRouletteShare,
+                   "shadow rays carrying less than this share of their pixel's value so far go through Russian "
+                   "roulette (same mean, fewer rays; 0 traces all; default 0.1)");
     cmd.add_option("--exposure", a.exposure, "exposure in stops for PNG output");
     cmd.add_flag("-q,--quiet", a.quiet, "no progress bar or summary");
     cmd.add_option("--time-limit", a.timeLimit,

@@ -24,6 +24,7 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.height = settings.height;
     f.maxBounces = settings.maxBounces;
     f.rouletteStart = settings.rouletteStart;
+    f.shadowRouletteShare = settings.shadowRouletteShare;
     f.lightNodeCount = lightNodeCount;
     f.triCount = triCount;
     f.nodeCount = nodeCount;

@@ -216,11 +216,13 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
     filterB_ = pixelBuffer(sizeof(Vec4));
     guide_ = pixelBuffer(PN_DENOISE_GUIDE_BYTES);
     display_ = pixelBuffer(sizeof(std::uint32_t));
+    pixelEstimates_ = pixelBuffer(sizeof(float));
     historyIn_ = &historyA_;
     historyOut_ = &historyB_;
     // Everything starts defined, so no pass ever reads uninitialised memory.
     commands_.run([&](VkCommandBuffer cmd) {
-        for (gpu::Buffer* b : {&accumulation_, &gbufferA_, &gbufferB_, &historyA_, &historyB_, &filterA_, &filterB_, &guide_, &display_})
+        for (gpu::Buffer* b : {&accumulation_, &gbufferA_, &gbufferB_, &historyA_, &historyB_, &filterA_, &filterB_, &guide_,
+                               &display_, &pixelEstimates_})
             vkCmdFillBuffer(cmd, b->get(), 0, VK_WHOLE_SIZE, 0);
     });
     createPasses();
@@ -233,6 +235,7 @@ void InteractiveRenderer::createPasses() {
     features_ = penumbra::kernelFeatures(arrays_, Accel::Bvh);
     trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, features_);
     trace_->setReplacesAccumulation(true);  // one pass per frame: no clear before it
+    trace_->setPixelEstimates(&pixelEstimates_);  // the temporal pass's, for the shadow-ray roulette
     auto gbufferPass = [&](const gpu::Buffer& out) {
         return std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, out, features_,
                                              &instancesPrev_);
@@ -243,7 +246,7 @@ void InteractiveRenderer::createPasses() {
                         const gpu::Buffer& gbufferOut) {
         return std::make_unique<TemporalPass>(
             ctx_, TemporalBuffers{&frameUniforms_, &viewerUniforms_, &accumulation_, &gbufferOut, &gbufferIn, &in,
-                                  &out, &filterA_, &guide_});
+                                  &out, &filterA_, &guide_, &pixelEstimates_});
     };
     temporalAB_ = temporal(historyA_, gbufferA_, historyB_, gbufferB_);
     temporalBA_ = temporal(historyB_, gbufferB_, historyA_, gbufferA_);
@@ -315,6 +318,7 @@ shader::FrameUniforms InteractiveRenderer::frameUniforms(const Camera& camera, c
     rs.samplesPerPass = s.samplesPerFrame;
     rs.maxBounces = s.maxBounces;
     rs.rouletteStart = s.rouletteStart;
+    rs.shadowRouletteShare = s.shadowRouletteShare;
     rs.seed = seed_;
     rs.time = s.time;
     Camera lens = camera;

@@ -12,6 +12,10 @@ enum class Accel { Bvh, Brute, Wide };  // Wide: the compressed 8-wide BVH (flat
 // power heuristic, light sampling only, or BSDF sampling only. All converge to the same image.
 enum class MisMode { Both, LightOnly, BsdfOnly };
 
+// FrameUniforms::shadowRouletteShare unless asked otherwise: measured on the H200 against 0.05
+// and 0.2 (docs/PERFORMANCE.md, session 33).
+constexpr float kDefaultShadowRouletteShare = 0.1f;
+
 struct RenderSettings {
     std::uint32_t width = 640;
     std::uint32_t height = 480;
@@ -19,6 +23,9 @@ struct RenderSettings {
     std::uint32_t samplesPerPass = 1;  // paths per pixel in one dispatch
     std::uint32_t maxBounces = 16;     // path segments after the camera ray
     std::uint32_t rouletteStart = 3;   // Russian roulette from this bounce on
+    // Shadow rays whose light is below this share of the pixel's value so far go through Russian
+    // roulette (lib/path.glsl keepShadowRay); 0 traces them all. The mean is the same either way.
+    float shadowRouletteShare = kDefaultShadowRouletteShare;
     std::uint32_t seed = 1;
     Accel accel = Accel::Bvh;
     MisMode mis = MisMode::Both;

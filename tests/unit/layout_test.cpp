@@ -110,7 +110,7 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, instanceCount), offsetof(FrameUniforms, time),
                        offsetof(FrameUniforms, topLightCount), offsetof(FrameUniforms, envLuminance),
                        offsetof(FrameUniforms, lightRefCount), offsetof(FrameUniforms, lightPickUniform),
-                       offsetof(FrameUniforms, topRoot), offsetof(FrameUniforms, lightGridOffset), offsetof(FrameUniforms, pad2),
+                       offsetof(FrameUniforms, topRoot), offsetof(FrameUniforms, lightGridOffset), offsetof(FrameUniforms, shadowRouletteShare),
                        offsetof(FrameUniforms, pad3)});
         expectMembers(spv, "Instance", {0, offsetof(Instance, worldToObject), offsetof(Instance, rootNode),
                                         offsetof(Instance, firstPrimitive), offsetof(Instance, primitiveCount),

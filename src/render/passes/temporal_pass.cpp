@@ -14,7 +14,8 @@ TemporalPass::TemporalPass(const gpu::Context& ctx, const TemporalBuffers& b)
                                    {PN_BINDING_HISTORY, b.history},
                                    {PN_BINDING_HISTORY_OUT, b.historyOut},
                                    {PN_BINDING_FILTER_IN, b.filterIn},
-                                   {PN_BINDING_DENOISE_GUIDE, b.guide}})) {}
+                                   {PN_BINDING_DENOISE_GUIDE, b.guide},
+                                   {PN_BINDING_PIXEL_ESTIMATES, b.pixelEstimates}})) {}
 
 void TemporalPass::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height) const {
     dispatchImage(*pipeline_, cmd, width, height);

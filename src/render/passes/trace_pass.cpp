@@ -43,20 +43,32 @@ TracePass::TracePass(const gpu::Context& ctx, const GpuScene& scene, const gpu::
     }
 }
 
+void TracePass::setPixelEstimates(const gpu::Buffer* estimates) {
+    PN_CHECK(!pipeline_ && !wave_);  // the kernels bind it when they are made
+    pixelEstimates_ = estimates;
+}
+
+// Without estimates the shaders never read the binding, but something valid must be bound.
+const gpu::Buffer& TracePass::estimatesBinding() const { return pixelEstimates_ ? *pixelEstimates_ : accumulation_; }
+
 const gpu::ComputePipeline& TracePass::megakernel() {
     if (!pipeline_) {
         pipeline_ = makeScenePipeline(ctx_, "trace", scene_, frameUniforms_,
-                                      {PN_BINDING_ACCUM, PN_BINDING_COUNTERS, PN_BINDING_ACTIVE_MASK}, features_);
+                                      {PN_BINDING_ACCUM, PN_BINDING_COUNTERS, PN_BINDING_ACTIVE_MASK,
+                                       PN_BINDING_PIXEL_ESTIMATES},
+                                      features_);
         pipeline_->bind(PN_BINDING_ACCUM, accumulation_);
         pipeline_->bind(PN_BINDING_COUNTERS, counters_);
         pipeline_->bind(PN_BINDING_ACTIVE_MASK, *activeMask_);
+        pipeline_->bind(PN_BINDING_PIXEL_ESTIMATES, estimatesBinding());
     }
     return *pipeline_;
 }
 
 WavefrontPass& TracePass::wavefront() {
     if (!wave_)
-        wave_ = std::make_unique<WavefrontPass>(ctx_, scene_, frameUniforms_, accumulation_, counters_, *activeMask_,
+        wave_ = std::make_unique<WavefrontPass>(ctx_, scene_, frameUniforms_,
+                                                TraceOutputs{&accumulation_, &counters_, activeMask_, &estimatesBinding()},
                                                 features_);
     return *wave_;
 }
@@ -101,7 +113,8 @@ void TracePass::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t h
     // One sample per pass has its camera ray to itself: sharing would only change its position.
     const bool shareCamera = shareCamera_ && samplesPerPass > 1;
     const std::uint32_t mode = (masked ? PN_TRACE_MASKED : 0u) | (replace_ ? PN_TRACE_REPLACE : 0u) |
-                               (shareCamera ? PN_TRACE_SHARED_CAMERA : 0u);
+                               (shareCamera ? PN_TRACE_SHARED_CAMERA : 0u) |
+                               (pixelEstimates_ ? PN_TRACE_PIXEL_ESTIMATES : 0u);
     const std::vector<TraceTile> tiles = traceTiles(width, height, samplesPerPass, pathBudget_);
     if (kernelFor(width, height, samplesPerPass) == TraceKernel::Wavefront) {
         WavefrontPass& wave = wavefront();

@@ -62,6 +62,11 @@ public:
     // evenly (shared/pass_jitter.h). For callers that take many passes (the viewer), not for a
     // few passes of many samples.
     void setSharesCameraRays(bool on) { shareCamera_ = on; }
+    // A float per pixel holding its value so far per sample (luminance), which scales the
+    // shadow-ray roulette (FrameUniforms::shadowRouletteShare) of every later pass: for callers
+    // that replace the sums every pass (the viewer keeps its history's mean there). Without one, a
+    // pass that adds to the sums estimates from them. Call before the first pass is recorded.
+    void setPixelEstimates(const gpu::Buffer* estimates);
 
     // Paths per dispatch: by device type unless set (0 puts the device's default back), never more
     // than the wavefront's working buffers can hold on this device.
@@ -71,12 +76,14 @@ public:
 private:
     // The kernels are made on first use: a renderer of one size compiles only one design.
     const gpu::ComputePipeline& megakernel();
+    const gpu::Buffer& estimatesBinding() const;
     WavefrontPass& wavefront();
 
     const gpu::Context& ctx_;
     const GpuScene& scene_;
     const gpu::Buffer &frameUniforms_, &accumulation_, &counters_;
     const gpu::Buffer* activeMask_;
+    const gpu::Buffer* pixelEstimates_ = nullptr;
     std::uint32_t features_;
     TraceKernel kernel_;
     gpu::Buffer placeholderMask_;

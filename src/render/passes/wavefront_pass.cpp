@@ -18,9 +18,9 @@ namespace penumbra {
 
 namespace {
 
-constexpr std::uint32_t kWorkingBindings[] = {PN_BINDING_ACCUM,       PN_BINDING_COUNTERS,   PN_BINDING_ACTIVE_MASK,
-                                              PN_BINDING_WAVE_PATHS,  PN_BINDING_WAVE_HITS,  PN_BINDING_WAVE_SHADOWS,
-                                              PN_BINDING_WAVE_QUEUES, PN_BINDING_WAVE_CONTROL};
+constexpr std::uint32_t kWorkingBindings[] = {PN_BINDING_ACCUM,       PN_BINDING_COUNTERS,    PN_BINDING_ACTIVE_MASK,
+                                              PN_BINDING_PIXEL_ESTIMATES, PN_BINDING_WAVE_PATHS, PN_BINDING_WAVE_HITS,
+                                              PN_BINDING_WAVE_SHADOWS, PN_BINDING_WAVE_QUEUES, PN_BINDING_WAVE_CONTROL};
 
 std::uint32_t groupsFor(std::uint64_t items) { return std::uint32_t((items + PN_WAVE_GROUP - 1) / PN_WAVE_GROUP); }
 
@@ -39,15 +39,15 @@ std::uint32_t tailPathsSetting() {
 }  // namespace
 
 WavefrontPass::WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                             const gpu::Buffer& accumulation, const gpu::Buffer& counters,
-                             const gpu::Buffer& activeMask, std::uint32_t features)
+                             const TraceOutputs& outputs, std::uint32_t features)
     : ctx_(ctx) {
     const std::vector<std::uint32_t> extra(std::begin(kWorkingBindings), std::end(kWorkingBindings));
     auto make = [&](const char* shader, std::uint32_t variant = 0) {
         auto pipeline = makeScenePipeline(ctx, shader, scene, frameUniforms, extra, features | variant);
-        pipeline->bind(PN_BINDING_ACCUM, accumulation);
-        pipeline->bind(PN_BINDING_COUNTERS, counters);
-        pipeline->bind(PN_BINDING_ACTIVE_MASK, activeMask);
+        pipeline->bind(PN_BINDING_ACCUM, *outputs.accumulation);
+        pipeline->bind(PN_BINDING_COUNTERS, *outputs.counters);
+        pipeline->bind(PN_BINDING_ACTIVE_MASK, *outputs.activeMask);
+        pipeline->bind(PN_BINDING_PIXEL_ESTIMATES, *outputs.pixelEstimates);
         return pipeline;
     };
     start_ = make("wave_start");

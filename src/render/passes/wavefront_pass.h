@@ -22,11 +22,18 @@
 
 namespace penumbra {
 
+// What the tracing kernels write and obey besides the scene (lib/trace_outputs.glsl).
+struct TraceOutputs {
+    const gpu::Buffer* accumulation;    // vec4 per pixel: the sums
+    const gpu::Buffer* counters;        // RayCounters
+    const gpu::Buffer* activeMask;      // uint per pixel: adaptive sampling's mask
+    const gpu::Buffer* pixelEstimates;  // float per pixel: the shadow-ray roulette's scale
+};
+
 class WavefrontPass {
 public:
     WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                  const gpu::Buffer& accumulation, const gpu::Buffer& counters, const gpu::Buffer& activeMask,
-                  std::uint32_t features);
+                  const TraceOutputs& outputs, std::uint32_t features);
 
     // The most path slots this device can give the working buffers: the path array within the
     // largest storage buffer a shader may bind, and all of them within a quarter of the memory.
