@@ -12,13 +12,14 @@
 layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 
 #include "lib/viewer_common.glsl"
+#include "lib/pixel_estimate.glsl"
 
 layout(std430, set = 0, binding = PN_BINDING_ACCUM) readonly buffer AccumBuffer { vec4 accum[]; };
 layout(std430, set = 0, binding = PN_BINDING_GBUFFER) readonly buffer GBufferIn { GBufferTexel gbuffer[]; };
 layout(std430, set = 0, binding = PN_BINDING_GBUFFER_PREV) readonly buffer GBufferPrev { GBufferTexel gbufferPrev[]; };
 layout(std430, set = 0, binding = PN_BINDING_HISTORY) readonly buffer HistoryIn { HistoryTexel history[]; };
 layout(std430, set = 0, binding = PN_BINDING_HISTORY_OUT) writeonly buffer HistoryOut { HistoryTexel historyOut[]; };
-layout(std430, set = 0, binding = PN_BINDING_PIXEL_ESTIMATES) writeonly buffer PixelEstimates { float pixelEstimates[]; };
+layout(std430, set = 0, binding = PN_BINDING_PIXEL_ESTIMATES) writeonly buffer PixelEstimates { vec4 pixelEstimates[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) writeonly buffer FilterIn { vec4 filterIn[]; };
 layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) writeonly buffer GuideOut { vec4 guide[]; };
 
@@ -127,7 +128,7 @@ void main() {
     }
     historyOut[i] = o;
     // The next frame's trace scales its shadow-ray roulette by this (lib/path.glsl).
-    pixelEstimates[i] = o.samples >= float(PN_PIXEL_ESTIMATE_MIN_SAMPLES) ? max(luminance(o.color), 0.0) : 0.0;
+    pixelEstimates[i] = vec4(pixelEstimateFromMoments(o.color, o.moment2, o.samples), 0.0);
 
     // Variance of the mean's luminance; from the neighbourhood while history is short (SVGF).
     float variance = o.samples >= 4.0 * spp ? max(o.moment2 - o.moment1 * o.moment1, 0.0) / o.samples

@@ -107,16 +107,19 @@ Path startPath(uvec2 pixel, uint pixelIndex, uint sampleIndex, bool sharedCamera
 
 // Shadow-ray roulette (after Vorba & Krivanek 2016, "Adjoint-driven Russian roulette and
 // splitting", with the pixel's estimate standing in for the adjoint): a light sample that would add
-// less than frame.shadowRouletteShare of what the pixel holds per sample is traced with probability
-// (its luminance / that threshold) and weighted by the inverse. The mean is unchanged and the
-// variance it adds is at most threshold^2 / 4 per ray, while most of a many-light scene's shadow
+// less than frame.shadowRouletteShare of what the pixel holds per sample, in every channel, is
+// traced with probability (its largest share / that share) and weighted by the inverse. The mean
+// is unchanged and the variance it adds is at most threshold^2 / 4 per ray, while most of a many-light scene's shadow
 // rays carry little (DOOM1 E1M1, 1280x800 x 4: more than half of them go at a share of 0.1). The estimate comes from
 // earlier passes only, never from this path's own numbers, so the roulette cannot bias the pass.
 bool keepShadowRay(inout vec3 light, uint pixelIndex, inout uint rng) {
-    float threshold = frame.shadowRouletteShare * pixelEstimate(pixelIndex);
-    float y = luminance(light);
-    if (!(y < threshold)) return true;
-    float survive = y / threshold;
+    // Channel by channel, so that a coloured light is weighed against the pixel's own value in its
+    // colour: the channel that brings the largest share decides. A channel without a scale keeps
+    // the ray (its ratio is huge), one the light does not reach has no say (0).
+    vec3 threshold = frame.shadowRouletteShare * pixelEstimate(pixelIndex);
+    vec3 share = light / max(threshold, vec3(1e-30));
+    float survive = max(share.r, max(share.g, share.b));
+    if (!(survive < 1.0)) return true;
     if (rngNext(rng) >= survive) return false;
     light /= survive;
     return true;

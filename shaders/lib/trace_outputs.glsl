@@ -9,11 +9,12 @@
 #extension GL_KHR_shader_subgroup_basic : require
 
 #include "shared/color.h"
+#include "lib/pixel_estimate.glsl"
 
 layout(std430, set = 0, binding = PN_BINDING_ACCUM) buffer AccumBuffer { vec4 accum[]; };
 layout(std430, set = 0, binding = PN_BINDING_COUNTERS) buffer CounterBuffer { RayCounters counterLanes[PN_RAY_COUNTER_LANES]; };
 layout(std430, set = 0, binding = PN_BINDING_ACTIVE_MASK) readonly buffer ActiveMask { uint activeMask[]; };
-layout(std430, set = 0, binding = PN_BINDING_PIXEL_ESTIMATES) readonly buffer PixelEstimates { float pixelEstimates[]; };
+layout(std430, set = 0, binding = PN_BINDING_PIXEL_ESTIMATES) readonly buffer PixelEstimates { vec4 pixelEstimates[]; };
 
 // The counter lane this workgroup adds to (see RayCounters).
 uint counterLane() { return (gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x) % PN_RAY_COUNTER_LANES; }
@@ -34,15 +35,16 @@ void storePixelSums(uint index, vec4 sums) {
         accum[index] += sums;
 }
 
-// What the pixel is worth per sample so far (luminance), as earlier passes left it: the pixel
-// estimates buffer where the caller keeps one (PN_TRACE_PIXEL_ESTIMATES: the viewer's history),
-// else the mean of the sums this pass adds to; 0 (no estimate) before PN_PIXEL_ESTIMATE_MIN_SAMPLES
-// samples, or in a pass that replaces the sums without estimates (they hold only the last pass).
-float pixelEstimate(uint pixelIndex) {
-    if ((push.mode & PN_TRACE_PIXEL_ESTIMATES) != 0u) return pixelEstimates[pixelIndex];
-    uint samples = push.passIndex * frame.samplesPerPass;
-    if ((push.mode & PN_TRACE_REPLACE) != 0u || samples < PN_PIXEL_ESTIMATE_MIN_SAMPLES) return 0.0;
-    return max(luminance(accum[pixelIndex].rgb), 0.0) / float(samples);
+// What the pixel is worth per sample so far (lib/pixel_estimate.glsl), as earlier passes left it:
+// the pixel estimates buffer where the caller keeps one (PN_TRACE_PIXEL_ESTIMATES: the viewer's
+// history), else from the sums this pass adds to; none (0) in a pass that replaces the sums
+// without estimates (they hold only the last pass's few samples).
+vec3 pixelEstimate(uint pixelIndex) {
+    if ((push.mode & PN_TRACE_PIXEL_ESTIMATES) != 0u) return pixelEstimates[pixelIndex].rgb;
+    float samples = float(push.passIndex * frame.samplesPerPass);
+    if ((push.mode & PN_TRACE_REPLACE) != 0u || samples == 0.0) return vec3(0.0);
+    vec4 sums = accum[pixelIndex];
+    return pixelEstimateFromMoments(sums.rgb / samples, sums.a / samples, samples);
 }
 
 // A finished sample into the pixel's sums. A NaN or inf sample would poison the pixel forever:

@@ -71,7 +71,7 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_WAVE_CONTROL 35  // WaveControl
 #define PN_BINDING_LIGHT_TREE 36    // LightTreeNode per node of the light BVH (root first, children side by side)
 #define PN_BINDING_TRI_UVS 37       // TriUvs: entry 0 all zero, then the triangles that have texture coordinates
-#define PN_BINDING_PIXEL_ESTIMATES 38  // float per pixel: its value so far per sample (luminance), the shadow-ray roulette's scale
+#define PN_BINDING_PIXEL_ESTIMATES 38  // vec4 per pixel: rgb = its value so far per sample, the shadow-ray roulette's scale
 // A pixel's value so far scales the shadow-ray roulette only once it rests on this many samples:
 // one sample's value is too noisy a scale (a firefly would roulette the pixel's next rays hard).
 #define PN_PIXEL_ESTIMATE_MIN_SAMPLES 4u

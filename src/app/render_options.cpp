@@ -59,7 +59,8 @@ void addRenderOptions(CLI::App& cmd, RenderArgs& a) {
                    "direct light estimators: both (MIS, default), light (light sampling only) or bsdf (BSDF sampling only)");
     cmd.add_option("--shadow-roulette", a.settings.shadowRouletteShare,
                    "shadow rays carrying less than this share of their pixel's value so far go through Russian "
-                   "roulette (same mean, fewer rays; 0 traces all; default 0.1)");
+                   "roulette (same mean, fewer rays; default 0: every ray, which keeps an image the same bit for bit "
+                   "however its passes are split across MPI ranks or checkpoints)");
     cmd.add_option("--exposure", a.exposure, "exposure in stops for PNG output");
     cmd.add_flag("-q,--quiet", a.quiet, "no progress bar or summary");
     cmd.add_option("--time-limit", a.timeLimit,

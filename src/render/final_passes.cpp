@@ -124,8 +124,9 @@ ImageRgb FinalFramePasses::denoise(const PixelAccumulator& sums, const FinalDeno
     gpu::Buffer historyOut = pixelBuffer(sizeof(shader::HistoryTexel));
     gpu::Buffer filterA = pixelBuffer(sizeof(Vec4)), filterB = pixelBuffer(sizeof(Vec4));
     gpu::Buffer guide = pixelBuffer(PN_DENOISE_GUIDE_BYTES);
+    gpu::Buffer estimates = pixelBuffer(sizeof(Vec4));  // written, never read: there is no next pass
     TemporalPass temporal(ctx_, TemporalBuffers{&renderer_.frameUniforms(), &viewerUniforms_, &accumulation, &gbuffer_,
-                                                &gbuffer_, &historyIn, &historyOut, &filterA, &guide});
+                                                &gbuffer_, &historyIn, &historyOut, &filterA, &guide, &estimates});
     DenoisePass atrous(ctx_, renderer_.frameUniforms(), viewerUniforms_, gbuffer_, guide, filterA, filterB);
     const gpu::Buffer* result = nullptr;
     commands_.run([&](VkCommandBuffer cmd) {

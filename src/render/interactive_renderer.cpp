@@ -216,7 +216,7 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
     filterB_ = pixelBuffer(sizeof(Vec4));
     guide_ = pixelBuffer(PN_DENOISE_GUIDE_BYTES);
     display_ = pixelBuffer(sizeof(std::uint32_t));
-    pixelEstimates_ = pixelBuffer(sizeof(float));
+    pixelEstimates_ = pixelBuffer(sizeof(Vec4));
     historyIn_ = &historyA_;
     historyOut_ = &historyB_;
     // Everything starts defined, so no pass ever reads uninitialised memory.

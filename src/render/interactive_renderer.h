@@ -130,7 +130,7 @@ private:
     // Each frame writes one history and the G-buffer of the same letter, and reads the other two as
     // last frame's: swapping the pair every frame spares copying the G-buffer.
     gpu::Buffer accumulation_, gbufferA_, gbufferB_, historyA_, historyB_, filterA_, filterB_, guide_, display_;
-    gpu::Buffer pixelEstimates_;  // float per pixel: the history's mean, the trace's roulette scale
+    gpu::Buffer pixelEstimates_;  // vec4 per pixel: the history's mean (rgb), the trace's roulette scale
     // The instances as the previous frame placed them (gbuffer.comp's object motion), and the
     // staging buffer that carries moved instances and the top level up.
     gpu::Buffer instancesPrev_, instanceStaging_;

@@ -12,8 +12,8 @@ enum class Accel { Bvh, Brute, Wide };  // Wide: the compressed 8-wide BVH (flat
 // power heuristic, light sampling only, or BSDF sampling only. All converge to the same image.
 enum class MisMode { Both, LightOnly, BsdfOnly };
 
-// FrameUniforms::shadowRouletteShare unless asked otherwise: measured on the H200 against 0.05
-// and 0.2 (docs/PERFORMANCE.md, session 33).
+// The viewer's FrameUniforms::shadowRouletteShare unless asked otherwise: measured on the H200
+// against 0.05 and 0.2 (docs/PERFORMANCE.md, session 33).
 constexpr float kDefaultShadowRouletteShare = 0.1f;
 
 struct RenderSettings {
@@ -24,8 +24,12 @@ struct RenderSettings {
     std::uint32_t maxBounces = 16;     // path segments after the camera ray
     std::uint32_t rouletteStart = 3;   // Russian roulette from this bounce on
     // Shadow rays whose light is below this share of the pixel's value so far go through Russian
-    // roulette (lib/path.glsl keepShadowRay); 0 traces them all. The mean is the same either way.
-    float shadowRouletteShare = kDefaultShadowRouletteShare;
+    // roulette (lib/path.glsl keepShadowRay); 0 traces them all. The mean is the same either way,
+    // but the samples then depend on the sums of earlier passes, so an image would no longer be
+    // the same bit for bit however its passes are split (MPI ranks, tiles, a resumed checkpoint):
+    // headless renders keep it off unless asked (render --shadow-roulette); the viewer uses
+    // kDefaultShadowRouletteShare.
+    float shadowRouletteShare = 0.0f;
     std::uint32_t seed = 1;
     Accel accel = Accel::Bvh;
     MisMode mis = MisMode::Both;

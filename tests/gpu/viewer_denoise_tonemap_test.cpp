@@ -22,12 +22,14 @@ protected:
         gpu::Buffer accum = pixels<Vec4>(), gbuffer = pixels<shader::GBufferTexel>(), gbufferPrev = pixels<shader::GBufferTexel>();
         gpu::Buffer history = pixels<shader::HistoryTexel>(), historyOut = pixels<shader::HistoryTexel>();
         gpu::Buffer a = pixels<Vec4>(), b = pixels<Vec4>(), guide = pixelBytes(PN_DENOISE_GUIDE_BYTES);
+        gpu::Buffer estimates = pixels<Vec4>();
         for (std::uint32_t i = 0; i < width * height; ++i) {
             float y = luminance(radiance[i]);
             view<Vec4>(accum)[i] = Vec4{radiance[i].x, radiance[i].y, radiance[i].z, y * y};
             view<shader::GBufferTexel>(gbuffer)[i] = surfaceTexel(3.0f, {0, 0, -1}, albedo[i]);
         }
-        TemporalPass temporal(*ctx, TemporalBuffers{&frame, &viewer, &accum, &gbuffer, &gbufferPrev, &history, &historyOut, &a, &guide});
+        TemporalPass temporal(*ctx, TemporalBuffers{&frame, &viewer, &accum, &gbuffer, &gbufferPrev, &history, &historyOut, &a, &guide,
+                                                    &estimates});
         DenoisePass pass(*ctx, frame, viewer, gbuffer, guide, a, b, display);
         const gpu::Buffer* result = nullptr;
         submit([&](VkCommandBuffer cmd) {

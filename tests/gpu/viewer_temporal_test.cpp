@@ -21,9 +21,11 @@ protected:
         historyB = pixels<shader::HistoryTexel>();
         filterIn = pixels<Vec4>();
         guide = pixelBytes(PN_DENOISE_GUIDE_BYTES);
+        estimates = pixels<Vec4>();
         auto make = [&](gpu::Buffer& in, gpu::Buffer& out) {
             return std::make_unique<TemporalPass>(
-                *ctx, TemporalBuffers{&frame, &viewer, &accum, &gbuffer, &gbufferPrev, &in, &out, &filterIn, &guide});
+                *ctx, TemporalBuffers{&frame, &viewer, &accum, &gbuffer, &gbufferPrev, &in, &out, &filterIn, &guide,
+                                      &estimates});
         };
         aToB = make(historyA, historyB);
         bToA = make(historyB, historyA);
@@ -43,7 +45,7 @@ protected:
         view<Vec4>(accum)[i] = Vec4{mean.x * spp, mean.y * spp, mean.z * spp, y * y * spp};
     }
 
-    gpu::Buffer accum, gbuffer, gbufferPrev, historyA, historyB, filterIn, guide;
+    gpu::Buffer accum, gbuffer, gbufferPrev, historyA, historyB, filterIn, guide, estimates;
     std::unique_ptr<TemporalPass> aToB, bToA;
 };
 

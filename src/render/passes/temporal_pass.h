@@ -18,7 +18,7 @@ struct TemporalBuffers {
     const gpu::Buffer* historyOut;      // HistoryTexel, this frame
     const gpu::Buffer* filterIn;        // vec4: illumination and variance for the denoiser
     const gpu::Buffer* guide;           // PN_DENOISE_GUIDE_BYTES per pixel: what the denoiser compares
-    const gpu::Buffer* pixelEstimates;  // float per pixel: the history's mean luminance, for the next trace
+    const gpu::Buffer* pixelEstimates;  // vec4 per pixel: the history's mean as the next trace's roulette scale
 };
 
 class TemporalPass {

@@ -62,7 +62,7 @@ public:
     // evenly (shared/pass_jitter.h). For callers that take many passes (the viewer), not for a
     // few passes of many samples.
     void setSharesCameraRays(bool on) { shareCamera_ = on; }
-    // A float per pixel holding its value so far per sample (luminance), which scales the
+    // A vec4 per pixel holding its value so far per sample (rgb, lib/pixel_estimate.glsl), which scales the
     // shadow-ray roulette (FrameUniforms::shadowRouletteShare) of every later pass: for callers
     // that replace the sums every pass (the viewer keeps its history's mean there). Without one, a
     // pass that adds to the sums estimates from them. Call before the first pass is recorded.

@@ -27,7 +27,7 @@ struct TraceOutputs {
     const gpu::Buffer* accumulation;    // vec4 per pixel: the sums
     const gpu::Buffer* counters;        // RayCounters
     const gpu::Buffer* activeMask;      // uint per pixel: adaptive sampling's mask
-    const gpu::Buffer* pixelEstimates;  // float per pixel: the shadow-ray roulette's scale
+    const gpu::Buffer* pixelEstimates;  // vec4 per pixel: the shadow-ray roulette's scale
 };
 
 class WavefrontPass {
