@@ -73,8 +73,10 @@ using namespace penumbra::gpu_types;
 #define PN_BINDING_TRI_UVS 37       // TriUvs: entry 0 all zero, then the triangles that have texture coordinates
 #define PN_BINDING_PIXEL_ESTIMATES 38  // vec4 per pixel: rgb = its value so far per sample, the shadow-ray roulette's scale
 // A pixel's value so far scales the shadow-ray roulette only once it rests on this many samples:
-// one sample's value is too noisy a scale (a firefly would roulette the pixel's next rays hard).
-#define PN_PIXEL_ESTIMATE_MIN_SAMPLES 4u
+// fewer give too noisy a scale. Measured on the H200 (docs/PERFORMANCE.md, session 33): from 4
+// samples, DOOM1 E1M1's raw error at equal time from a fresh 1-spp history was 5-10% worse than
+// without the roulette; from 16, the same.
+#define PN_PIXEL_ESTIMATE_MIN_SAMPLES 16u
 
 // ---- kernel features: specialization constant 0 of the tracing kernels, a bit set. A pipeline
 // made for a scene leaves out what the scene does not use (render/kernel_features.h); the
