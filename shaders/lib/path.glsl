@@ -113,6 +113,7 @@ Path startPath(uvec2 pixel, uint pixelIndex, uint sampleIndex, bool sharedCamera
 // rays carry little (DOOM1 E1M1, 1280x800 x 4: more than half of them go at a share of 0.1). The estimate comes from
 // earlier passes only, never from this path's own numbers, so the roulette cannot bias the pass.
 bool keepShadowRay(inout vec3 light, uint pixelIndex, inout uint rng) {
+    if (!PN_HAS(PN_FEATURE_SHADOW_ROULETTE)) return true;
     // Channel by channel, so that a coloured light is weighed against the pixel's own value in its
     // colour: the channel that brings the largest share decides. A channel without a scale keeps
     // the ray (its ratio is huge), one the light does not reach has no say (0).

@@ -94,7 +94,11 @@ using namespace penumbra::gpu_types;
 #define PN_FEATURE_INSTANCES 1024u // a two-level BVH (instances); without it the flat walk carries none of that code
 #define PN_FEATURE_WIDE_BVH 2048u  // --accel wide (lib/wide_bvh.glsl); other kernels carry none of its code
 #define PN_FEATURE_LIGHT_GRID 4096u // light picks from the light grid (render/light_grid.h); without one, none of its code
-#define PN_FEATURE_ALL 0x1fffu   // every feature above
+// The shadow-ray roulette (lib/path.glsl keepShadowRay), for scenes of many lights, where a light
+// sample often carries little (render/kernel_features.h); without it every shadow ray is traced
+// and the pixel estimates are never read, whatever FrameUniforms::shadowRouletteShare says.
+#define PN_FEATURE_SHADOW_ROULETTE 32768u
+#define PN_FEATURE_ALL (0x1fffu | PN_FEATURE_SHADOW_ROULETTE)  // every feature above
 // Not a capability but a promise, so not in PN_FEATURE_ALL (which must handle any scene): the
 // scene has exactly one top-level light (a WAD level's torch), whose bound a pick then weighs once.
 #define PN_FEATURE_ONE_TOP_LIGHT 8192u

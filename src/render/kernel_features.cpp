@@ -29,6 +29,7 @@ std::uint32_t kernelFeatures(const SceneArrays& a, Accel accel) {
     if (accel == Accel::Wide && !a.wideNodes.empty()) f |= PN_FEATURE_WIDE_BVH;
     if (!a.lightGrid.empty()) f |= PN_FEATURE_LIGHT_GRID;
     if (a.topLightCount == 1) f |= PN_FEATURE_ONE_TOP_LIGHT;
+    if (a.lightRefs.size() >= kShadowRouletteMinLights) f |= PN_FEATURE_SHADOW_ROULETTE;
     return f;
 }
 
@@ -41,7 +42,8 @@ std::string kernelFeatureNames(std::uint32_t features) {
         {PN_FEATURE_ENV_MAP, "environment-map"}, {PN_FEATURE_BRUTE_FORCE, "brute-force"},
         {PN_FEATURE_SPRITES, "sprites"},         {PN_FEATURE_SKY_PORTALS, "sky-portals"},
         {PN_FEATURE_INSTANCES, "instances"},     {PN_FEATURE_WIDE_BVH, "wide-bvh"},
-        {PN_FEATURE_LIGHT_GRID, "light-grid"},   {PN_FEATURE_ONE_TOP_LIGHT, "one-top-light"}};
+        {PN_FEATURE_LIGHT_GRID, "light-grid"},   {PN_FEATURE_ONE_TOP_LIGHT, "one-top-light"},
+        {PN_FEATURE_SHADOW_ROULETTE, "shadow-roulette"}};
     std::string out;
     for (auto [bit, name] : kNames) {
         if (!(features & bit)) continue;
