@@ -13,6 +13,7 @@
 #include "render/renderer.h"
 #include "render_helpers.h"
 #include "scene/presets/mesh_builder.h"
+#include "scene/presets/presets.h"
 
 namespace penumbra::test {
 namespace {
@@ -44,6 +45,13 @@ Scene manyLightsScene() {
     scene.camera.lookAt = {0, 0, -1.0f};
     scene.camera.fovYDegrees = 60.0f;
     return scene;
+}
+
+// Only scenes of many lights get the roulette's code: with a few, a light sample rarely carries
+// so little that the test pays for itself.
+TEST(ShadowRouletteFeature, OnlyScenesOfManyLightsCarryIt) {
+    EXPECT_NE(kernelFeatures(buildSceneArrays(manyLightsScene()), Accel::Bvh) & PN_FEATURE_SHADOW_ROULETTE, 0u);
+    EXPECT_EQ(kernelFeatures(buildSceneArrays(makeCornellBox()), Accel::Bvh) & PN_FEATURE_SHADOW_ROULETTE, 0u);
 }
 
 struct Estimate {
