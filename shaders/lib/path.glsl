@@ -1,7 +1,7 @@
 // One path's life between its rays, shared by the megakernel (trace.comp) and the wavefront
 // kernels (wave_*.comp): the path state, what a vertex does with its closest hit (emission, one
 // light sample, one BSDF sample, roulette) and the light its shadow ray carries. Include after
-// shared/types.h and lib/scene_bindings.glsl.
+// shared/types.h, lib/scene_bindings.glsl and lib/trace_outputs.glsl (the pixel estimates).
 #ifndef PN_PATH_GLSL
 #define PN_PATH_GLSL
 
@@ -106,14 +106,15 @@ Path startPath(uvec2 pixel, uint pixelIndex, uint sampleIndex, bool sharedCamera
 }
 
 // Shadow-ray roulette (after Vorba & Krivanek 2016, "Adjoint-driven Russian roulette and
-// splitting", with the pixel's estimate standing in for the adjoint): a light sample that would add
-// less than frame.shadowRouletteShare of what the pixel holds per sample, in every channel, is
+// splitting", with the pixel's estimate standing in for the adjoint): a light sample that would
+// add less than frame.shadowRouletteShare of what the pixel holds per sample, in every channel, is
 // traced with probability (its largest share / that share) and weighted by the inverse. The mean
-// is unchanged and the variance it adds is at most threshold^2 / 4 per ray, while most of a many-light scene's shadow
-// rays carry little (DOOM1 E1M1, 1280x800 x 4: more than half of them go at a share of 0.1). The estimate comes from
-// earlier passes only, never from this path's own numbers, so the roulette cannot bias the pass.
+// is unchanged and the variance it adds is at most threshold^2 / 4 per ray, while most of a
+// many-light scene's shadow rays carry little (DOOM1 E1M1, 1280x800 x 4: more than half of them go
+// at a share of 0.1). The estimate comes from earlier passes only, never from this path's own
+// numbers, so the roulette cannot bias the pass.
 bool keepShadowRay(inout vec3 light, uint pixelIndex, inout uint rng) {
-    if (!PN_HAS(PN_FEATURE_SHADOW_ROULETTE)) return true;
+    if (!PN_HAS(PN_FEATURE_SHADOW_ROULETTE) || frame.shadowRouletteShare == 0.0) return true;
     // Channel by channel, so that a coloured light is weighed against the pixel's own value in its
     // colour: the channel that brings the largest share decides. A channel without a scale keeps
     // the ray (its ratio is huge), one the light does not reach has no say (0).
