@@ -7,7 +7,6 @@
 #include "core/error.h"
 #include "gpu/commands.h"
 #include "render/passes/trace_tiles.h"
-#include "render/scene_pipeline.h"
 
 namespace penumbra {
 
@@ -48,28 +47,18 @@ void TracePass::setPixelEstimates(const gpu::Buffer* estimates) {
     pixelEstimates_ = estimates;
 }
 
-// Without estimates the shaders never read the binding, but something valid must be bound.
-const gpu::Buffer& TracePass::estimatesBinding() const { return pixelEstimates_ ? *pixelEstimates_ : accumulation_; }
+// Without estimates the shaders never read that binding, but something valid must be bound there.
+TraceOutputs TracePass::outputs() const {
+    return {&accumulation_, &counters_, activeMask_, pixelEstimates_ ? pixelEstimates_ : &accumulation_};
+}
 
 const gpu::ComputePipeline& TracePass::megakernel() {
-    if (!pipeline_) {
-        pipeline_ = makeScenePipeline(ctx_, "trace", scene_, frameUniforms_,
-                                      {PN_BINDING_ACCUM, PN_BINDING_COUNTERS, PN_BINDING_ACTIVE_MASK,
-                                       PN_BINDING_PIXEL_ESTIMATES},
-                                      features_);
-        pipeline_->bind(PN_BINDING_ACCUM, accumulation_);
-        pipeline_->bind(PN_BINDING_COUNTERS, counters_);
-        pipeline_->bind(PN_BINDING_ACTIVE_MASK, *activeMask_);
-        pipeline_->bind(PN_BINDING_PIXEL_ESTIMATES, estimatesBinding());
-    }
+    if (!pipeline_) pipeline_ = makeTracePipeline(ctx_, "trace", scene_, frameUniforms_, outputs(), {}, features_);
     return *pipeline_;
 }
 
 WavefrontPass& TracePass::wavefront() {
-    if (!wave_)
-        wave_ = std::make_unique<WavefrontPass>(ctx_, scene_, frameUniforms_,
-                                                TraceOutputs{&accumulation_, &counters_, activeMask_, &estimatesBinding()},
-                                                features_);
+    if (!wave_) wave_ = std::make_unique<WavefrontPass>(ctx_, scene_, frameUniforms_, outputs(), features_);
     return *wave_;
 }
 

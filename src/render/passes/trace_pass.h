@@ -76,7 +76,7 @@ public:
 private:
     // The kernels are made on first use: a renderer of one size compiles only one design.
     const gpu::ComputePipeline& megakernel();
-    const gpu::Buffer& estimatesBinding() const;
+    TraceOutputs outputs() const;
     WavefrontPass& wavefront();
 
     const gpu::Context& ctx_;

@@ -12,15 +12,13 @@
 #include "gpu/check.h"
 #include "gpu/commands.h"
 #include "gpu/limits.h"
-#include "render/scene_pipeline.h"
 
 namespace penumbra {
 
 namespace {
 
-constexpr std::uint32_t kWorkingBindings[] = {PN_BINDING_ACCUM,       PN_BINDING_COUNTERS,    PN_BINDING_ACTIVE_MASK,
-                                              PN_BINDING_PIXEL_ESTIMATES, PN_BINDING_WAVE_PATHS, PN_BINDING_WAVE_HITS,
-                                              PN_BINDING_WAVE_SHADOWS, PN_BINDING_WAVE_QUEUES, PN_BINDING_WAVE_CONTROL};
+constexpr std::uint32_t kWorkingBindings[] = {PN_BINDING_WAVE_PATHS, PN_BINDING_WAVE_HITS, PN_BINDING_WAVE_SHADOWS,
+                                              PN_BINDING_WAVE_QUEUES, PN_BINDING_WAVE_CONTROL};
 
 std::uint32_t groupsFor(std::uint64_t items) { return std::uint32_t((items + PN_WAVE_GROUP - 1) / PN_WAVE_GROUP); }
 
@@ -43,12 +41,7 @@ WavefrontPass::WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, con
     : ctx_(ctx) {
     const std::vector<std::uint32_t> extra(std::begin(kWorkingBindings), std::end(kWorkingBindings));
     auto make = [&](const char* shader, std::uint32_t variant = 0) {
-        auto pipeline = makeScenePipeline(ctx, shader, scene, frameUniforms, extra, features | variant);
-        pipeline->bind(PN_BINDING_ACCUM, *outputs.accumulation);
-        pipeline->bind(PN_BINDING_COUNTERS, *outputs.counters);
-        pipeline->bind(PN_BINDING_ACTIVE_MASK, *outputs.activeMask);
-        pipeline->bind(PN_BINDING_PIXEL_ESTIMATES, *outputs.pixelEstimates);
-        return pipeline;
+        return makeTracePipeline(ctx, shader, scene, frameUniforms, outputs, extra, features | variant);
     };
     start_ = make("wave_start");
     extend_ = make("wave_extend");

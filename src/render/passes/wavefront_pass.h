@@ -18,17 +18,10 @@
 #include "gpu/pipeline.h"
 #include "gpu/timer.h"
 #include "render/gpu_scene.h"
+#include "render/passes/trace_outputs.h"
 #include "render/passes/trace_tiles.h"
 
 namespace penumbra {
-
-// What the tracing kernels write and obey besides the scene (lib/trace_outputs.glsl).
-struct TraceOutputs {
-    const gpu::Buffer* accumulation;    // vec4 per pixel: the sums
-    const gpu::Buffer* counters;        // RayCounters
-    const gpu::Buffer* activeMask;      // uint per pixel: adaptive sampling's mask
-    const gpu::Buffer* pixelEstimates;  // vec4 per pixel: the shadow-ray roulette's scale
-};
 
 class WavefrontPass {
 public:
