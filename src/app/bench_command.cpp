@@ -136,8 +136,7 @@ void runViewerBenchCommand(const BenchArgs& args) {
     if (args.warmupFrames < 0 || args.warmupFrames > 100000) throw UsageError("--warmup-frames must be within [0, 100000]");
     if (args.spp < 1 || args.spp > 64) throw UsageError("--spp must be between 1 and 64 for --viewer");
     if (args.denoise > 5) throw UsageError("--denoise must be between 0 (off) and 5 passes");
-    if (!(args.shadowRoulette >= 0 && args.shadowRoulette <= 1))
-        throw UsageError("--shadow-roulette must be a share between 0 (off) and 1");
+    validateShadowRouletteShare(args.shadowRoulette);
     o.view.shadowRouletteShare = args.shadowRoulette;
     if (!(args.warmupSeconds >= 0 && args.warmupSeconds <= 60)) throw UsageError("--warmup-seconds must be within [0, 60]");
     if (!args.reference.empty()) {

@@ -20,8 +20,11 @@ void validateSettings(const RenderSettings& s) {
     if (s.maxBounces > kMaxBounces)
         bad("--bounces must be at most " + std::to_string(kMaxBounces) + " (got " + std::to_string(s.maxBounces) + ")");
     if (!(s.time >= 0 && s.time <= kMaxTime)) bad("--time must be a number of seconds between 0 and 1e6");
-    if (!(s.shadowRouletteShare >= 0 && s.shadowRouletteShare <= 1))
-        bad("--shadow-roulette must be a share between 0 (off) and 1");
+    validateShadowRouletteShare(s.shadowRouletteShare);
+}
+
+void validateShadowRouletteShare(float share) {
+    if (!(share >= 0 && share <= 1)) throw UsageError("--shadow-roulette must be a share between 0 (off) and 1");
 }
 
 Accel parseAccel(const std::string& name) {

@@ -59,6 +59,8 @@ inline float textureTime(double sceneSeconds) {
 
 // Throws UsageError naming the bad value and the allowed range.
 void validateSettings(const RenderSettings& settings);
+// The part of it the viewer's settings share (bench --viewer checks it alone).
+void validateShadowRouletteShare(float share);
 
 Accel parseAccel(const std::string& name);  // "bvh" | "brute" | "wide"; UsageError otherwise
 const char* accelName(Accel accel);

@@ -38,8 +38,8 @@ struct ViewSettings {
     // good or better at equal time, but the raw mean can be noisier where textures have detail
     // below a pixel (Freedoom E1M1: +6%), so it is off unless asked for.
     bool shareCameraRays = false;
-    // RenderSettings::shadowRouletteShare: scaled by the history's mean, so it acts once a pixel
-    // has a few samples of history.
+    // RenderSettings::shadowRouletteShare: scaled by the history's mean, so it acts once a pixel's
+    // history holds PN_PIXEL_ESTIMATE_MIN_SAMPLES samples.
     float shadowRouletteShare = kDefaultShadowRouletteShare;
     float resolutionScale = 1.0f;  // render at this fraction of the window, upscaled to it
     bool temporal = true;
