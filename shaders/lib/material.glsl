@@ -18,12 +18,13 @@ BsdfParams materialBsdf(Material m, vec2 uv, bool frontFace) {
         p.roughness *= mr.g;
         p.metallic *= mr.b;
     }
-    p.metallic = clamp(p.metallic, 0.0, 1.0);
+    p.metallic = PN_HAS(PN_FEATURE_GLOSSY) ? clamp(p.metallic, 0.0, 1.0) : 0.0;
     p.roughness = clamp(p.roughness, 0.0, 1.0);
     p.ior = max(m.ior, 1.0);
     p.transmission = PN_HAS(PN_FEATURE_TRANSMISSION) ? clamp(m.transmission, 0.0, 1.0) : 0.0;
-    p.specular = clamp(m.specular, 0.0, 1.0);
+    p.specular = PN_HAS(PN_FEATURE_GLOSSY) ? clamp(m.specular, 0.0, 1.0) : 0.0;
     p.entering = frontFace;
+    p.lambertian = !PN_HAS(PN_FEATURE_GLOSSY) && !PN_HAS(PN_FEATURE_TRANSMISSION);
     if ((m.flags & PN_MATERIAL_ONE_SIDED) != 0u && !frontFace && p.transmission == 0.0) {
         p.baseColor = vec3(0.0);
         p.metallic = 0.0;

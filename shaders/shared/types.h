@@ -98,7 +98,11 @@ using namespace penumbra::gpu_types;
 // sample often carries little (render/kernel_features.h); without it every shadow ray is traced
 // and the pixel estimates are never read, whatever FrameUniforms::shadowRouletteShare says.
 #define PN_FEATURE_SHADOW_ROULETTE 32768u
-#define PN_FEATURE_ALL (0x1fffu | PN_FEATURE_SHADOW_ROULETTE)  // every feature above
+// Materials with a specular lobe: metallic or a coat (glass is PN_FEATURE_TRANSMISSION). Without
+// either, every surface is Lambertian and the BSDF's Fresnel and GGX code is left out
+// (BsdfParams.lambertian, lib/bsdf/bsdf.glsl): a Doom level's or the Cornell box's kernels.
+#define PN_FEATURE_GLOSSY 65536u
+#define PN_FEATURE_ALL (0x1fffu | PN_FEATURE_SHADOW_ROULETTE | PN_FEATURE_GLOSSY)  // every feature above
 // Not a capability but a promise, so not in PN_FEATURE_ALL (which must handle any scene): the
 // scene has exactly one top-level light (a WAD level's torch), whose bound a pick then weighs once.
 #define PN_FEATURE_ONE_TOP_LIGHT 8192u

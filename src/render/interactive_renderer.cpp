@@ -147,6 +147,9 @@ void InteractiveRenderer::setMaterial(std::uint32_t index, const Material& mater
     commands_.run([&](VkCommandBuffer cmd) {
         vkCmdUpdateBuffer(cmd, gpuScene_->materials.get(), VkDeviceSize(index) * sizeof(gm), sizeof(gm), &gm);
     });
+    // A material that is now glass, metal or coated (or no longer the last one) needs kernels
+    // made for that: the ones in use may have left its code out.
+    if (penumbra::kernelFeatures(arrays_, Accel::Bvh) != features_) createPasses();
     historyValid_ = false;
     stillGBuffer_[0] = stillGBuffer_[1] = false;  // the albedo changed
 }

@@ -46,8 +46,9 @@ public:
     // Replaces the scene (moved objects, another file): rebuilds the BVH and every GPU buffer and
     // drops history. A full rebuild: simple, and fast enough for the scenes one edits by hand.
     void rebuildScene(const Scene& scene, bool torchIsLastLight);
-    // Re-uploads one material and drops history. Its emission must be unchanged, because the
-    // light tables weigh emitters by power (an emission edit needs rebuildScene).
+    // Re-uploads one material and drops history, and remakes the kernels if the scene now needs
+    // other ones (a material turned to glass or metal). Its emission must be unchanged, because
+    // the light tables weigh emitters by power (an emission edit needs rebuildScene).
     void setMaterial(std::uint32_t index, const Material& material);
 
     // Moves the instances to where `scene` (the scene loaded, its instances moved: an animation,

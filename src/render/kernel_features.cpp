@@ -21,6 +21,7 @@ std::uint32_t kernelFeatures(const SceneArrays& a, Accel accel) {
         if (m.normalTexture != PN_NO_TEXTURE) f |= PN_FEATURE_NORMAL_MAPS;
         if (m.absorption.x > 0 || m.absorption.y > 0 || m.absorption.z > 0) f |= PN_FEATURE_ABSORPTION;
         if (m.transmission > 0) f |= PN_FEATURE_TRANSMISSION;
+        if (m.metallic > 0 || m.specular > 0) f |= PN_FEATURE_GLOSSY;
         if (m.flags & PN_MATERIAL_SKY_PORTAL) f |= PN_FEATURE_SKY_PORTALS;
     }
     if (a.env.width > 0) f |= PN_FEATURE_ENV_MAP;
@@ -43,7 +44,7 @@ std::string kernelFeatureNames(std::uint32_t features) {
         {PN_FEATURE_SPRITES, "sprites"},         {PN_FEATURE_SKY_PORTALS, "sky-portals"},
         {PN_FEATURE_INSTANCES, "instances"},     {PN_FEATURE_WIDE_BVH, "wide-bvh"},
         {PN_FEATURE_LIGHT_GRID, "light-grid"},   {PN_FEATURE_ONE_TOP_LIGHT, "one-top-light"},
-        {PN_FEATURE_SHADOW_ROULETTE, "shadow-roulette"}};
+        {PN_FEATURE_SHADOW_ROULETTE, "shadow-roulette"}, {PN_FEATURE_GLOSSY, "glossy"}};
     std::string out;
     for (auto [bit, name] : kNames) {
         if (!(features & bit)) continue;

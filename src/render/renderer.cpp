@@ -33,8 +33,8 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
     activeMask_ = gpu::Buffer(ctx, pixels * sizeof(std::uint32_t),
                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                               gpu::MemoryKind::DeviceLocal);
-    trace_ = std::make_unique<TracePass>(ctx, *gpuScene_, frameUniforms_, accumulation_, counters_,
-                                         kernelFeatures(arrays_, settings_.accel), &activeMask_);
+    features_ = penumbra::kernelFeatures(arrays_, settings_.accel);
+    trace_ = std::make_unique<TracePass>(ctx, *gpuScene_, frameUniforms_, accumulation_, counters_, features_, &activeMask_);
     trace_->setPathBudget(settings_.pathsPerDispatch);
     trace_->setSharesCameraRays(settings_.shareCameraRays);
     trace_->reserve(settings_.width, settings_.height, settings_.samplesPerPass);

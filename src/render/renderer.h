@@ -58,6 +58,7 @@ public:
     const GpuScene& gpuScene() const { return *gpuScene_; }
     const RenderSettings& settings() const { return settings_; }
     const gpu::Buffer& frameUniforms() const { return frameUniforms_; }
+    std::uint32_t kernelFeatures() const { return features_; }  // what its kernels were specialised for
 
 private:
     const gpu::Context& ctx_;
@@ -71,6 +72,7 @@ private:
     gpu::Buffer accumulation_;
     gpu::Buffer counters_;
     gpu::Buffer activeMask_;  // uint per pixel (adaptive sampling)
+    std::uint32_t features_ = 0;
     std::unique_ptr<TracePass> trace_;
     gpu::GpuTimer timer_;
     std::uint32_t passesDone_ = 0;

@@ -197,6 +197,43 @@ TEST_F(GpuTest, MetallicRoughnessTextureSelectsTheLobes) {
     }
 }
 
+// A Lambertian material's kernel (made without the glossy lobes and glass: PN_FEATURE_GLOSSY and
+// PN_FEATURE_TRANSMISSION off, BsdfParams.lambertian) takes the diffuse lobe's own code, which
+// must give what the whole mixture's code gives for the same material: f and the pdf for the
+// same directions, and the same samples for the same random numbers, to the last few bits.
+TEST_F(GpuTest, TheLambertianKernelGivesWhatTheWholeMixtureGives) {
+    const Material m = diffuseMaterial(Vec3{0.7f, 0.45f, 0.2f});
+    BsdfKernel lambertian(*ctx, m);
+    BsdfKernel mixture(*ctx, m, {}, PN_FEATURE_ALL);
+    std::vector<shader::BsdfTestQuery> queries;
+    for (float cosO : {1.0f, 0.7f, 0.2f, 0.01f})
+        for (float cosI : {0.9f, 0.5f, 0.05f, -0.3f})
+            for (float phi : {0.0f, 1.3f, 2.9f}) {
+                shader::BsdfTestQuery q{};
+                q.wo = localDirection(cosO, 0.4f);
+                q.wi = localDirection(cosI, phi);
+                q.entering = 1u;
+                queries.push_back(q);
+            }
+    const auto a = lambertian.eval(queries), b = mixture.eval(queries);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_NEAR(a[i].pdf, b[i].pdf, 1e-6f * std::max(1.0f, b[i].pdf)) << "query " << i;
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[i].value[k], b[i].value[k], 1e-6f) << "query " << i;
+    }
+    const auto sa = lambertian.sample(localDirection(0.6f, 0.3f), true, 512, 9);
+    const auto sb = mixture.sample(localDirection(0.6f, 0.3f), true, 512, 9);
+    ASSERT_EQ(sa.size(), sb.size());
+    for (std::size_t i = 0; i < sa.size(); ++i) {
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(sa[i].wi[k], sb[i].wi[k], 1e-6f) << "sample " << i;
+            EXPECT_NEAR(sa[i].value[k], sb[i].value[k], 1e-5f) << "sample " << i;
+        }
+        EXPECT_NEAR(sa[i].pdf, sb[i].pdf, 1e-5f * std::max(1.0f, sb[i].pdf)) << "sample " << i;
+        EXPECT_EQ(sa[i].isDelta, sb[i].isDelta);
+    }
+}
+
 // Beer absorption's coefficient: light that travels the given distance keeps the given colour.
 TEST(Absorption, CoefficientKeepsTheColourAtTheDistance) {
     Material m = glassMaterial(0.0f, 1.5f);

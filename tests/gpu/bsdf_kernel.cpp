@@ -4,11 +4,13 @@
 #include <cstring>
 
 #include "render/frame_uniforms.h"
+#include "render/kernel_features.h"
 #include "render/scene_pipeline.h"
 
 namespace penumbra::test {
 
-BsdfKernel::BsdfKernel(const gpu::Context& ctx, const Material& material, const std::vector<Texture>& textures)
+BsdfKernel::BsdfKernel(const gpu::Context& ctx, const Material& material, const std::vector<Texture>& textures,
+                       std::optional<std::uint32_t> features)
     : ctx_(ctx), commands_(ctx) {
     Scene scene;
     scene.name = "bsdf-test";
@@ -19,7 +21,9 @@ BsdfKernel::BsdfKernel(const gpu::Context& ctx, const Material& material, const 
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     mesh.indices = {0, 1, 2};
     scene.meshes.push_back(mesh);
-    scene_ = std::make_unique<GpuScene>(ctx, commands_, buildSceneArrays(scene));
+    const SceneArrays arrays = buildSceneArrays(scene);
+    features_ = features.value_or(kernelFeatures(arrays, Accel::Bvh));
+    scene_ = std::make_unique<GpuScene>(ctx, commands_, arrays);
 }
 
 BsdfKernel::~BsdfKernel() = default;
@@ -37,7 +41,7 @@ std::vector<shader::BsdfTestResult> BsdfKernel::run(const std::vector<shader::Bs
                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                              gpu::MemoryKind::DeviceLocal);
     auto pipeline =
-        makeScenePipeline(ctx_, "test_bsdf_sample", *scene_, frameBuffer, {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2});
+        makeScenePipeline(ctx_, "test_bsdf_sample", *scene_, frameBuffer, {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2}, features_);
     pipeline->bind(PN_BINDING_SCRATCH, queryBuffer);
     pipeline->bind(PN_BINDING_SCRATCH2, resultBuffer);
     shader::PassPush push{0, mode, count, 0};

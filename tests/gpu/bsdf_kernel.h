@@ -3,7 +3,9 @@
 // material refers to are looked up at uv (0, 0).
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "gpu/commands.h"
@@ -15,8 +17,11 @@ namespace penumbra::test {
 
 class BsdfKernel {
 public:
-    // The material is packed exactly as a render packs it (buildSceneArrays).
-    BsdfKernel(const gpu::Context& ctx, const Material& material, const std::vector<Texture>& textures = {});
+    // The material is packed exactly as a render packs it (buildSceneArrays), and the kernel is
+    // specialised as a render's would be for a scene of that material (render/kernel_features.h),
+    // or for `features` where given (PN_FEATURE_ALL: every lobe's code).
+    BsdfKernel(const gpu::Context& ctx, const Material& material, const std::vector<Texture>& textures = {},
+               std::optional<std::uint32_t> features = std::nullopt);
     ~BsdfKernel();
 
     // count samples for wo (local frame, wo.z > 0); entering: wo is outside the material.
@@ -31,6 +36,7 @@ private:
     const gpu::Context& ctx_;
     gpu::Commands commands_;
     std::unique_ptr<GpuScene> scene_;
+    std::uint32_t features_ = PN_FEATURE_ALL;
 };
 
 // A material with one lobe family, for tests: every field not named here keeps Material{}'s value.

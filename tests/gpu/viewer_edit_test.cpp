@@ -154,6 +154,30 @@ TEST_F(ViewerEditTest, ABlackWallTurnsBlackAndTheMeanRestarts) {
     EXPECT_GT(meanOver(h1, g1, 1), 0.0);  // the sphere still shows
 }
 
+// The scene is Lambertian, so its kernels leave the coat out; a clear coat put on the black wall
+// must bring kernels that have it: a black Lambertian wall would stay exactly black, a coated one
+// reflects the white sky by its Fresnel factor (about 0.04 near normal incidence).
+TEST_F(ViewerEditTest, ACoatOnALambertianSceneBringsKernelsThatHaveIt) {
+    Scene scene = wallAndSphere();
+    InteractiveRenderer viewer(*ctx, scene, false);
+    viewer.resize(kW, kH);
+    EXPECT_EQ(viewer.kernelFeatures() & PN_FEATURE_GLOSSY, 0u);
+    ViewSettings vs;
+    vs.maxBounces = 3;
+    Material coated = scene.materials[0];
+    coated.albedo = Vec3{0};
+    coated.specular = 1;
+    coated.roughness = 0;
+    viewer.setMaterial(0, coated);
+    EXPECT_NE(viewer.kernelFeatures() & PN_FEATURE_GLOSSY, 0u);
+    std::vector<shader::GBufferTexel> g;
+    for (int k = 0; k < 2; ++k) g = renderGBuffer(*ctx, viewer, scene.camera, vs);
+    auto h = gpu::downloadBuffer<shader::HistoryTexel>(*ctx, viewer.commands(), viewer.history(), kW * kH);
+    const double wall = meanOver(h, g, 0);
+    EXPECT_GT(wall, 0.02);
+    EXPECT_LT(wall, 0.1);
+}
+
 bool sameBytes(const std::vector<shader::GBufferTexel>& a, const std::vector<shader::GBufferTexel>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
 }

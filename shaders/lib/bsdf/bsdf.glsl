@@ -26,6 +26,12 @@ struct BsdfParams {
     float transmission;  // [0, 1]
     float specular;      // [0, 1] coat strength
     bool entering;       // wo is outside the material (refraction goes from air into it)
+    // Known to be its diffuse lobe alone (metallic, specular and transmission 0, as in a kernel
+    // made for a scene without metal, coats or glass: lib/material.glsl): eval, pdf and sample
+    // then give exactly what the mixture's code would, its other terms being zero, without its
+    // Fresnel and GGX arithmetic. Set only where the compiler knows it, so that kernels of scenes
+    // with glossy materials carry no extra branch.
+    bool lambertian;
 };
 
 struct BsdfSample {
@@ -56,6 +62,7 @@ vec4 bsdfLobeProbabilities(BsdfParams p, vec3 wo) {
 // f(wo, wi) of the non-delta lobes.
 vec3 bsdfEval(BsdfParams p, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0) return vec3(0.0);
+    if (p.lambertian) return wi.z > 0.0 ? lambertEval(p.baseColor) : vec3(0.0);
     float alpha = bsdfAlpha(p);
     bool isSmooth = bsdfIsSmooth(p);
     float plastic = (1.0 - p.metallic) * (1.0 - p.transmission);
@@ -81,6 +88,7 @@ vec3 bsdfEval(BsdfParams p, vec3 wo, vec3 wi) {
 // Density with which bsdfSample returns wi from a non-delta lobe.
 float bsdfPdf(BsdfParams p, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0) return 0.0;
+    if (p.lambertian) return lambertPdfLocal(wi);
     vec4 prob = bsdfLobeProbabilities(p, wo);
     float pdf = prob.w * lambertPdfLocal(wi);
     if (bsdfIsSmooth(p)) return pdf;
@@ -106,6 +114,7 @@ BsdfSample bsdfFinishSample(BsdfParams p, vec3 wo, vec3 wi) {
 
 BsdfSample bsdfSample(BsdfParams p, vec3 wo, vec3 u) {
     if (wo.z <= 0.0) return bsdfLost();
+    if (p.lambertian) return bsdfFinishSample(p, wo, lambertSampleLocal(u.yz));
     vec4 prob = bsdfLobeProbabilities(p, wo);
     bool isSmooth = bsdfIsSmooth(p);
     float alpha = bsdfAlpha(p);
