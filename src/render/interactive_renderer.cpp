@@ -147,9 +147,9 @@ void InteractiveRenderer::setMaterial(std::uint32_t index, const Material& mater
     commands_.run([&](VkCommandBuffer cmd) {
         vkCmdUpdateBuffer(cmd, gpuScene_->materials.get(), VkDeviceSize(index) * sizeof(gm), sizeof(gm), &gm);
     });
-    // A material that is now glass, metal or coated (or no longer the last one) needs kernels
-    // made for that: the ones in use may have left its code out.
-    if (penumbra::kernelFeatures(arrays_, Accel::Bvh) != features_) createPasses();
+    // A material now glass, metal or coated needs kernels made for that: the ones in use may have
+    // left its code out (and the last such material turned matte lets the kernels leave it out).
+    if (sceneKernelFeatures() != features_) createPasses();
     historyValid_ = false;
     stillGBuffer_[0] = stillGBuffer_[1] = false;  // the albedo changed
 }
@@ -233,9 +233,11 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
     previousFrame_.reset();
 }
 
+std::uint32_t InteractiveRenderer::sceneKernelFeatures() const { return penumbra::kernelFeatures(arrays_, Accel::Bvh); }
+
 void InteractiveRenderer::createPasses() {
     stillGBuffer_[0] = stillGBuffer_[1] = false;  // new buffers, or a new scene in them
-    features_ = penumbra::kernelFeatures(arrays_, Accel::Bvh);
+    features_ = sceneKernelFeatures();
     trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, features_);
     trace_->setReplacesAccumulation(true);  // one pass per frame: no clear before it
     trace_->setPixelEstimates(&pixelEstimates_);  // the temporal pass's, for the shadow-ray roulette

@@ -97,6 +97,8 @@ public:
 private:
     void loadScene(const Scene& scene, SceneArrays arrays, bool torchIsLastLight);
     void createPasses();
+    // The kernel features the scene needs as it stands (the viewer always walks the binary BVH).
+    std::uint32_t sceneKernelFeatures() const;
     // Sends moved instances, the rebuilt top level and the previous frame's instances up before
     // this frame's passes; `moved`: the instances differ from the last frame's.
     void uploadInstances(VkCommandBuffer cmd, bool moved);
