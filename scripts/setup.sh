@@ -19,6 +19,9 @@ packages=(
   libopenmpi-dev openmpi-bin                    # render across ranks under mpirun (docs/DISTRIBUTED.md)
   clang libclang-rt-14-dev                      # libFuzzer targets (tests/fuzz)
   freedoom glmark2-data assimp-testmodels       # real scenes the tests load (never committed)
+  libturbojpeg0-dev libboost-dev                # penumbra serve: JPEG frames, HTTP + WebSocket (Boost.Beast)
+  chromium                                      # the browser tests of penumbra serve (tests/browser)
+  ccache                                        # compiler cache for CI's two builds (.ci/run)
 )
 
 missing=()

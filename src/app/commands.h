@@ -14,6 +14,7 @@ void registerInfo(CLI::App& app, Action& action);
 void registerBench(CLI::App& app, Action& action);
 void registerExport(CLI::App& app, Action& action);
 void registerCompare(CLI::App& app, Action& action);
+void registerServe(CLI::App& app, Action& action);
 #ifdef PENUMBRA_HAVE_VIEWER
 void registerView(CLI::App& app, Action& action);
 #endif

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     penumbra::app::registerBench(app, action);
     penumbra::app::registerExport(app, action);
     penumbra::app::registerCompare(app, action);
+    penumbra::app::registerServe(app, action);
 #ifdef PENUMBRA_HAVE_VIEWER
     penumbra::app::registerView(app, action);
 #endif

@@ -30,7 +30,10 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
     VkMemoryPropertyFlags wanted = kind == MemoryKind::DeviceLocal
                                        ? VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT
                                        : VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    std::uint32_t type = ctx.findMemoryType(req.memoryTypeBits, wanted);
+    std::uint32_t type = UINT32_MAX;
+    if (kind == MemoryKind::HostReadback)
+        type = ctx.findMemoryType(req.memoryTypeBits, wanted | VK_MEMORY_PROPERTY_HOST_CACHED_BIT);
+    if (type == UINT32_MAX) type = ctx.findMemoryType(req.memoryTypeBits, wanted);
     if (type == UINT32_MAX && kind == MemoryKind::DeviceLocal) type = ctx.findMemoryType(req.memoryTypeBits, 0);
     if (type == UINT32_MAX) throw Error("the GPU offers no memory type for a buffer of " + std::to_string(size_) + " bytes");
 
@@ -41,7 +44,7 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
     PN_VK(vkAllocateMemory(device, &alloc, nullptr, &memory));
     memory_ = MemoryHandle(device, memory);
     PN_VK(vkBindBufferMemory(device, buffer, memory, 0));
-    if (kind == MemoryKind::HostVisible) PN_VK(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mapped_));
+    if (kind != MemoryKind::DeviceLocal) PN_VK(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mapped_));
     tally_ = BufferTally(req.size);
 }
 

@@ -14,7 +14,10 @@ namespace penumbra::gpu {
 
 class Commands;
 
-enum class MemoryKind { DeviceLocal, HostVisible };
+// HostReadback: host-visible memory the CPU reads often (frames streamed to a browser): cached
+// where the device offers it, since reads from uncached, write-combined memory are many times
+// slower; coherent like HostVisible.
+enum class MemoryKind { DeviceLocal, HostVisible, HostReadback };
 
 class Buffer {
 public:

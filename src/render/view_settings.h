@@ -2,6 +2,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <utility>
 
 #include "core/vec.h"
 #include "render/settings.h"
@@ -24,6 +28,11 @@ enum class DebugView : std::uint32_t {
     LeafDepth = PN_DEBUG_LEAF_DEPTH,
     LeafTriangles = PN_DEBUG_LEAF_TRIS,
 };
+
+// The debug views by the names --debug and the browser's panel give them, "none" first.
+std::span<const std::pair<const char*, DebugView>> debugViewNames();
+std::optional<DebugView> debugViewFromName(std::string_view name);
+const char* debugViewName(DebugView view);
 
 struct ViewSettings {
     std::uint32_t samplesPerFrame = 1;

@@ -178,6 +178,8 @@ struct Camera {
     float fovYDegrees = 40.0f;    // vertical field of view
     float apertureRadius = 0.0f;  // thin-lens radius in metres; 0 is a pinhole
     float focusDistance = 0.0f;   // metres along the view direction to the sharp plane; 0: the look-at distance
+
+    bool operator==(const Camera&) const = default;
 };
 
 // A camera path (scene files' "camera_path", docs/SCENES.md): keyframes the camera passes
@@ -219,7 +221,7 @@ struct Instance {
 };
 
 // A level made of square tiles, walked one tile at a time (the dungeon preset; the viewer's grid
-// movement, app/viewer/grid_walk.h). Tile (x, z) covers [origin + (x, z) * tileSize, + tileSize).
+// movement, interact/grid_walk.h). Tile (x, z) covers [origin + (x, z) * tileSize, + tileSize).
 struct TileGrid {
     float tileSize = 2.0f;  // metres
     Vec3 origin{0};         // the corner of tile (0, 0) with the least x and z, at floor height

@@ -12,11 +12,10 @@
 #include <optional>
 
 #include "app/scene_opener.h"
-#include "app/viewer/camera_controller.h"
-#include "app/viewer/controls.h"
+#include "interact/controls.h"
 #include "app/viewer/edit_panel.h"
-#include "app/viewer/grid_walk.h"
-#include "app/viewer/object_drag.h"
+#include "interact/navigation.h"
+#include "interact/object_drag.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/screenshot.h"
 #include "app/viewer/ui_panel.h"
@@ -29,9 +28,6 @@
 
 namespace penumbra::viewer {
 namespace {
-
-// The panel's line after an instance is selected (docs/VIEWER.md, Controls).
-constexpr const char* kInstanceControls = ": drag it (Shift+drag turns it), or I/K J/L O/U move it, comma/period turn it";
 
 // The pointer between frames: right-button drag, the captured pointer, and left clicks.
 struct PointerState {
@@ -54,18 +50,6 @@ struct LeftButton {
     std::optional<Click> press, click;
 };
 
-float cameraSpeedFor(const Scene& scene) {
-    const Aabb bounds = scene.bounds();
-    const float sceneSize = bounds.empty() ? 1.0f : length(bounds.extent());
-    return std::max(0.1f, 0.1f * sceneSize);
-}
-
-CameraController makeController(const Scene& scene, bool fly) {
-    CameraController controller(scene.camera, cameraSpeedFor(scene), scene.walkMap);
-    if (fly) controller.setWalking(false);
-    return controller;
-}
-
 void select(const Scene& scene, std::uint32_t object, EditState& edit) {
     edit.object = object;
     if (object == kNoObject) return;
@@ -77,28 +61,12 @@ void select(const Scene& scene, std::uint32_t object, EditState& edit) {
 
 // Applies the panel's edits to the scene and the renderer. Failures go to the panel as one line.
 void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& settings, EditState& edit,
-                const EditRequests& requests, CameraController& controller, PanelState& panel);
+                const EditRequests& requests, Navigation& nav, PanelState& panel);
 
 bool imguiWantsMouse() { return ImGui::GetIO().WantCaptureMouse; }
 bool imguiWantsKeyboard() { return ImGui::GetIO().WantCaptureKeyboard; }
 
 InputState* inputOf(GLFWwindow* w) { return static_cast<InputState*>(glfwGetWindowUserPointer(w)); }
-
-// What the scene decides of the view. The torch: attached as the scene's last punctual light so
-// the renderer can move it; when the scene did not ask for one it starts switched off. Russian
-// roulette: from the bounce the scene asks for, if any.
-void prepareSceneSettings(Scene& scene, ViewSettings& settings) {
-    settings.torch = scene.torch.enabled && scene.torch.intensity > 0;
-    if (!settings.torch) {
-        scene.torch.enabled = true;
-        if (!(scene.torch.intensity > 0)) scene.torch.intensity = Torch{}.intensity;
-        attachTorch(scene);
-    }
-    settings.torchColor = scene.torch.color;
-    settings.torchIntensity = scene.torch.intensity;
-    settings.torchRange = scene.torch.range;
-    settings.rouletteStart = scene.viewerRouletteStart.value_or(ViewSettings{}.rouletteStart);
-}
 
 std::string defaultScreenshotPath() {
     char name[64];
@@ -177,58 +145,28 @@ void grabSelection(GLFWwindow* w, const Click& press, PointerState& pointer, con
                    const InteractiveRenderer& renderer, const Camera& camera, std::uint32_t selectedInstance) {
     int ww = 0, wh = 0;
     glfwGetWindowSize(w, &ww, &wh);
-    if (selectedInstance >= scene.instances.size() || ww <= 0 || wh <= 0) return;
-    const Pick pick = pickPixel(renderer.sceneArrays(), camera, std::uint32_t(ww), std::uint32_t(wh), float(press.x),
-                                float(press.y));
-    if (pick.instance != selectedInstance) return;
-    const Instance& instance = scene.instances[selectedInstance];
-    pointer.drag = startObjectDrag(selectedInstance, instance.transform, camera, std::uint32_t(ww),
-                                   std::uint32_t(wh), float(press.x), float(press.y), pick.depth);
+    if (ww <= 0 || wh <= 0) return;
     const bool shift =
         glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
-    if (pointer.drag && shift) {
-        pointer.drag->turning = true;
-        pointer.drag->turnedAtX = float(press.x);
-        pointer.drag->centreLocal = prototypeCentre(scene, instance.prototype);
-    }
+    pointer.drag = grabInstance(scene, renderer.sceneArrays(), camera, std::uint32_t(ww), std::uint32_t(wh),
+                                float(press.x), float(press.y), selectedInstance, shift);
 }
 
-// Turns a grabbed instance (a Shift drag) by the cursor's horizontal motion since it was last
-// turned; true when it turned.
-bool turnSelection(int windowWidth, PointerState& pointer, Scene& scene) {
-    ObjectDrag& drag = *pointer.drag;
-    const float dx = float(pointer.lastX) - drag.turnedAtX;
-    if (dx == 0) return false;
-    drag.turnedAtX = float(pointer.lastX);
-    const InstanceTurn turn = turnAboutCentre(scene.instances[drag.instance].transform, drag.centreLocal,
-                                              dragTurnDegrees(dx, std::uint32_t(windowWidth)));
-    moveInstance(scene, drag.instance, turn.offset, turn.yawDegrees);
-    return true;
-}
-
-// Moves a grabbed instance so the grabbed point is under the cursor again (or turns it, when the
-// drag turns); true when it moved.
+// Moves (or turns) a grabbed instance as the cursor moved; true when it moved.
 bool dragSelection(GLFWwindow* w, PointerState& pointer, Scene& scene, const Camera& camera) {
-    if (!pointer.drag || pointer.drag->instance >= scene.instances.size()) return false;
+    if (!pointer.drag) return false;
     int ww = 0, wh = 0;
     glfwGetWindowSize(w, &ww, &wh);
     if (ww <= 0 || wh <= 0) return false;
-    if (pointer.drag->turning) return turnSelection(ww, pointer, scene);
-    const Vec3 grabbed = scene.instances[pointer.drag->instance].transform.point(pointer.drag->grabbedLocal);
-    const Vec3 offset = dragOffset(camera, std::uint32_t(ww), std::uint32_t(wh), grabbed, float(pointer.lastX),
-                                   float(pointer.lastY));
-    // Rounding leaves a still cursor a tiny offset: below a hundredth of a pixel, nothing moved
-    // (a move would restart a paused viewer's accumulation every frame).
-    if (!(length(offset) > 1e-5f * length(grabbed - camera.position))) return false;
-    moveInstance(scene, pointer.drag->instance, offset, 0.0f);
-    return true;
+    return followCursor(*pointer.drag, scene, camera, std::uint32_t(ww), std::uint32_t(wh), float(pointer.lastX),
+                        float(pointer.lastY));
 }
 
 // A click sets the focus (when asked), captures the pointer while walking, or selects.
 void handleClick(GLFWwindow* w, const Click& click, PointerState& pointer, const Scene& scene,
-                 const InteractiveRenderer& renderer, const CameraController& controller, const Camera& camera,
+                 const InteractiveRenderer& renderer, const Navigation& nav, const Camera& camera,
                  ViewSettings& settings, EditState& edit, std::uint32_t& selectedInstance, PanelState& panel) {
-    if (controller.walking() && !edit.focusOnClick) {
+    if (nav.walking() && !edit.focusOnClick) {
         setCaptured(w, pointer, true);
         return;
     }
@@ -249,47 +187,19 @@ void handleClick(GLFWwindow* w, const Click& click, PointerState& pointer, const
     }
 }
 
-// Moves the selected instance as the held keys ask, along the camera's horizontal directions;
-// true when it moved.
-bool moveSelectedInstance(Scene& scene, std::uint32_t instance, const ObjectInput& in, const Camera& camera,
-                          float speed, float seconds) {
-    if (instance >= scene.instances.size() || !in.any() || !(seconds > 0)) return false;
-    Vec3 forward = camera.lookAt - camera.position;
-    forward.y = 0;
-    forward = length(forward) > 0 ? normalize(forward) : Vec3{0, 0, -1};
-    const Vec3 right{-forward.z, 0, forward.x};
-    const Vec3 offset = (forward * in.forward + right * in.right + Vec3{0, in.up, 0}) * (speed * seconds);
-    moveInstance(scene, instance, offset, in.turn * 90.0f * seconds);  // a quarter turn per second
-    return true;
-}
-
-void toggleWalking(CameraController& controller, PanelState& panel) {
-    if (controller.walking()) {
-        controller.setWalking(false);
-        panel.message = "free flight (F walks again)";
-    } else if (!controller.canWalk()) {
-        panel.message = "only Doom levels can be walked; this scene is flown";
-    } else if (controller.setWalking(true)) {
-        panel.message = "walking (F flies)";
-    } else {
-        panel.message = "cannot walk here: the player does not fit (inside a wall, outside the map or too low a room)";
-    }
-}
-
 // The keys pressed (and the wheel turned) since the last frame, and the panel's buttons.
-void handlePresses(const InputState& input, GLFWwindow* w, PointerState& pointer, CameraController& controller,
+void handlePresses(InputState& input, GLFWwindow* w, PointerState& pointer, Navigation& nav, const Scene& scene,
                    PanelState& panel) {
     if (input.pauseToggled) panel.playing = !panel.playing;
-    if (input.resetCamera || panel.resetCamera) controller.reset();
+    input.resetCamera = input.resetCamera || panel.resetCamera;
     panel.resetCamera = false;
     if (input.screenshot) panel.screenshotRequested = true;
-    if (input.walkToggled) toggleWalking(controller, panel);
+    if (std::string message = nav.handlePresses(input, scene); !message.empty()) panel.message = message;
     if (input.panelToggled) panel.visible = !panel.visible;
     if (input.escape) {  // releases the captured mouse first; quits only when it is free
         if (pointer.captured) setCaptured(w, pointer, false);
         else glfwSetWindowShouldClose(w, GLFW_TRUE);
     }
-    if (input.scroll != 0) controller.scaleSpeed(std::pow(1.25f, input.scroll));
 }
 
 bool sameCamera(const Camera& a, const Camera& b) {
@@ -310,9 +220,7 @@ struct ShownFrame {
 
 // What the frame loop carries from one frame to the next, besides the scene and its settings.
 struct LoopState {
-    CameraController controller;
-    // Tile-map levels start in grid movement (G switches to free flight and back).
-    std::unique_ptr<GridWalker> grid;  // not std::optional: GCC 12 warns of it being maybe uninitialized
+    Navigation nav;
     std::uint32_t selectedInstance = kNoObject;  // N cycles through the instances; a click picks one
     InputState input;
     PointerState pointer;
@@ -327,8 +235,7 @@ struct LoopState {
     double animationClock = 0;  // seconds played: the moment animated textures show
 
     LoopState(const Scene& scene, const ViewerOptions& options, const InteractiveRenderer& renderer)
-        : controller(makeController(scene, options.fly)) {
-        if (scene.tileGrid && !options.fly) grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
+        : nav(scene, options.fly) {
         if (options.script) script.emplace(*options.script);
         panel.sceneName = scene.name;
         panel.vsync = options.vsync;
@@ -338,23 +245,8 @@ struct LoopState {
         panel.bvhDepth = bvh::treeDepth(renderer.sceneArrays().nodes);
         panel.hasTorch = renderer.hasTorch();
     }
-    Camera camera() const { return grid ? grid->camera() : controller.camera(); }
+    Camera camera() const { return nav.camera(); }
 };
-
-// G: grid movement on a tile-map level, or free flight from where the grid walker stands.
-void toggleGrid(LoopState& loop, const Scene& scene) {
-    if (loop.grid) {
-        loop.controller = CameraController(loop.grid->camera(), cameraSpeedFor(scene), scene.walkMap);
-        loop.controller.setWalking(false);
-        loop.grid.reset();
-        loop.panel.message = "free flight (G: grid movement)";
-    } else if (scene.tileGrid) {
-        loop.grid = std::make_unique<GridWalker>(*scene.tileGrid, loop.controller.camera());
-        loop.panel.message = "grid movement (G: free flight)";
-    } else {
-        loop.panel.message = "grid movement needs a tile-map level (the dungeon)";
-    }
-}
 
 // This frame's input (keys, pointer, script) moves the camera, the selected instance and the
 // animation clock.
@@ -362,11 +254,7 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
                 ViewSettings& settings, float step, bool automationDone) {
     const bool advancing = loop.panel.playing && !automationDone;
     if (loop.script && advancing) loop.script->playFrame(loop.input, step);
-    const bool resetAsked = loop.input.resetCamera || loop.panel.resetCamera;
-    handlePresses(loop.input, w, loop.pointer, loop.controller, loop.panel);
-    if (loop.grid && resetAsked)  // R: back to the start tile
-        loop.grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
-    if (loop.input.gridToggled) toggleGrid(loop, scene);
+    handlePresses(loop.input, w, loop.pointer, loop.nav, scene, loop.panel);
     if (loop.input.nextInstance && !scene.instances.empty()) {
         loop.selectedInstance = loop.selectedInstance + 1 < scene.instances.size() ? loop.selectedInstance + 1 : 0;
         loop.panel.message = instanceName(scene, loop.selectedInstance) + kInstanceControls;
@@ -374,17 +262,16 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     const LeftButton left = trackPointer(w, loop.pointer, loop.input, ui.wantsMouse());
     if (left.press) grabSelection(w, *left.press, loop.pointer, scene, renderer, loop.camera(), loop.selectedInstance);
     if (left.click)
-        handleClick(w, *left.click, loop.pointer, scene, renderer, loop.controller, loop.camera(), settings, loop.edit,
+        handleClick(w, *left.click, loop.pointer, scene, renderer, loop.nav, loop.camera(), settings, loop.edit,
                     loop.selectedInstance, loop.panel);
     // The selected instance moves with its keys, paused or playing; only the top level changes.
     bool instancesMoved = !automationDone && moveSelectedInstance(scene, loop.selectedInstance,
                                                                   objectInputFrom(loop.input), loop.camera(),
-                                                                  loop.controller.speed(), step);
+                                                                  loop.nav.speed(), step);
     // Paused, the camera stays where the shown frame was taken, and animated textures hold
     // their frame; playing, they run at the game's rate in simulated time (--fixed-dt too).
     if (advancing) {
-        if (loop.grid) loop.grid->update(cameraInputFrom(loop.input), step);
-        else loop.controller.update(cameraInputFrom(loop.input), step);
+        loop.nav.update(cameraInputFrom(loop.input), step);
         loop.animationClock += step;
         settings.time = float(loop.animationClock);
         // Animated instances (glTF animations, scene-file motions) follow the clock.
@@ -407,18 +294,16 @@ void drawUi(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, UiLaye
             float dt) {
     ui.newFrame();
     PanelState& panel = loop.panel;
-    panel.cameraSpeed = loop.controller.speed();
-    panel.walking = loop.controller.walking();
-    panel.canWalk = loop.controller.canWalk();
+    panel.cameraSpeed = loop.nav.speed();
+    panel.walking = loop.nav.walking();
+    panel.canWalk = loop.nav.canWalk();
     panel.pointerCaptured = loop.pointer.captured;
     if (dt > 0) loop.fpsSmoothed = loop.fpsSmoothed == 0 ? 1.0 / dt : 0.9 * loop.fpsSmoothed + 0.1 / dt;
     panel.fps = loop.fpsSmoothed;
     EditRequests requests;
     if (panel.visible) ui.drawPanel(settings, panel, renderer.stats(), loop.edit, requests);
-    applyEdits(scene, renderer, settings, loop.edit, requests, loop.controller, panel);
-    if (requests.openScene) {  // the new scene's own movement mode, nothing selected
-        loop.grid.reset();
-        if (scene.tileGrid) loop.grid = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
+    applyEdits(scene, renderer, settings, loop.edit, requests, loop.nav, panel);
+    if (requests.openScene) {  // nothing selected in the new scene
         loop.selectedInstance = kNoObject;
         loop.pointer.drag.reset();
     }
@@ -473,13 +358,7 @@ void renderOrShow(LoopState& loop, VkCommandBuffer cmd, InteractiveRenderer& ren
 }  // namespace
 
 DebugView parseDebugView(const std::string& name) {
-    const std::pair<const char*, DebugView> views[] = {
-        {"none", DebugView::None},     {"normals", DebugView::Normals}, {"albedo", DebugView::Albedo},
-        {"depth", DebugView::Depth},   {"motion", DebugView::Motion},   {"samples", DebugView::Samples},
-        {"nodes", DebugView::HeatNodes}, {"triangles", DebugView::HeatTriangles}, {"boxes", DebugView::BvhBoxes},
-        {"leaf-depth", DebugView::LeafDepth}, {"leaf-triangles", DebugView::LeafTriangles}};
-    for (const auto& [n, v] : views)
-        if (name == n) return v;
+    if (std::optional<DebugView> view = debugViewFromName(name)) return *view;
     throw UsageError("--debug must be one of none, normals, albedo, depth, motion, samples, nodes, triangles, boxes, leaf-depth, leaf-triangles (got '" +
                      name + "')");
 }
@@ -556,7 +435,7 @@ namespace penumbra::viewer {
 namespace {
 
 void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& settings, EditState& edit,
-                const EditRequests& requests, CameraController& controller, PanelState& panel) {
+                const EditRequests& requests, Navigation& nav, PanelState& panel) {
     if (requests.clearSelection) edit.object = kNoObject;
     try {
         if (requests.materialChanged && edit.materialIndex < scene.materials.size()) {
@@ -590,7 +469,7 @@ void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& setti
             settings = nextSettings;
             settings.apertureRadius = scene.camera.apertureRadius;
             settings.focusDistance = scene.camera.focusDistance;
-            controller = makeController(scene, false);
+            nav = Navigation(scene, false);  // the new scene's own movement mode
             edit.object = kNoObject;
             edit.openMessage.clear();
             panel.sceneName = scene.name;

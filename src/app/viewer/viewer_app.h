@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "app/viewer/input_script.h"
+#include "interact/input_script.h"
 #include "render/view_settings.h"
 #include "scene/scene.h"
 

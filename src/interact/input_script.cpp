@@ -1,4 +1,4 @@
-#include "app/viewer/input_script.h"
+#include "interact/input_script.h"
 
 #include <GLFW/glfw3.h>
 

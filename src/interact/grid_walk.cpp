@@ -1,4 +1,4 @@
-#include "app/viewer/grid_walk.h"
+#include "interact/grid_walk.h"
 
 #include <cmath>
 #include <limits>

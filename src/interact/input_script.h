@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "app/viewer/controls.h"
+#include "interact/controls.h"
 
 namespace penumbra::viewer {
 

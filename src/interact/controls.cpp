@@ -1,4 +1,4 @@
-#include "app/viewer/controls.h"
+#include "interact/controls.h"
 
 #include <GLFW/glfw3.h>
 

@@ -1,4 +1,4 @@
-#include "app/viewer/camera_controller.h"
+#include "interact/camera_controller.h"
 
 #include <algorithm>
 #include <cmath>

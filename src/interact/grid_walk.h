@@ -4,7 +4,7 @@
 // here (the app feeds it input), so it is testable without a window.
 #pragma once
 
-#include "app/viewer/camera_controller.h"
+#include "interact/camera_controller.h"
 #include "scene/scene.h"
 
 namespace penumbra::viewer {

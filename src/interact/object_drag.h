@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/transform.h"
+#include "render/scene_arrays.h"
 #include "scene/scene.h"
 
 namespace penumbra::viewer {
@@ -53,5 +54,17 @@ InstanceTurn turnAboutCentre(const Affine& objectToWorld, Vec3 centreLocal, floa
 // The centre of a prototype's bounding box in object space (the origin for an empty one): what a
 // turning drag turns about.
 Vec3 prototypeCentre(const Scene& scene, std::uint32_t prototype);
+
+// A left press at (x, y) of a width x height view: grabs `selected` when it is the instance
+// under the cursor (the CPU pick a click makes), to move it or, `turning`, to turn it.
+std::optional<ObjectDrag> grabInstance(const Scene& scene, const SceneArrays& arrays, const Camera& camera,
+                                       std::uint32_t width, std::uint32_t height, float x, float y,
+                                       std::uint32_t selected, bool turning);
+
+// The cursor at (x, y) during a drag: moves the grabbed instance so the grabbed point is under
+// the cursor again, or turns it by the cursor's horizontal motion since it last turned. True
+// when the instance moved.
+bool followCursor(ObjectDrag& drag, Scene& scene, const Camera& camera, std::uint32_t width, std::uint32_t height,
+                  float x, float y);
 
 }  // namespace penumbra::viewer

@@ -1,7 +1,8 @@
-#include "app/viewer/object_drag.h"
+#include "interact/object_drag.h"
 
 #include "core/aabb.h"
 #include "render/scene_objects.h"
+#include "scene/objects.h"
 
 namespace penumbra::viewer {
 namespace {
@@ -46,6 +47,49 @@ Vec3 prototypeCentre(const Scene& scene, std::uint32_t prototype) {
     for (const Mesh& mesh : scene.prototypes[prototype].meshes)
         for (const Vec3& p : mesh.positions) box.grow(p);
     return box.empty() ? Vec3{0} : (box.lo + box.hi) * 0.5f;
+}
+
+std::optional<ObjectDrag> grabInstance(const Scene& scene, const SceneArrays& arrays, const Camera& camera,
+                                       std::uint32_t width, std::uint32_t height, float x, float y,
+                                       std::uint32_t selected, bool turning) {
+    if (selected >= scene.instances.size() || width == 0 || height == 0) return std::nullopt;
+    const Pick pick = pickPixel(arrays, camera, width, height, x, y);
+    if (pick.instance != selected) return std::nullopt;
+    const Instance& instance = scene.instances[selected];
+    std::optional<ObjectDrag> drag = startObjectDrag(selected, instance.transform, camera, width, height, x, y, pick.depth);
+    if (drag && turning) {
+        drag->turning = true;
+        drag->turnedAtX = x;
+        drag->centreLocal = prototypeCentre(scene, instance.prototype);
+    }
+    return drag;
+}
+
+namespace {
+
+bool turnGrabbed(ObjectDrag& drag, Scene& scene, std::uint32_t width, float x) {
+    const float dx = x - drag.turnedAtX;
+    if (dx == 0) return false;
+    drag.turnedAtX = x;
+    const InstanceTurn turn = turnAboutCentre(scene.instances[drag.instance].transform, drag.centreLocal,
+                                              dragTurnDegrees(dx, width));
+    moveInstance(scene, drag.instance, turn.offset, turn.yawDegrees);
+    return true;
+}
+
+}  // namespace
+
+bool followCursor(ObjectDrag& drag, Scene& scene, const Camera& camera, std::uint32_t width, std::uint32_t height,
+                  float x, float y) {
+    if (drag.instance >= scene.instances.size() || width == 0 || height == 0) return false;
+    if (drag.turning) return turnGrabbed(drag, scene, width, x);
+    const Vec3 grabbed = scene.instances[drag.instance].transform.point(drag.grabbedLocal);
+    const Vec3 offset = dragOffset(camera, width, height, grabbed, x, y);
+    // Rounding leaves a still cursor a tiny offset: below a hundredth of a pixel, nothing moved
+    // (a move would restart a paused viewer's accumulation every frame).
+    if (!(length(offset) > 1e-5f * length(grabbed - camera.position))) return false;
+    moveInstance(scene, drag.instance, offset, 0.0f);
+    return true;
 }
 
 }  // namespace penumbra::viewer

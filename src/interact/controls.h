@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "app/viewer/camera_controller.h"
+#include "interact/camera_controller.h"
 
 namespace penumbra::viewer {
 

@@ -1,0 +1,62 @@
+// How the viewer's camera moves, for every front end (the window, the browser): free flight or
+// walking (CameraController), or grid steps on a tile-map level (GridWalker); the keys that switch
+// between them; and the keys that move the selected instance. No window, no GPU, no network.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "interact/camera_controller.h"
+#include "interact/controls.h"
+#include "interact/grid_walk.h"
+#include "render/view_settings.h"
+#include "scene/scene.h"
+
+namespace penumbra::viewer {
+
+// Flight speed for a scene: a tenth of its size per second.
+float cameraSpeedFor(const Scene& scene);
+
+class Navigation {
+public:
+    // Doom levels start walking (unless fly), tile maps in grid movement, others in flight.
+    Navigation(const Scene& scene, bool fly);
+
+    Camera camera() const { return grid_ ? grid_->camera() : controller_.camera(); }
+    // Moves by the held keys and the look motion over `seconds`.
+    void update(const CameraInput& input, float seconds);
+    // The frame's presses: R resets, F walks or flies, G grid movement, the wheel flight speed.
+    // Returns the line to show the user ("" when nothing needs saying).
+    std::string handlePresses(const InputState& input, const Scene& scene);
+
+    bool walking() const { return !grid_ && controller_.walking(); }
+    bool canWalk() const { return controller_.canWalk(); }
+    bool gridMoving() const { return grid_ != nullptr; }
+    float speed() const { return controller_.speed(); }
+    CameraController& controller() { return controller_; }
+
+private:
+    std::string toggleWalking();
+    std::string toggleGrid(const Scene& scene);
+
+    CameraController controller_;
+    // Not std::optional: GCC 12 warns of it being maybe uninitialized.
+    std::unique_ptr<GridWalker> grid_;
+};
+
+// What the scene decides of the view. The torch: attached as the scene's last punctual light so
+// the renderer can move it; when the scene did not ask for one it starts switched off. Russian
+// roulette: from the bounce the scene asks for, if any.
+void prepareSceneSettings(Scene& scene, ViewSettings& settings);
+
+// The panel's line after an instance is selected (docs/VIEWER.md, Controls).
+inline constexpr const char* kInstanceControls =
+    ": drag it (Shift+drag turns it), or I/K J/L O/U move it, comma/period turn it";
+
+// Moves the selected instance as the held keys ask, along the camera's horizontal directions;
+// true when it moved.
+bool moveSelectedInstance(Scene& scene, std::uint32_t instance, const ObjectInput& in, const Camera& camera,
+                          float speed, float seconds);
+
+}  // namespace penumbra::viewer

@@ -1,0 +1,112 @@
+#include "serve/frame_encoder.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "core/log.h"
+#include "serve/jpeg_encoder.h"
+
+namespace penumbra::serve {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::int64_t nowNs() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
+}
+
+// Strips of whole 16-row blocks (a 4:2:0 JPEG's unit), as even as that allows.
+std::vector<Strip> stripLayout(std::uint32_t height, int count) {
+    const std::uint32_t blocks = (height + 15) / 16;
+    const std::uint32_t n = std::clamp<std::uint32_t>(std::uint32_t(count), 1, std::max(1u, blocks));
+    std::vector<Strip> strips(n);
+    std::uint32_t y = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const std::uint32_t end = std::min(height, (blocks * (i + 1) / n) * 16);
+        strips[i].y = std::uint16_t(y);
+        strips[i].rows = std::uint16_t(end - y);
+        y = end;
+    }
+    return strips;
+}
+
+}  // namespace
+
+struct FrameEncoder::Workers {
+    // The arena takes no more threads than the machine runs at once (TBB warns of more); the
+    // strips stay as many as asked, so the pictures are the same on any machine.
+    explicit Workers(int threads)
+        : arena(std::min(threads, tbb::this_task_arena::max_concurrency())), encoders(std::size_t(threads)) {}
+    tbb::task_arena arena;
+    std::vector<JpegEncoder> encoders;  // one per strip slot; a strip index picks its encoder
+};
+
+FrameEncoder::FrameEncoder(FrameReadback& readback, const EncodeOptions& options, Deliver deliver)
+    : readback_(readback), options_(options), deliver_(std::move(deliver)),
+      workers_(std::make_unique<Workers>(std::max(1, options.threads))) {
+    thread_ = std::thread([this] { run(); });
+}
+
+FrameEncoder::~FrameEncoder() {
+    stop_ = true;
+    readback_.notify();
+    thread_.join();
+}
+
+bool FrameEncoder::wantsFrame(double frameSeconds) const {
+    return nowNs() + std::int64_t(frameSeconds * 1e9) >= nextDueNs_.load();
+}
+
+void FrameEncoder::run() {
+    const std::int64_t interval = options_.maxFps > 0 ? std::int64_t(1e9 / options_.maxFps) : 0;
+    while (ReadbackSlot* slot = readback_.take(stop_)) {
+        std::shared_ptr<EncodedFrame> frame;
+        try {
+            frame = encode(*slot);
+        } catch (const std::exception& e) {
+            logWarning(std::string("frame not sent: ") + e.what());
+        }
+        readback_.release(slot);
+        if (frame) deliver_(std::move(frame));
+        // Pace: the next frame no sooner than one interval after this one started going out.
+        const std::int64_t due = nowNs() + interval;
+        nextDueNs_ = due;
+        while (!stop_ && nowNs() < due)
+            std::this_thread::sleep_for(std::chrono::nanoseconds(std::min<std::int64_t>(due - nowNs(), 2'000'000)));
+    }
+}
+
+std::shared_ptr<EncodedFrame> FrameEncoder::encode(const ReadbackSlot& slot) {
+    const FrameMeta& meta = slot.meta;
+    const int quality = meta.moving ? options_.motionQuality : options_.restQuality;
+    std::vector<Strip> strips = stripLayout(meta.height, int(workers_->encoders.size()));
+    std::vector<double> ms(strips.size());
+    const auto* pixels = static_cast<const std::uint8_t*>(slot.pixels.mapped());
+    workers_->arena.execute([&] {
+        tbb::parallel_for(std::size_t(0), strips.size(), [&](std::size_t i) {
+            const auto start = Clock::now();
+            Strip& s = strips[i];
+            workers_->encoders[i].encode(pixels + std::size_t(s.y) * meta.width * 4, int(meta.width), s.rows,
+                                         quality, s.jpeg);
+            ms[i] = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        });
+    });
+    auto frame = std::make_shared<EncodedFrame>();
+    frame->info.frame = meta.frame;
+    frame->info.width = std::uint16_t(meta.width);
+    frame->info.height = std::uint16_t(meta.height);
+    frame->info.renderMs = meta.renderMs;
+    frame->info.encodeMs = float(*std::max_element(ms.begin(), ms.end()));
+    frame->info.quality = std::uint32_t(quality);
+    frame->stripCount = std::uint32_t(strips.size());
+    frame->strips = packStrips(strips);
+    frame->acks = meta.acks;
+    frame->encodedAt = Clock::now();
+    lastEncodeMs_ = frame->info.encodeMs;
+    return frame;
+}
+
+}  // namespace penumbra::serve

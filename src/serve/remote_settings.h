@@ -1,0 +1,28 @@
+// The settings panel over the network: a browser's `set` message applied to the view's
+// settings, and the settings as JSON for hello and stats (docs/SERVE.md, the settings table).
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "render/view_settings.h"
+
+namespace penumbra::serve {
+
+// What a browser may change: the view's settings and whether time runs.
+struct RemoteState {
+    ViewSettings view;
+    bool playing = true;
+};
+
+// Applies one setting (clamped to its range). False, with `error` saying why, for an unknown
+// name or a value of the wrong type; the state is then unchanged.
+bool applySetting(RemoteState& state, const std::string& name, const nlohmann::json& value, std::string& error);
+
+nlohmann::json settingsJson(const RemoteState& state);
+
+// The debug views' names, in the order the page offers them ("none" first).
+nlohmann::json debugViewsJson();
+
+}  // namespace penumbra::serve
