@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "app/viewer/input_script.h"
+#include "interact/input_script.h"
 #include "core/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,10 +1,10 @@
-// Grid movement (app/viewer/grid_walk.h): a step moves one tile, walls stop it, turns are quarter
+// Grid movement (interact/grid_walk.h): a step moves one tile, walls stop it, turns are quarter
 // turns, and the camera glides between poses over the step.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "app/viewer/grid_walk.h"
+#include "interact/grid_walk.h"
 
 namespace penumbra::viewer {
 namespace {

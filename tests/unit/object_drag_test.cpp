@@ -1,4 +1,4 @@
-// Dragging an instance with the mouse (app/viewer/object_drag.h): the grabbed point follows the
+// Dragging an instance with the mouse (interact/object_drag.h): the grabbed point follows the
 // cursor in the plane facing the camera at its depth. The oracle projects points with the pinhole
 // camera written out here (vertical field of view, square pixels, row 0 at the top).
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "app/viewer/object_drag.h"
+#include "interact/object_drag.h"
 #include "scene/objects.h"
 #include "shared/constants.h"
 

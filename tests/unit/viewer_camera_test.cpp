@@ -2,7 +2,7 @@
 // controls promise.
 #include <gtest/gtest.h>
 
-#include "app/viewer/camera_controller.h"
+#include "interact/camera_controller.h"
 #include "scene/io/wad/wad_loader.h"
 #include "wad/wad_builder.h"
 

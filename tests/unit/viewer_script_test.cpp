@@ -3,7 +3,7 @@
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 
-#include "app/viewer/input_script.h"
+#include "interact/input_script.h"
 #include "core/error.h"
 
 namespace penumbra::viewer {
