@@ -15,8 +15,9 @@ const LATENCY_SMOOTHING = 0.2; // weight of a new sample in the running latency 
 const PENDING_SEQ_LIMIT = 512; // seqs awaiting a frame; older ones are forgotten
 
 // Keys the browser keeps: Escape releases the pointer lock (and the desktop viewer quits on it),
-// F5 reloads, F11 is full screen, F12 the developer tools.
-const BROWSER_KEYS = new Set(['Escape', 'F5', 'F11', 'F12']);
+// Tab moves the focus on (the desktop viewer's panel key; the server has no panel), F5 reloads,
+// F11 is full screen, F12 the developer tools.
+const BROWSER_KEYS = new Set(['Escape', 'Tab', 'F5', 'F11', 'F12']);
 
 // Parses one binary frame message. Returns null when it is not a well-formed frame.
 export function parseFrame(buffer) {
