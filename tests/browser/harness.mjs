@@ -26,7 +26,7 @@ export async function missingPrerequisite({ needsServer = true } = {}) {
   try {
     await import('playwright-core');
   } catch {
-    return `playwright-core is not installed: run npm ci --prefix ${path.relative(process.cwd(), here) || '.'}`;
+    return `playwright-core is not installed: run npm ci --prefix ${path.relative(repoRoot, here)} in ${repoRoot}`;
   }
   return null;
 }
