@@ -24,11 +24,21 @@ packages=(
   ccache                                        # compiler cache for CI's two builds (.ci/run)
 )
 
+# The browser tests' driver (tests/browser: playwright-core, pinned in its package-lock.json).
+# Node 20 or later is needed; Debian 12's own nodejs is 18, so a newer one must already be there.
+install_browser_test_driver() {
+  local dir
+  dir="$(cd "$(dirname "$0")/.." && pwd)/tests/browser"
+  command -v npm >/dev/null || { echo "setup: npm not found: the browser tests will not run" >&2; return 0; }
+  [ -d "$dir/node_modules/playwright-core" ] || npm ci --prefix "$dir" --no-audit --no-fund >/dev/null
+}
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -eq 0 ]; then
+  install_browser_test_driver
   exit 0
 fi
 
@@ -38,3 +48,4 @@ sudo_cmd=()
 export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" apt-get update -qq
 "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+install_browser_test_driver

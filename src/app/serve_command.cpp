@@ -43,7 +43,8 @@ void checkArgs(ServeArgs& a) {
         o.encode.motionQuality > 100)
         throw UsageError("--quality and --motion-quality must be between 1 and 100");
     if (o.encode.threads < 1 || o.encode.threads > 64) throw UsageError("--encode-threads must be between 1 and 64");
-    if (!(o.encode.maxFps >= 0 && o.encode.maxFps <= 1000)) throw UsageError("--max-fps must be between 0 (no limit) and 1000");
+    if (!(o.pace.maxFps >= 0 && o.pace.maxFps <= 1000) || !(o.pace.restFps >= 0 && o.pace.restFps <= 1000))
+        throw UsageError("--max-fps and --rest-fps must be between 0 (no limit) and 1000");
     checkToken(o.token);
     const std::optional<DebugView> debug = debugViewFromName(a.debug);
     if (!debug) throw UsageError("--debug: no debug view '" + a.debug + "'");
@@ -85,9 +86,10 @@ void registerServe(CLI::App& app, Action& action) {
     cmd->add_option("--debug", a->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles, boxes, leaf-depth, leaf-triangles");
     cmd->add_flag("--fly", o.fly, "start in free flight on Doom levels (F toggles walking)");
     cmd->add_option("--quality", o.encode.restQuality, "JPEG quality while nothing moves (default 85)");
-    cmd->add_option("--motion-quality", o.encode.motionQuality, "JPEG quality while the camera moves (default 60)");
+    cmd->add_option("--motion-quality", o.encode.motionQuality, "JPEG quality while the camera moves (default 50)");
     cmd->add_option("--encode-threads", o.encode.threads, "CPU threads encoding each frame's strips (default 4)");
-    cmd->add_option("--max-fps", o.encode.maxFps, "frames sent per second at most (default 60; 0: as many as rendered)");
+    cmd->add_option("--max-fps", o.pace.maxFps, "frames sent per second while moving, at most (default 60; 0: every frame rendered)");
+    cmd->add_option("--rest-fps", o.pace.restFps, "frames sent per second at rest, at most (default 15; 0: every frame rendered)");
     addDeviceOption(*cmd, o.device);
     addBvhCacheOption(*cmd);
     addCameraOptions(*cmd, a->camera);

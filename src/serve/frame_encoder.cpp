@@ -4,7 +4,6 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <cstdio>
 
 #include "core/log.h"
 #include "serve/jpeg_encoder.h"
@@ -13,10 +12,6 @@ namespace penumbra::serve {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::int64_t nowNs() {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
-}
 
 // Strips of whole 16-row blocks (a 4:2:0 JPEG's unit), as even as that allows.
 std::vector<Strip> stripLayout(std::uint32_t height, int count) {
@@ -56,12 +51,7 @@ FrameEncoder::~FrameEncoder() {
     thread_.join();
 }
 
-bool FrameEncoder::wantsFrame(double frameSeconds) const {
-    return nowNs() + std::int64_t(frameSeconds * 1e9) >= nextDueNs_.load();
-}
-
 void FrameEncoder::run() {
-    const std::int64_t interval = options_.maxFps > 0 ? std::int64_t(1e9 / options_.maxFps) : 0;
     while (ReadbackSlot* slot = readback_.take(stop_)) {
         std::shared_ptr<EncodedFrame> frame;
         try {
@@ -71,11 +61,6 @@ void FrameEncoder::run() {
         }
         readback_.release(slot);
         if (frame) deliver_(std::move(frame));
-        // Pace: the next frame no sooner than one interval after this one started going out.
-        const std::int64_t due = nowNs() + interval;
-        nextDueNs_ = due;
-        while (!stop_ && nowNs() < due)
-            std::this_thread::sleep_for(std::chrono::nanoseconds(std::min<std::int64_t>(due - nowNs(), 2'000'000)));
     }
 }
 

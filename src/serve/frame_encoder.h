@@ -1,7 +1,7 @@
 // The encoding thread: takes the newest frame the GPU has finished, encodes it as JPEG strips in
 // parallel (one strip per worker) and hands the result to `deliver`. It never holds up the render
 // thread: frames that arrive while it is busy replace each other (frame_readback.h), so it
-// always encodes the freshest. It sends at most maxFps frames a second.
+// always encodes the freshest. Which frames reach it is the pacer's choice (frame_pacer.h).
 #pragma once
 
 #include <atomic>
@@ -18,8 +18,7 @@ namespace penumbra::serve {
 struct EncodeOptions {
     int threads = 4;          // strips encoded at once
     int restQuality = 85;     // JPEG quality while nothing moves
-    int motionQuality = 60;   // while the camera or the scene moves
-    double maxFps = 60;       // 0: as fast as frames come
+    int motionQuality = 50;   // while the camera or the scene moves (docs/SERVE.md: bandwidth)
 };
 
 // A frame ready to send to every browser.
@@ -37,9 +36,6 @@ public:
     FrameEncoder(FrameReadback& readback, const EncodeOptions& options, Deliver deliver);
     ~FrameEncoder();  // stops the thread
 
-    // Whether a frame finishing `frameSeconds` from now would be encoded soon after: the render
-    // thread copies only such frames, so the GPU does not copy frames that would be dropped.
-    bool wantsFrame(double frameSeconds) const;
     double lastEncodeMs() const { return lastEncodeMs_.load(); }
 
 private:
@@ -50,7 +46,6 @@ private:
     EncodeOptions options_;
     Deliver deliver_;
     std::atomic<bool> stop_{false};
-    std::atomic<std::int64_t> nextDueNs_{0};  // steady_clock: when the next frame may go
     std::atomic<double> lastEncodeMs_{0};
     struct Workers;  // the encoders and the task arena, kept out of this header
     std::unique_ptr<Workers> workers_;

@@ -25,10 +25,11 @@ constexpr const char* kControls =
 
 // What the loop carries from frame to frame besides the scene and the renderer.
 struct LoopState {
-    LoopState(const Scene& scene, const ServeOptions& options) : nav(scene, options.fly) {
+    LoopState(const Scene& scene, const ServeOptions& options) : nav(scene, options.fly), pacer(options.pace) {
         remote.view = options.view;
     }
     viewer::Navigation nav;
+    FramePacer pacer;
     RemoteState remote;
     BrowserInput input;
     std::map<std::uint64_t, std::uint32_t> appliedSeq;  // each browser's latest input applied
@@ -157,12 +158,13 @@ nlohmann::json statsJson(const LoopState& s, const InteractiveRenderer& r, const
 
 // Renders one frame, and copies it for the encoder when the encoder will want it.
 void renderFrame(LoopState& s, const Scene& scene, InteractiveRenderer& renderer, FrameReadback& readback,
-                 const FrameEncoder& encoder, const Camera& camera, double frameSeconds) {
-    const bool moving = s.shownCamera != camera || s.instancesMoved;
+                 const Camera& camera, double frameSeconds) {
+    const auto now = Clock::now();
+    if (s.shownCamera != camera || s.instancesMoved) s.pacer.noteMotion(now);
     if (s.instancesMoved) renderer.setInstanceTransforms(scene);
-    FrameMeta meta{++s.frameNumber, renderer.width(), renderer.height(), 0, moving, {}};
+    FrameMeta meta{++s.frameNumber, renderer.width(), renderer.height(), 0, s.pacer.moving(now), {}};
     meta.acks.assign(s.appliedSeq.begin(), s.appliedSeq.end());
-    const bool copy = encoder.wantsFrame(frameSeconds) || s.mustRender;
+    const bool copy = s.pacer.takeFrame(now, frameSeconds) || s.mustRender;
     bool copied = false;
     renderer.commands().run([&](VkCommandBuffer cmd) {
         renderer.record(cmd, camera, s.remote.view);
@@ -177,11 +179,29 @@ void renderFrame(LoopState& s, const Scene& scene, InteractiveRenderer& renderer
 
 }  // namespace
 
-void runServeLoop(const gpu::Context& ctx, Scene& scene, const ServeOptions& options, ClientHub& hub,
-                  FrameReadback& readback, FrameEncoder& encoder, const std::function<bool()>& stopRequested) {
-    InteractiveRenderer renderer(ctx, scene, true);
-    LoopState s(scene, options);
-    hub.setHello(helloJson(s, scene, renderer, options));
+struct ServeLoop::State {
+    State(const gpu::Context& ctx, Scene& sceneToShow, const ServeOptions& o, ClientHub& h)
+        : scene(sceneToShow), options(o), hub(h), renderer(ctx, sceneToShow, true), loop(sceneToShow, o) {}
+    Scene& scene;
+    const ServeOptions& options;
+    ClientHub& hub;
+    InteractiveRenderer renderer;
+    LoopState loop;
+};
+
+ServeLoop::ServeLoop(const gpu::Context& ctx, Scene& scene, const ServeOptions& options, ClientHub& hub)
+    : state_(std::make_unique<State>(ctx, scene, options, hub)) {
+    hub.setHello(helloJson(state_->loop, scene, state_->renderer, options));
+}
+
+ServeLoop::~ServeLoop() = default;
+
+void ServeLoop::run(FrameReadback& readback, FrameEncoder& encoder, const std::function<bool()>& stopRequested) {
+    Scene& scene = state_->scene;
+    const ServeOptions& options = state_->options;
+    ClientHub& hub = state_->hub;
+    InteractiveRenderer& renderer = state_->renderer;
+    LoopState& s = state_->loop;
     auto last = Clock::now(), lastStats = last;
     double frameSeconds = 0.005, renderedFps = 0;
     std::uint32_t framesSinceStats = 0;
@@ -200,7 +220,7 @@ void runServeLoop(const gpu::Context& ctx, Scene& scene, const ServeOptions& opt
         const Camera camera = s.nav.camera();
         const bool changed = s.shownCamera != camera || s.shownSettings != s.remote.view || s.instancesMoved;
         if (s.remote.playing || s.mustRender || changed) {
-            renderFrame(s, scene, renderer, readback, encoder, camera, frameSeconds);
+            renderFrame(s, scene, renderer, readback, camera, frameSeconds);
             ++framesSinceStats;
             frameSeconds = 0.9 * frameSeconds + 0.1 * std::chrono::duration<double>(Clock::now() - now).count();
         } else {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 
 #include "gpu/context.h"
 #include "scene/scene.h"
@@ -16,8 +17,18 @@
 
 namespace penumbra::serve {
 
-// Runs until stopRequested() says so (polled every frame, and every 0.1 s while nobody watches).
-void runServeLoop(const gpu::Context& ctx, Scene& scene, const ServeOptions& options, ClientHub& hub,
-                  FrameReadback& readback, FrameEncoder& encoder, const std::function<bool()>& stopRequested);
+class ServeLoop {
+public:
+    // Uploads the scene and makes the renderer's kernels, and gives the hub its hello: all before
+    // the server listens, so the first browser finds everything ready.
+    ServeLoop(const gpu::Context& ctx, Scene& scene, const ServeOptions& options, ClientHub& hub);
+    ~ServeLoop();
+    // Runs until stopRequested() says so (polled every frame, and every 0.1 s while nobody watches).
+    void run(FrameReadback& readback, FrameEncoder& encoder, const std::function<bool()>& stopRequested);
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
 
 }  // namespace penumbra::serve

@@ -6,6 +6,7 @@
 
 #include "render/view_settings.h"
 #include "serve/frame_encoder.h"
+#include "serve/frame_pacer.h"
 
 namespace penumbra::serve {
 
@@ -18,6 +19,7 @@ struct ServeOptions {
     ViewSettings view;                          // the starting settings (spp, denoise, debug, ...)
     bool fly = false;
     EncodeOptions encode;
+    PaceOptions pace;
 };
 
 }  // namespace penumbra::serve

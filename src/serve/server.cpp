@@ -54,6 +54,7 @@ void runServer(Scene scene, const ServeOptions& options) {
     // network thread, then the sessions with the io_context, and the hub they all use last.
     ClientHub hub;
     FrameReadback readback(*result.context);
+    ServeLoop loop(*result.context, scene, o, hub);
     boost::asio::io_context io(1);
     HttpServer http(io, o.bind, o.port, o.token, hub);
     StopOnSignals signals;
@@ -70,7 +71,7 @@ void runServer(Scene scene, const ServeOptions& options) {
                 o.token.empty() ? "" : ("?token=" + o.token).c_str());
     std::fflush(stdout);
 
-    runServeLoop(*result.context, scene, o, hub, readback, encoder, [] { return StopOnSignals::signal() != 0; });
+    loop.run(readback, encoder, [] { return StopOnSignals::signal() != 0; });
     boost::asio::post(io, [&http] { http.close(); });
     if (const int sig = StopOnSignals::signal())
         std::fprintf(stderr, "penumbra: %s: server stopped\n", StopOnSignals::signalName(sig));

@@ -50,6 +50,8 @@ ProbeResult runProbe(const ProbeOptions& o, const std::atomic<bool>& stop) {
         websocket::stream<beast::tcp_stream> ws(io);
         beast::get_lowest_layer(ws).expires_after(std::chrono::seconds(10));
         beast::get_lowest_layer(ws).connect(resolver.resolve(o.host, o.port));
+        // As browsers do: an ack and an input written back to back must not wait for Nagle.
+        beast::get_lowest_layer(ws).socket().set_option(asio::ip::tcp::no_delay(true));
         ws.handshake(o.host + ":" + o.port, o.target);
         beast::get_lowest_layer(ws).expires_never();
         ws.read_message_max(64 * 1024 * 1024);
@@ -65,6 +67,7 @@ ProbeResult runProbe(const ProbeOptions& o, const std::atomic<bool>& stop) {
             const std::string_view bytes(static_cast<const char*>(buffer.data().data()), buffer.size());
             if (ws.got_text()) {
                 ++r.texts;
+                (r.hello.empty() ? r.hello : r.lastStats).assign(bytes);
             } else if (std::optional<ParsedFrame> f = parseFrame(bytes)) {
                 ++r.frames;
                 r.bytes += bytes.size();

@@ -28,6 +28,7 @@ struct ProbeResult {
     std::vector<double> renderMs, encodeMs;
     std::uint32_t width = 0, height = 0;
     std::uint32_t lastQuality = 0;
+    std::string hello, lastStats;  // the server's text messages (JSON), the first and the latest
     std::string error;  // "" : ran to the end
 };
 

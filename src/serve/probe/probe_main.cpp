@@ -51,6 +51,7 @@ nlohmann::json summary(const ProbeResult& r) {
             {"width", r.width},
             {"height", r.height},
             {"quality", r.lastQuality},
+            {"lastStats", nlohmann::json::parse(r.lastStats, nullptr, false)},
             {"error", r.error}};
 }
 
