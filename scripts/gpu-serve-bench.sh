@@ -63,15 +63,18 @@ serve() {  # serve NAME SERVE_ARGS... -- PROBE_ARGS...: one server, one probe ru
 }
 
 # Warm up once (pipelines, clocks), then measure.
-serve warmup --max-fps 0 -- --seconds 5
-serve unlimited --max-fps 0 -- --seconds "$each" --input-every 0.1 --save "$out/frames" --save-count 4
+serve warmup --max-fps 0 --rest-fps 0 -- --seconds 5
+serve unlimited --max-fps 0 --rest-fps 0 -- --seconds "$each" --input-every 0.1 --save "$out/frames" --save-count 4
 serve fps60-moving --max-fps 60 -- --seconds "$each" --input-every 0.02
-serve fps60-rest --max-fps 60 -- --seconds "$each" --input-every 0
+serve rest --max-fps 60 -- --seconds "$each" --input-every 0
 serve clients8 --max-fps 60 -- --seconds "$each" --clients 8 --input-every 0.25
+# The load test's shape on the GPU: eight browsers for a minute, the server's memory sampled.
+[ "${LOAD_SECONDS:-60}" -gt 0 ] && serve load --max-fps 60 -- --seconds "${LOAD_SECONDS:-60}" --clients 8 --input-every 0.1
 
 for f in "$out"/probe-*.json; do
   echo "== $(basename "$f")"
-  grep -E '"(fps|mbits|bytesPerFrame|latencyMsMedian|latencyMsP95|encodeMsMedian|encodeMsMax|renderMsMedian|error)"' "$f" | head -10
+  grep -E '"(fps|mbits|bytesPerFrame|latencyMsMedian|latencyMsP95|encodeMsMedian|encodeMsMax|renderMsMedian|quality|error)"' "$f" | head -11
+  tr -d ' \n' < "$f" | grep -o '"serverRssKiB":\[[0-9,]*\]' || true
 done
 grep -o '"viewer_frame_ms": *[0-9.]*' "$out/bench-viewer.json" || true
 grep -o '"median": *[0-9.]*' "$out/peer-default.json" | head -3 || true
