@@ -17,12 +17,9 @@ mode=${1:-run}
 each=${SECONDS_EACH:-15}
 
 if [ "$mode" = pack ]; then
-  [ -d ../shared/peers/seed-webgpu ] || { echo "needs ../shared/peers/seed-webgpu (the WebGPU renderer)" >&2; exit 2; }
-  ../shared/tools/gpu-pack.sh build/penumbra build/serve-probe
+  scripts/gpu-bench-vs-seed.sh pack build/serve-probe  # .gpu/ with both programs, and .peer/
   tar -C .gpu -cf - bin lib | xz -T0 -6 > .gpu/payload.tar.xz
   rm -rf .gpu/bin .gpu/lib
-  rm -rf .peer && mkdir -p .peer && cp -r ../shared/peers/seed-webgpu/. .peer/
-  grep -qx '/.peer/' .git/info/exclude || echo '/.peer/' >> .git/info/exclude
   du -sh .gpu .peer
   exit 0
 fi

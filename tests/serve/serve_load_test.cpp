@@ -36,7 +36,7 @@ TEST(ServeLoad, EightBrowsersForAMinuteAndMemoryStaysFlat) {
     const auto start = std::chrono::steady_clock::now();
     while (std::chrono::steady_clock::now() - start < std::chrono::duration<double>(seconds)) {
         std::this_thread::sleep_for(std::chrono::seconds(1));
-        rss.push_back(server.residentKiB());
+        rss.push_back(serve::probe::residentKiB(server.pid()));
         server.err();  // keep its pipe drained
     }
     for (auto& c : clients) c.join();

@@ -11,7 +11,6 @@
 
 #include <chrono>
 #include <cstdlib>
-#include <fstream>
 #include <optional>
 #include <string>
 #include <thread>
@@ -103,17 +102,7 @@ public:
         if (waitpid(pid_, &status, WNOHANG) == pid_) exited_ = true;
         return !exited_;
     }
-    // Resident memory in KiB (0 when it cannot be read).
-    long residentKiB() const {
-        std::ifstream status("/proc/" + std::to_string(pid_) + "/status");
-        std::string key;
-        long value = 0;
-        while (status >> key) {
-            if (key == "VmRSS:") return (status >> value) ? value : 0;
-            status.ignore(1 << 12, '\n');
-        }
-        return 0;
-    }
+    pid_t pid() const { return pid_; }
     const std::string& err() {
         pump(0);
         return err_;

@@ -8,6 +8,7 @@
 
 #include <deque>
 #include <filesystem>
+#include <fstream>
 
 #include "serve/frame_message.h"
 #include "serve/jpeg_encoder.h"
@@ -108,6 +109,17 @@ ProbeResult runProbe(const ProbeOptions& o, const std::atomic<bool>& stop) {
         r.error = e.what();
     }
     return r;
+}
+
+long residentKiB(int pid) {
+    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+    std::string key;
+    long value = 0;
+    while (status >> key) {
+        if (key == "VmRSS:") return (status >> value) ? value : 0;
+        status.ignore(1 << 12, '\n');
+    }
+    return 0;
 }
 
 }  // namespace penumbra::serve::probe

@@ -34,4 +34,8 @@ struct ProbeResult {
 
 ProbeResult runProbe(const ProbeOptions& options, const std::atomic<bool>& stop);
 
+// A process's resident memory in KiB, from /proc (0 when it cannot be read): the server's, watched
+// by the load test and the GPU benchmark.
+long residentKiB(int pid);
+
 }  // namespace penumbra::serve::probe

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <thread>
 
 #include "serve/probe/probe_client.h"
@@ -22,18 +21,6 @@ double percentile(std::vector<double> v, double p) {
     if (v.empty()) return 0;
     std::sort(v.begin(), v.end());
     return v[std::min(v.size() - 1, std::size_t(p * double(v.size() - 1) + 0.5))];
-}
-
-// The server's resident memory in KiB, from /proc (0 when it cannot be read).
-long residentKiB(int pid) {
-    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-    std::string key;
-    long value = 0;
-    while (status >> key) {
-        if (key == "VmRSS:") return (status >> value) ? value : 0;
-        status.ignore(1 << 12, '\n');
-    }
-    return 0;
 }
 
 nlohmann::json summary(const ProbeResult& r) {
@@ -87,7 +74,7 @@ int main(int argc, char** argv) {
         });
     std::vector<long> rss;
     for (double t = 0; pid > 0 && t < o.seconds; t += 1) {
-        rss.push_back(residentKiB(pid));
+        rss.push_back(penumbra::serve::probe::residentKiB(pid));
         std::this_thread::sleep_for(std::chrono::seconds(1));
     }
     for (auto& t : threads) t.join();
