@@ -70,7 +70,7 @@ serve clients8 --max-fps 60 -- --seconds "$each" --clients 8 --input-every 0.25
 
 for f in "$out"/probe-*.json; do
   echo "== $(basename "$f")"
-  grep -E '"(fps|mbits|bytesPerFrame|latencyMsMedian|latencyMsP95|encodeMsMedian|encodeMsMax|renderMsMedian|quality|error)"' "$f" | head -11
+  grep -E '"(fps|mbits|bytesPerFrame|latencyMsMedian|latencyMsP95|encodeMsMedian|encodeMsP95|encodeMsMax|renderMsMedian|quality|error)"' "$f" | head -11
   tr -d ' \n' < "$f" | grep -o '"serverRssKiB":\[[0-9,]*\]' || true
 done
 grep -o '"viewer_frame_ms": *[0-9.]*' "$out/bench-viewer.json" || true

@@ -34,6 +34,7 @@ nlohmann::json summary(const ProbeResult& r) {
             {"latencySamples", r.latencyMs.size()},
             {"renderMsMedian", percentile(r.renderMs, 0.5)},
             {"encodeMsMedian", percentile(r.encodeMs, 0.5)},
+            {"encodeMsP95", percentile(r.encodeMs, 0.95)},
             {"encodeMsMax", percentile(r.encodeMs, 1.0)},
             {"width", r.width},
             {"height", r.height},
