@@ -11,6 +11,10 @@ std::uint64_t ClientHub::join(std::weak_ptr<ClientConnection> connection) {
     std::uint64_t id = 0;
     {
         std::lock_guard lock(mutex_);
+        if (clients_.size() >= kMaxClients) {
+            logDropped("a browser: " + std::to_string(kMaxClients) + " already watch");
+            return 0;
+        }
         id = nextId_++;
         clients_.push_back({id, connection});
         inbox_.push_back({InboxItem::Kind::Joined, id, {}});

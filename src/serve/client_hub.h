@@ -39,9 +39,11 @@ struct InboxItem {
 class ClientHub {
 public:
     static constexpr std::size_t kMaxInbox = 4096;  // messages waiting for the render loop
+    static constexpr std::size_t kMaxClients = 64;  // browsers watching at once
 
-    // Network side.
-    std::uint64_t join(std::weak_ptr<ClientConnection> connection);  // sends the hello at once
+    // Network side. join sends the hello at once; it returns 0 (and the connection should close)
+    // when kMaxClients already watch.
+    std::uint64_t join(std::weak_ptr<ClientConnection> connection);
     void leave(std::uint64_t client);
     void post(std::uint64_t client, ClientMessage message);
 

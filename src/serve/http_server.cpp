@@ -110,7 +110,7 @@ bool targetHasToken(std::string_view target, std::string_view token) {
 
 HttpServer::HttpServer(asio::io_context& io, const std::string& bindAddress, unsigned short port, std::string token,
                        ClientHub& hub)
-    : io_(io), acceptor_(io), token_(std::move(token)), hub_(hub) {
+    : io_(io), acceptor_(io), retry_(io), token_(std::move(token)), hub_(hub) {
     beast::error_code ec;
     const asio::ip::address address = asio::ip::make_address(bindAddress, ec);
     if (ec) throw UsageError("--bind: '" + bindAddress + "' is not an IP address");
@@ -129,15 +129,23 @@ unsigned short HttpServer::port() const { return acceptor_.local_endpoint().port
 void HttpServer::close() {
     beast::error_code ec;
     acceptor_.close(ec);
+    retry_.cancel();
 }
 
 void HttpServer::accept() {
     acceptor_.async_accept(asio::make_strand(io_), [this](beast::error_code ec, tcp::socket socket) {
         if (ec == asio::error::operation_aborted || !acceptor_.is_open()) return;
-        if (!ec) {
-            socket.set_option(tcp::no_delay(true), ec);  // frames and inputs go out at once
-            std::make_shared<HttpSession>(std::move(socket), token_, hub_)->start();
+        if (ec) {  // e.g. out of file descriptors: try again shortly rather than spin
+            logDropped("a connection: " + ec.message());
+            retry_.expires_after(std::chrono::milliseconds(100));
+            retry_.async_wait([this](beast::error_code waited) {
+                if (!waited) accept();
+            });
+            return;
         }
+        beast::error_code ignored;
+        socket.set_option(tcp::no_delay(true), ignored);  // frames and inputs go out at once
+        std::make_shared<HttpSession>(std::move(socket), token_, hub_)->start();
         accept();
     });
 }

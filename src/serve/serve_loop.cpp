@@ -207,6 +207,7 @@ void ServeLoop::run(FrameReadback& readback, FrameEncoder& encoder, const std::f
     std::uint32_t framesSinceStats = 0;
     while (!stopRequested()) {
         if (hub.clients() == 0 && !hub.waitForClient(std::chrono::milliseconds(100))) {
+            applyInbox(s, scene, renderer, hub.drain());  // browsers that came and went
             last = Clock::now();  // nobody watches: render nothing, and no time passes
             continue;
         }

@@ -33,6 +33,11 @@ void WsSession::onAccept(beast::error_code ec) {
     if (ec) return;  // the upgrade failed: the browser sees the closed connection
     ws_.auto_fragment(false);
     id_ = hub_.join(weak_from_this());
+    if (id_ == 0) {  // full: say so and go
+        ws_.async_close(websocket::close_reason(websocket::close_code::try_again_later),
+                        [self = shared_from_this()](beast::error_code) {});
+        return;
+    }
     read();
 }
 

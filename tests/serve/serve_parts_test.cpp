@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "serve/browser_input.h"
+#include "serve/client_hub.h"
 #include "serve/frame_pacer.h"
 #include "serve/http_server.h"
 #include "serve/jpeg_encoder.h"
@@ -54,6 +55,41 @@ int framesTaken(FramePacer& pacer, double seconds, double frameSeconds, bool mov
         if (pacer.takeFrame(now, frameSeconds)) ++taken;
     }
     return taken;
+}
+
+// A connection that only counts what it is sent.
+struct CountingConnection : ClientConnection {
+    int frames = 0, texts = 0;
+    void sendFrame(std::shared_ptr<const EncodedFrame>) override { ++frames; }
+    void sendStats(std::shared_ptr<const nlohmann::json>) override { ++texts; }
+    void sendText(std::shared_ptr<const std::string>) override { ++texts; }
+};
+
+TEST(ServeHub, BoundsBrowsersAndWaitingMessages) {
+    ClientHub hub;
+    hub.setHello({{"t", "hello"}});
+    std::vector<std::shared_ptr<CountingConnection>> connections;
+    std::vector<std::uint64_t> ids;
+    for (std::size_t i = 0; i < ClientHub::kMaxClients; ++i) {
+        connections.push_back(std::make_shared<CountingConnection>());
+        ids.push_back(hub.join(connections.back()));
+        EXPECT_NE(ids.back(), 0u);
+        EXPECT_EQ(connections.back()->texts, 1);  // the hello, at once
+    }
+    auto extra = std::make_shared<CountingConnection>();
+    EXPECT_EQ(hub.join(extra), 0u);  // full
+    EXPECT_EQ(hub.clients(), ClientHub::kMaxClients);
+    hub.leave(ids[0]);
+    EXPECT_NE(hub.join(extra), 0u);  // a place came free
+    hub.broadcastFrame(std::make_shared<EncodedFrame>());
+    EXPECT_EQ(extra->frames, 1);
+    EXPECT_EQ(connections[0]->frames, 0);  // it left
+    hub.drain();
+    for (std::size_t i = 0; i < ClientHub::kMaxInbox + 100; ++i) hub.post(ids[1], ClientMessage{});
+    hub.leave(ids[2]);  // a departure is never dropped, however full the inbox
+    const std::vector<InboxItem> items = hub.drain();
+    ASSERT_EQ(items.size(), ClientHub::kMaxInbox + 1);
+    EXPECT_EQ(items.back().kind, InboxItem::Kind::Left);
 }
 
 TEST(ServePacer, SendsMaxFpsWhileMovingAndRestFpsAtRest) {
