@@ -151,7 +151,7 @@ pack() {
   local packdir=$scratch/pack
   mkdir -p "$packdir" && git -C "$packdir" init -q
   [ -d .gpu/debs ] && mkdir -p "$packdir/.gpu" && cp -r .gpu/debs "$packdir/.gpu/"  # skips the download
-  (cd "$packdir" && "$top/../shared/tools/gpu-pack.sh" "$top/build/penumbra" "$top/build/bench/bvh/bench_bvh_build" \
+  (cd "$packdir" && "$top/scripts/gpu-pack.sh" "$top/build/penumbra" "$top/build/bench/bvh/bench_bvh_build" \
     /usr/bin/pathtracer "$(command -v xz)" "$(command -v gzip)" \
     "$data/dragon_vrip.ply.gz" "$data"/dragon.json "$data"/dragon12.json \
     "$data"/dragon12.xml "$data"/dragon.cam "$data"/dragon12.cam "$data/commit.txt") >&2

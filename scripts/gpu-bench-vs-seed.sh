@@ -17,7 +17,10 @@ mode=${1:-run}
 frames=${FRAMES:-200}
 
 if [ "$mode" = pack ]; then
-  ../shared/tools/gpu-pack.sh build/penumbra "${@:2}"
+  [ -d ../shared/peers/seed-webgpu ] || {
+    echo "gpu-bench-vs-seed: the WebGPU renderer (../shared/peers/seed-webgpu) is not beside this checkout;" \
+         "a plain clone has no peer to compare with" >&2; exit 2; }
+  scripts/gpu-pack.sh build/penumbra "${@:2}"
   rm -rf .peer && mkdir -p .peer && cp -r ../shared/peers/seed-webgpu/. .peer/
   grep -qx '/.peer/' .git/info/exclude || echo '/.peer/' >> .git/info/exclude
   du -sh .gpu .peer

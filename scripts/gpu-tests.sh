@@ -2,8 +2,9 @@
 # The GPU test suite on a machine with a real GPU (docs/TESTING.md, "On a GPU host").
 #
 #   scripts/gpu-tests.sh pack [BUILD_DIR]    here, on the Debian machine that built BUILD_DIR (default build):
-#                                            packs every GPU test binary, the penumbra binary the CLI tests run,
-#                                            the Khronos validation layer and the test assets into .gpu/
+#                                            packs every GPU test binary the build registered with ctest (label
+#                                            gpu), the penumbra binary the CLI tests run, the Khronos validation
+#                                            layer and the test assets into .gpu/
 #   scripts/gpu-tests.sh run [LOG_DIR]       on the GPU host, from the repository root, after `source .gpu/env.sh`:
 #                                            runs each test binary in ONE process, prints a summary, exits non-zero
 #                                            on any failure, crash, unexpected skip or validation message
@@ -12,12 +13,16 @@
 #
 # LOG_DIR (default .gpu/logs) receives summary.txt and gpu-tests.log, or diagnose.txt and diagnose.log.
 # PENUMBRA_TEST_DEVICE picks the device (default NVIDIA); PENUMBRA_GPU_TEST_TIMEOUT limits each binary (seconds).
-# Packing runs ../shared/tools/gpu-pack.sh (GPU_PACK overrides), which needs a checkout whose .git is a
-# folder (the main checkout or a clone, not a `git worktree`).
+# Packing runs scripts/gpu-pack.sh (GPU_PACK overrides), which needs a checkout whose .git is a
+# folder (a clone, not a `git worktree`).
 set -euo pipefail
 
-# The binaries, run in this order; viewer_smoke_tests only where the build made it (PENUMBRA_VIEWER).
-TEST_BINARIES=(gpu_tests material_tests viewer_gpu_tests cli_tests invariance_tests leak_tests viewer_smoke_tests)
+# The binaries come from the build: every gtest executable ctest runs under the label gpu, in the
+# order the build registered them (build_test_binaries). Those below cannot run on the GPU host
+# and are left out, with the reason printed when packing:
+#   mpi_cli_tests: starts real mpirun processes; the host has no Open MPI and the packer does not
+#   carry its launcher and runtime.
+NOT_ON_HOST=(mpi_cli_tests)
 # Skips that are expected on the GPU host (no display, no xvfb-run there), as extended regexes.
 EXPECTED_SKIPS='xvfb-run is not installed'
 # Real assets the tests read from Debian packages, carried xz-compressed and unpacked at the same paths.
@@ -27,25 +32,50 @@ LIMIT_MIB=64  # what the device tool carries: the working tree plus carried fold
 
 die() { echo "gpu-tests: $*" >&2; exit 2; }
 
+# build_test_binaries BUILD_DIR: the path of each GPU test binary ctest runs, once, in order. A gtest
+# binary is one whose ctest entries pass --gtest_filter (gtest_discover_tests) or shard through
+# GTEST_TOTAL_SHARDS; other gpu-labelled entries (e.g. a node script) are not test binaries.
+build_test_binaries() {
+  ctest --test-dir "$1" -L gpu --show-only=json-v1 | python3 -c '
+import json, sys
+seen = []
+for test in json.load(sys.stdin).get("tests", []):
+    command = test.get("command") or []
+    env = [e for p in test.get("properties", []) if p["name"] == "ENVIRONMENT" for e in p["value"]]
+    gtest = any(a.startswith("--gtest_filter") for a in command[1:]) or any(e.startswith("GTEST_TOTAL_SHARDS=") for e in env)
+    if command and gtest and command[0] not in seen:
+        seen.append(command[0])
+print("\n".join(seen))'
+}
+
 pack() {
   local build=${1:-build}
   local top; top=$(git rev-parse --show-toplevel)
   cd "$top"
   [ -d .git ] || die "gpu-pack.sh writes .git/info/exclude, so run pack in a checkout whose .git is a folder (not a worktree)"
-  local gpu_pack=${GPU_PACK:-$top/../shared/tools/gpu-pack.sh}
+  local gpu_pack=${GPU_PACK:-$top/scripts/gpu-pack.sh}
   [ -x "$gpu_pack" ] || die "no packer at $gpu_pack (set GPU_PACK)"
-  local files=() b
-  for b in "${TEST_BINARIES[@]}"; do
-    if [ -x "$build/tests/gpu/$b" ]; then files+=("$build/tests/gpu/$b")
-    elif [ "$b" != viewer_smoke_tests ]; then die "$build/tests/gpu/$b is missing: build first (cmake --build $build)"; fi
-  done
+  [ -f "$build/CTestTestfile.cmake" ] || die "$build is not a configured build folder (cmake -S . -B $build -G Ninja)"
+  local files=() names=() b path
+  while IFS= read -r path; do
+    [ -n "$path" ] || continue
+    b=$(basename "$path")
+    if printf '%s\n' "${NOT_ON_HOST[@]}" | grep -qx "$b"; then
+      echo "gpu-tests: $b left out: it cannot run on the GPU host (see NOT_ON_HOST in $0)" >&2
+      continue
+    fi
+    [ -x "$path" ] || die "$path is missing: build first (cmake --build $build)"
+    files+=("$path")
+    names+=("$b")
+  done < <(build_test_binaries "$build")
+  [ ${#names[@]} -gt 0 ] || die "ctest lists no GPU test binaries in $build"
   [ -x "$build/penumbra" ] || die "$build/penumbra is missing: build first"
   files+=("$build/penumbra")
 
   local layer_lib
   [ -f "$LAYER_MANIFEST" ] || die "$LAYER_MANIFEST is missing: install vulkan-validationlayers"
   layer_lib=$(sed -n 's/.*"library_path": *"\([^"]*\)".*/\1/p' "$LAYER_MANIFEST")
-  case "$layer_lib" in /*) ;; *) layer_lib=$(ldconfig -p | awk -v n="$layer_lib" '$1 == n {print $NF; exit}') ;; esac
+  case "$layer_lib" in /*) ;; *) layer_lib=$(ldconfig -p | awk -v n="$layer_lib" '$1 == n && !found {print $NF; found = 1}') ;; esac
   [ -f "$layer_lib" ] || die "the validation layer's library was not found"
 
   "$gpu_pack" "${files[@]}" >/dev/null
@@ -71,10 +101,10 @@ pack() {
       echo "gpu-tests: warning: $a is not installed here; the tests that read it will skip there" >&2
     fi
   done
-  printf '%s\n' "${TEST_BINARIES[@]}" | while read -r b; do [ -x ".gpu/bin/$b" ] && echo "$b"; done > .gpu/test-binaries
-  # The test binaries travel compressed (a quarter of their size); `run` unpacks them. penumbra stays
-  # runnable as it is, for other commands on the host.
-  for b in $(cat .gpu/test-binaries); do xz -T0 -6 -f ".gpu/bin/$b"; done
+  printf '%s\n' "${names[@]}" > .gpu/test-binaries
+  # The binaries travel compressed (a fifth of their size: ten test binaries and penumbra would not
+  # fit the device tool's 64 MiB otherwise); `run` and `diagnose` unpack them.
+  for b in $(cat .gpu/test-binaries) penumbra; do xz -T0 -6 -f ".gpu/bin/$b"; done
   { git rev-parse --short HEAD; git status --porcelain --untracked-files=no | grep -q . && echo "(with uncommitted changes)" || true; } \
     | paste -sd' ' > .gpu/commit
   report_size
@@ -109,7 +139,7 @@ prepare_host() {
   fi
   export VK_LAYER_PATH="$root/.gpu/layers"
   local b
-  for b in $(cat .gpu/test-binaries); do
+  for b in $(cat .gpu/test-binaries) penumbra; do
     if [ -f ".gpu/bin/$b.xz" ] && [ ! -x ".gpu/bin/$b" ]; then
       unxz_to ".gpu/bin/$b.xz" ".gpu/bin/$b.part" && chmod +x ".gpu/bin/$b.part" && mv ".gpu/bin/$b.part" ".gpu/bin/$b"
     fi
@@ -298,5 +328,5 @@ case "${1:-}" in
   pack) shift; pack "$@" ;;
   run) shift; run "$@" ;;
   diagnose) shift; diagnose "$@" ;;
-  *) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
+  *) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
 esac
