@@ -159,9 +159,14 @@ TEST(Serve, MalformedAndOversizedMessagesAreDroppedWithALogLine) {
     browser.readFrames(3);  // still served
     {
         Browser flooder(*port);  // over 64 KiB: that connection is closed, nobody else's
-        flooder.send(std::string(100 * 1024, 'y'));
         bool binary = false;
-        EXPECT_THROW(for (int i = 0; i < 1000; ++i) flooder.next(binary), beast::system_error);
+        // The close may come while the message is still being written (a broken pipe) or after.
+        EXPECT_THROW(
+            {
+                flooder.send(std::string(100 * 1024, 'y'));
+                for (int i = 0; i < 1000; ++i) flooder.next(binary);
+            },
+            beast::system_error);
     }
     browser.readFrames(3);
     EXPECT_TRUE(server.running());
