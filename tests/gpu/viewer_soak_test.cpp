@@ -3,7 +3,7 @@
 // on any message). Afterwards nothing has grown (live Vulkan objects exactly; descriptors,
 // threads and memory within noise) and nothing has drifted: a still camera's running mean agrees
 // with the one it gave at the start, within the sampling error both carry.
-// Two runs of the same checks: a short one in every run of the suite (8x8, two bounces, 80
+// Two runs of the same checks: a short one in every run of the suite (8x8, two bounces, 40
 // frames), and the real soak, opt-in, when PENUMBRA_SOAK_FRAMES sets its frame count (thousands;
 // on lavapipe on 2 cores even 300 full-length frames took more than four minutes).
 #include <cmath>
@@ -96,14 +96,19 @@ using ViewerSoakTest = GpuTest;
 // Every run: short paths (two bounces) and few frames. A moving frame is dear on lavapipe (it
 // spends it in LLVM, compiling again: apparently per frame, not once), so this run is sized by
 // time, not by frames; the warm-up leaves the allocators and caches settled before the resources
-// are first sampled.
+// are first sampled. 40 frames: the reload at frame 8, the warm-up to frame 16, then 24 frames
+// compared, which is enough for every check: the live Vulkan objects must be exactly equal (one
+// object left per frame shows at once), descriptors and threads have a slack of 2 (one per frame
+// shows after 3 frames), and the drift test's tolerance comes from the still frames' own
+// standard errors (16 frames before and after, as before). 80 frames (until issue 38) took 230 s
+// of the 2-core machine in CI's ctest -j2, the longest test of the suite, for no more cover.
 // Memory is not checked here: on lavapipe the process's heap grows by about 4 MiB every frame of
 // this loop, moving camera or still, while the Vulkan objects stay exactly the same (issue 12,
 // docs/RELIABILITY.md "Soak": not yet explained; the long soak checks memory and shows it).
 TEST_F(ViewerSoakTest, MovingFramesAndAReloadLeaveNothingBehindAndNoDrift) {
     ViewSettings view;
     view.maxBounces = 2;
-    soak(*ctx, 80, 30, view, 16, false);
+    soak(*ctx, 40, 16, view, 16, false);
 }
 
 TEST_F(ViewerSoakTest, ThousandsOfMovingFramesAndAReloadLeaveNothingBehindAndNoDrift) {
