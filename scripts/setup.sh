@@ -20,17 +20,18 @@ packages=(
   clang libclang-rt-14-dev                      # libFuzzer targets (tests/fuzz)
   freedoom glmark2-data assimp-testmodels       # real scenes the tests load (never committed)
   libturbojpeg0-dev libboost-dev                # penumbra serve: JPEG frames, HTTP + WebSocket (Boost.Beast)
-  chromium                                      # the browser tests of penumbra serve (tests/browser)
+  chromium firefox-esr                          # the browser tests of penumbra serve (tests/browser)
   ccache                                        # compiler cache for CI's two builds (.ci/run)
 )
 
-# The browser tests' driver (tests/browser: playwright-core, pinned in its package-lock.json).
+# The browser tests' drivers (tests/browser: playwright-core for Chromium, puppeteer-core for
+# Firefox; pinned in its package-lock.json).
 # Node 20 or later is needed; Debian 12's own nodejs is 18, so a newer one must already be there.
 install_browser_test_driver() {
   local dir
   dir="$(cd "$(dirname "$0")/.." && pwd)/tests/browser"
   command -v npm >/dev/null || { echo "setup: npm not found: the browser tests will not run" >&2; return 0; }
-  [ -d "$dir/node_modules/playwright-core" ] || npm ci --prefix "$dir" --no-audit --no-fund >/dev/null
+  [ -d "$dir/node_modules/playwright-core" ] && [ -d "$dir/node_modules/puppeteer-core" ] || npm ci --prefix "$dir" --no-audit --no-fund >/dev/null
 }
 
 missing=()

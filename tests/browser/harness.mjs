@@ -6,6 +6,8 @@ import http from 'node:http';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
+import { launchFirefox } from './firefox_adapter.mjs';
+
 const here = path.dirname(fileURLToPath(import.meta.url));
 export const repoRoot = path.resolve(here, '..', '..');
 export const webDir = path.join(repoRoot, 'web');
@@ -13,7 +15,14 @@ export const webDir = path.join(repoRoot, 'web');
 export const binaryPath = process.env.PENUMBRA_BINARY
   ? path.resolve(process.env.PENUMBRA_BINARY)
   : path.join(repoRoot, 'build', 'penumbra');
-export const chromiumPath = process.env.CHROMIUM || '/usr/bin/chromium';
+// The server tests run in Chromium (playwright-core) or, with PENUMBRA_TEST_BROWSER=firefox, in
+// Firefox (puppeteer-core, firefox_adapter.mjs); the scripted-server tests need Playwright.
+export const browserName = process.env.PENUMBRA_TEST_BROWSER || 'chromium';
+const browsers = {
+  chromium: { path: process.env.CHROMIUM || '/usr/bin/chromium', driver: 'playwright-core', apt: 'chromium', variable: 'CHROMIUM' },
+  firefox: { path: process.env.FIREFOX || '/usr/bin/firefox-esr', driver: 'puppeteer-core', apt: 'firefox-esr', variable: 'FIREFOX' },
+};
+const chosen = browsers[browserName];
 
 const SERVER_START_TIMEOUT_MS = 60_000; // lavapipe compiles every pipeline before the first frame
 const SERVER_STOP_GRACE_MS = 3_000;
@@ -22,18 +31,22 @@ const LOG_TAIL_LINES = 40;
 // Why the tests cannot run here, or null. In CI a missing piece is a failure, elsewhere a skip.
 export async function missingPrerequisite({ needsServer = true } = {}) {
   if (needsServer && !fs.existsSync(binaryPath)) return `no penumbra binary at ${binaryPath} (set PENUMBRA_BINARY)`;
-  if (!fs.existsSync(chromiumPath)) return `no Chromium at ${chromiumPath} (apt install chromium, or set CHROMIUM)`;
+  if (!chosen) return `PENUMBRA_TEST_BROWSER=${browserName} is neither chromium nor firefox`;
+  if (!fs.existsSync(chosen.path)) {
+    return `no ${browserName} at ${chosen.path} (apt install ${chosen.apt}, or set ${chosen.variable})`;
+  }
   try {
-    await import('playwright-core');
+    await import(chosen.driver);
   } catch {
-    return `playwright-core is not installed: run npm ci --prefix ${path.relative(repoRoot, here)} in ${repoRoot}`;
+    return `${chosen.driver} is not installed: run npm ci --prefix ${path.relative(repoRoot, here)} in ${repoRoot}`;
   }
   return null;
 }
 
 export async function launchBrowser() {
+  if (browserName === 'firefox') return launchFirefox(chosen.path);
   const { chromium } = await import('playwright-core');
-  return chromium.launch({ executablePath: chromiumPath, args: ['--no-sandbox'], timeout: 30_000 });
+  return chromium.launch({ executablePath: chosen.path, args: ['--no-sandbox'], timeout: 30_000 });
 }
 
 // Starts `penumbra serve` on an ephemeral loopback port; resolves once it prints the address.
