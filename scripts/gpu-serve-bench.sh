@@ -17,6 +17,7 @@ mode=${1:-run}
 each=${SECONDS_EACH:-15}
 
 if [ "$mode" = pack ]; then
+  rm -rf .gpu  # what another pack left there (test binaries, layers) would not fit beside the peer
   scripts/gpu-bench-vs-seed.sh pack build/serve-probe  # .gpu/ with both programs, and .peer/
   tar -C .gpu -cf - bin lib | xz -T0 -6 > .gpu/payload.tar.xz
   rm -rf .gpu/bin .gpu/lib

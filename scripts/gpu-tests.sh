@@ -105,6 +105,9 @@ pack() {
   # The binaries travel compressed (a fifth of their size: ten test binaries and penumbra would not
   # fit the device tool's 64 MiB otherwise); `run` and `diagnose` unpack them.
   for b in $(cat .gpu/test-binaries) penumbra; do xz -T0 -6 -f ".gpu/bin/$b"; done
+  # So do the shared libraries (30 MiB as they are).
+  tar -C .gpu -cf - lib | xz -T0 -6 > .gpu/lib.tar.xz
+  rm -rf .gpu/lib
   { git rev-parse --short HEAD; git status --porcelain --untracked-files=no | grep -q . && echo "(with uncommitted changes)" || true; } \
     | paste -sd' ' > .gpu/commit
   report_size
@@ -138,6 +141,9 @@ prepare_host() {
     mv .gpu/layers/libVkLayer_khronos_validation.so.part .gpu/layers/libVkLayer_khronos_validation.so
   fi
   export VK_LAYER_PATH="$root/.gpu/layers"
+  if [ -f .gpu/lib.tar.xz ] && [ ! -d .gpu/lib ]; then
+    unxz_to .gpu/lib.tar.xz .gpu/lib.tar && tar -C .gpu -xf .gpu/lib.tar && rm -f .gpu/lib.tar
+  fi
   local b
   for b in $(cat .gpu/test-binaries) penumbra; do
     if [ -f ".gpu/bin/$b.xz" ] && [ ! -x ".gpu/bin/$b" ]; then
