@@ -7,6 +7,7 @@
 
 #include "interact/navigation.h"
 #include "interact/object_drag.h"
+#include "interact/play_step.h"
 #include "render/interactive_renderer.h"
 #include "render/scene_objects.h"
 #include "scene/animation.h"
@@ -41,6 +42,7 @@ struct LoopState {
     std::uint32_t frameNumber = 0;
     bool mustRender = true;  // a browser joined or something changed: render even when paused
     bool instancesMoved = false;
+    bool geometryChanged = false;  // a mesh moved (WorldChange): the renderer rebuilds the scene
     std::optional<Camera> shownCamera;
     std::optional<ViewSettings> shownSettings;
 };
@@ -117,13 +119,10 @@ void applyInput(LoopState& s, Scene& scene, float step) {
                                      s.nav.speed(), step))
         s.instancesMoved = true;
     if (s.remote.playing) {
-        s.nav.update(viewer::cameraInputFrom(in), step);
-        s.animationClock += step;
+        const viewer::WorldChange change = viewer::playStep(scene, s.nav, in, s.animationClock, step);
         s.remote.view.time = float(s.animationClock);
-        if (animatesGeometry(scene)) {
-            applyInstanceAnimations(scene, s.animationClock);
-            s.instancesMoved = true;
-        }
+        if (change.instancesMoved || change.geometryChanged) s.instancesMoved = true;
+        s.geometryChanged = s.geometryChanged || change.geometryChanged;
     }
     s.input.endFrame();
 }
@@ -161,7 +160,8 @@ void renderFrame(LoopState& s, const Scene& scene, InteractiveRenderer& renderer
                  const Camera& camera, double frameSeconds) {
     const auto now = Clock::now();
     if (s.shownCamera != camera || s.instancesMoved) s.pacer.noteMotion(now);
-    if (s.instancesMoved) renderer.setInstanceTransforms(scene);
+    if (s.geometryChanged) renderer.rebuildScene(scene, true);
+    else if (s.instancesMoved) renderer.setInstanceTransforms(scene);
     FrameMeta meta{++s.frameNumber, renderer.width(), renderer.height(), 0, s.pacer.moving(now), {}};
     meta.acks.assign(s.appliedSeq.begin(), s.appliedSeq.end());
     const bool copy = s.pacer.takeFrame(now, frameSeconds) || s.mustRender;
@@ -174,7 +174,7 @@ void renderFrame(LoopState& s, const Scene& scene, InteractiveRenderer& renderer
     if (copied) readback.publish(float(renderer.stats().passMilliseconds[std::size_t(ViewerPass::Frame)]));
     s.shownCamera = camera;
     s.shownSettings = s.remote.view;
-    s.mustRender = s.instancesMoved = false;
+    s.mustRender = s.instancesMoved = s.geometryChanged = false;
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "app/viewer/edit_panel.h"
 #include "interact/navigation.h"
 #include "interact/object_drag.h"
+#include "interact/play_step.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/screenshot.h"
 #include "app/viewer/ui_panel.h"
@@ -271,14 +272,10 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     // Paused, the camera stays where the shown frame was taken, and animated textures hold
     // their frame; playing, they run at the game's rate in simulated time (--fixed-dt too).
     if (advancing) {
-        loop.nav.update(cameraInputFrom(loop.input), step);
-        loop.animationClock += step;
+        const WorldChange change = playStep(scene, loop.nav, loop.input, loop.animationClock, step);
         settings.time = float(loop.animationClock);
-        // Animated instances (glTF animations, scene-file motions) follow the clock.
-        if (animatesGeometry(scene)) {
-            applyInstanceAnimations(scene, loop.animationClock);
-            instancesMoved = true;
-        }
+        if (change.geometryChanged) renderer.rebuildScene(scene, true);
+        else if (change.instancesMoved) instancesMoved = true;
     }
     // A grabbed instance follows the cursor, after the camera and the animations have moved.
     if (!automationDone && dragSelection(w, loop.pointer, scene, loop.camera())) instancesMoved = true;
