@@ -128,4 +128,9 @@ std::unique_ptr<gpu::Context> openDevice(const std::string& selector) {
     return std::move(result.context);
 }
 
+void addViewSettingOptions(CLI::App& cmd, ViewSettings& view) {
+    cmd.add_option("--resolution-scale", view.resolutionScale,
+                   "render at this multiple of the window, 0.25 to 2 (above 1 supersamples; default 1)");
+}
+
 }  // namespace penumbra::app

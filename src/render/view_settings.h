@@ -34,6 +34,23 @@ std::span<const std::pair<const char*, DebugView>> debugViewNames();
 std::optional<DebugView> debugViewFromName(std::string_view name);
 const char* debugViewName(DebugView view);
 
+// The ranges of the settings the panel, the command line (view, serve) and the browser's page
+// offer: one place, so the three agree.
+struct SettingRange {
+    float min, max;
+};
+// Of the window's size. Above 1 the frame is rendered larger and filtered down to the window
+// (supersampling: at 2, each window pixel averages 2x2 rendered ones).
+inline constexpr SettingRange kResolutionScaleRange{0.25f, 2.0f};
+
+// The render's side for a window side at `scale` (clamped to kResolutionScaleRange), at least 1.
+std::uint32_t scaledSide(std::uint32_t side, float scale);
+
+struct ViewSettings;
+// UsageError naming the flag of the first setting outside its range (the command line's check;
+// the panel and the page clamp instead).
+void checkViewSettingRanges(const ViewSettings& settings);
+
 struct ViewSettings {
     std::uint32_t samplesPerFrame = 1;
     std::uint32_t maxBounces = 8;
@@ -50,7 +67,7 @@ struct ViewSettings {
     // RenderSettings::shadowRouletteShare: scaled by the history's mean, so it acts once a pixel's
     // history holds PN_PIXEL_ESTIMATE_MIN_SAMPLES samples.
     float shadowRouletteShare = kDefaultShadowRouletteShare;
-    float resolutionScale = 1.0f;  // render at this fraction of the window, upscaled to it
+    float resolutionScale = 1.0f;  // render at this multiple of the window (kResolutionScaleRange)
     bool temporal = true;
     bool denoise = false;
     std::uint32_t denoiseIterations = 5;

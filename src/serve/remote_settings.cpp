@@ -45,7 +45,8 @@ bool applySetting(RemoteState& state, const std::string& name, const nlohmann::j
     } else if (name == "bounces") {
         if ((ok = readNumber(value, 1, 32, x, error))) v.maxBounces = std::uint32_t(std::lround(x));
     } else if (name == "scale") {
-        if ((ok = readNumber(value, 0.25, 1, x, error))) v.resolutionScale = float(x);
+        if ((ok = readNumber(value, kResolutionScaleRange.min, kResolutionScaleRange.max, x, error)))
+            v.resolutionScale = float(x);
     } else if (name == "temporal") {
         ok = readBool(value, v.temporal, error);
     } else if (name == "denoise") {
@@ -87,6 +88,11 @@ nlohmann::json settingsJson(const RemoteState& state) {
             {"torch", v.torch},
             {"exposure", v.exposure},
             {"playing", state.playing}};
+}
+
+nlohmann::json settingRangesJson() {
+    auto range = [](SettingRange r) { return nlohmann::json::array({r.min, r.max}); };
+    return {{"scale", range(kResolutionScaleRange)}};
 }
 
 nlohmann::json debugViewsJson() {

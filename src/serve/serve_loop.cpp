@@ -49,8 +49,7 @@ struct LoopState {
 
 // The renderer's picture size at the current resolution scale.
 std::pair<std::uint32_t, std::uint32_t> pictureSize(const ServeOptions& o, const ViewSettings& v) {
-    const float scale = std::clamp(v.resolutionScale, 0.1f, 1.0f);
-    return {std::max(1u, std::uint32_t(float(o.width) * scale)), std::max(1u, std::uint32_t(float(o.height) * scale))};
+    return {scaledSide(o.width, v.resolutionScale), scaledSide(o.height, v.resolutionScale)};
 }
 
 void select(LoopState& s, const Scene& scene, const InteractiveRenderer& renderer, const ClickMessage& click) {
@@ -132,6 +131,7 @@ nlohmann::json vec(Vec3 v) { return {v.x, v.y, v.z}; }
 nlohmann::json helloJson(const LoopState& s, const Scene& scene, const InteractiveRenderer& r, const ServeOptions& o) {
     return {{"t", "hello"},          {"scene", scene.name},         {"width", o.width},
             {"height", o.height},    {"settings", settingsJson(s.remote)}, {"debugViews", debugViewsJson()},
+            {"ranges", settingRangesJson()},
             {"walking", s.nav.walking()}, {"canWalk", s.nav.canWalk()}, {"hasTorch", r.hasTorch()},
             {"controls", kControls}};
 }

@@ -331,7 +331,7 @@ void renderOrShow(LoopState& loop, VkCommandBuffer cmd, InteractiveRenderer& ren
                   VkExtent2D framebuffer, const ViewSettings& settings, const ViewerOptions& options,
                   bool automationDone) {
     auto scaled = [&](std::uint32_t side) {
-        return std::max(1u, std::uint32_t(float(side) * std::clamp(settings.resolutionScale, 0.1f, 1.0f)));
+        return scaledSide(side, settings.resolutionScale);
     };
     const std::uint32_t rw = scaled(framebuffer.width), rh = scaled(framebuffer.height);
     const Camera camera = loop.camera();
@@ -369,7 +369,7 @@ std::string cameraLine(const Camera& camera) {
 }
 
 void runViewer(Scene scene, const ViewerOptions& options) {
-    ViewSettings settings;
+    ViewSettings settings = options.view;
     settings.apertureRadius = scene.camera.apertureRadius;
     settings.focusDistance = scene.camera.focusDistance;
     settings.samplesPerFrame = options.samplesPerFrame;
