@@ -34,6 +34,8 @@ std::uint32_t scaledSide(std::uint32_t side, float scale) {
 
 void checkViewSettingRanges(const ViewSettings& v) {
     checkRange(v.resolutionScale, kResolutionScaleRange, "--resolution-scale");
+    checkRange(v.textureSaturation, kTextureSaturationRange, "--texture-saturation");
+    checkRange(v.renderDistance, kRenderDistanceRange, "--render-distance");
 }
 
 std::span<const std::pair<const char*, DebugView>> debugViewNames() { return kDebugViews; }

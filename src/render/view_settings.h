@@ -42,6 +42,10 @@ struct SettingRange {
 // Of the window's size. Above 1 the frame is rendered larger and filtered down to the window
 // (supersampling: at 2, each window pixel averages 2x2 rendered ones).
 inline constexpr SettingRange kResolutionScaleRange{0.25f, 2.0f};
+// Of base-colour textures: 0 grey, 1 as they are, 2 twice as far from grey (shared/view_limits.h).
+inline constexpr SettingRange kTextureSaturationRange{0.0f, 2.0f};
+// Metres across the floor from the camera beyond which nothing is drawn; 0: no limit.
+inline constexpr SettingRange kRenderDistanceRange{0.0f, 500.0f};
 
 // The render's side for a window side at `scale` (clamped to kResolutionScaleRange), at least 1.
 std::uint32_t scaledSide(std::uint32_t side, float scale);
@@ -92,6 +96,8 @@ struct ViewSettings {
     float torchIntensity = 80.0f;  // candela
     float torchRange = 0.0f;       // 0: unlimited
     float time = 0.0f;             // seconds: the moment animated textures show (advanced while playing)
+    float textureSaturation = 1.0f;  // kTextureSaturationRange (RenderSettings::textureSaturation)
+    float renderDistance = 0.0f;     // metres, kRenderDistanceRange; 0: no limit
 
     bool operator==(const ViewSettings&) const = default;
 };
