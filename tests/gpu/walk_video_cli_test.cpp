@@ -41,9 +41,9 @@ void expectWalkVideo(const DecodedVideo& video, std::size_t frames, int width, i
     ASSERT_EQ(video.frames.size(), frames);
     for (std::size_t i = 0; i < frames; ++i) EXPECT_GT(meanValue(video.frames[i]), 4.0) << "frame " << i << " is black";
     // Walking forward, then turning: every frame differs from the one before by more than codec
-    // noise, but the last, which plays the release of W and so stands where the one before stood.
+    // noise, but the last, which plays the release of W and so stands where the one before stood
+    // (the final-quality test checks it repeats that frame; the viewer's frames differ by noise).
     EXPECT_GT(meanAbsDifference(video.frames.front(), video.frames.back()), 8.0);
-    EXPECT_LT(meanAbsDifference(video.frames[frames - 2], video.frames[frames - 1]), 0.5);
     for (std::size_t i = 1; i + 1 < frames; ++i)
         EXPECT_GT(meanAbsDifference(video.frames[i - 1], video.frames[i]), 0.5) << "frames " << i - 1 << ", " << i;
 }
@@ -66,6 +66,13 @@ TEST_F(WalkVideoTest, AWalkBecomesAnH264VideoOfItsCameraPath) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("9 frames 64x48 at 8 fps (final quality, 2 spp a frame)"), std::string::npos) << r.err;
     expectWalkVideo(decodeVideo(dir / "e1m1.mp4"), 9, 64, 48);
+    {
+        // The last frame plays the release of W: the camera stands, and a final frame (the same
+        // samples for the same view) repeats the one before, up to the codec.
+        const DecodedVideo v = decodeVideo(dir / "e1m1.mp4");
+        ASSERT_EQ(v.frames.size(), 9u);
+        EXPECT_LT(meanAbsDifference(v.frames[7], v.frames[8]), 0.5);
+    }
     EXPECT_EQ(filesIn(dir).size(), 2u);  // walk.txt and the video: no temporary file left
 
     // The same walk as images: the video's frames are these, up to the codec's loss.
