@@ -20,6 +20,7 @@ packages=(
   clang libclang-rt-14-dev                      # libFuzzer targets (tests/fuzz)
   freedoom glmark2-data assimp-testmodels       # real scenes the tests load (never committed)
   libturbojpeg0-dev libboost-dev                # penumbra serve: JPEG frames, HTTP + WebSocket (Boost.Beast)
+  libavcodec-dev libavformat-dev libswscale-dev # H.264 videos of walks and sequences (src/image/video_writer.cpp)
   chromium firefox-esr                          # the browser tests of penumbra serve (tests/browser)
   ccache                                        # compiler cache for CI's two builds (.ci/run)
 )

@@ -4,6 +4,7 @@
 #define PN_BVH_GLSL
 
 #include "lib/intersect.glsl"
+#include "shared/view_limits.h"
 #include "lib/textures.glsl"
 #include "lib/sprite.glsl"
 
@@ -178,6 +179,10 @@ Hit traverseBrute(vec3 o, vec3 d, float tMax, bool anyHit) {
 
 // One ray through the chosen acceleration structure; anyHit for shadow rays.
 Hit traceRay(vec3 o, vec3 d, float tMax, bool anyHit) {
+    // The render distance: nothing beyond it is hit (shared/view_limits.h).
+    if (frame.renderDistance > 0.0)
+        tMax = min(tMax, renderDistanceExit(o.x - frame.cameraPosition.x, o.z - frame.cameraPosition.z, d.x, d.z,
+                                            frame.renderDistance));
     if (PN_HAS(PN_FEATURE_WIDE_BVH) && frame.accel == PN_ACCEL_WIDE) return traverseWide(o, d, tMax, anyHit);
     return PN_HAS(PN_FEATURE_BRUTE_FORCE) && frame.accel == PN_ACCEL_BRUTE ? traverseBrute(o, d, tMax, anyHit)
                                                                            : traverseBvh(o, d, tMax, anyHit);

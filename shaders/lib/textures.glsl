@@ -6,6 +6,7 @@
 
 #include "shared/animation.h"
 #include "shared/color.h"
+#include "shared/view_limits.h"
 
 int wrapTexel(int i, int size, uint mode) {
     if (mode == PN_WRAP_CLAMP) return clamp(i, 0, size - 1);
@@ -68,6 +69,11 @@ vec2 interpolateUv(TriVerts tv, float u, float v) {
 vec4 materialBaseColor(Material m, vec2 uv) {
     if (!PN_HAS(PN_FEATURE_TEXTURES) || m.albedoTexture == PN_NO_TEXTURE) return vec4(m.albedo, 1.0);
     vec4 t = sampleTexture(m.albedoTexture, uv, m.albedoWrap);
+    if (frame.textureSaturation != 1.0) {  // shared/view_limits.h
+        float lum = luminance(t.rgb);
+        t.rgb = vec3(saturateChannel(t.r, lum, frame.textureSaturation), saturateChannel(t.g, lum, frame.textureSaturation),
+                     saturateChannel(t.b, lum, frame.textureSaturation));
+    }
     return vec4(m.albedo * t.rgb, t.a);
 }
 

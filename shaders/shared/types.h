@@ -487,7 +487,11 @@ PN_STRUCT(FrameUniforms) {
     uint topRoot;          // with instanceCount > 0: the top-level BVH's root node
     uint lightGridOffset;  // word of the light grid in the light tree's buffer (0: none, walk the tree)
     float shadowRouletteShare;  // shadow-ray roulette below this share of the pixel's estimate (lib/path.glsl); 0: off
-    uint pad3;
+    float textureSaturation;    // of base-colour textures (shared/view_limits.h); 1: as they are
+    float renderDistance;       // metres across the floor from the camera; nothing beyond is hit; 0: no limit
+    uint pad4;
+    uint pad5;
+    uint pad6;
 };
 
 // ---- viewer passes (temporal.comp, atrous.comp, tonemap.comp, gbuffer.comp, heatmap.comp) ----
@@ -722,7 +726,8 @@ static_assert(sizeof(EnvAlias) == 16 && offsetof(EnvAlias, alias) == 4 && offset
 static_assert(sizeof(Instance) == 112 && offsetof(Instance, worldToObject) == 48 && offsetof(Instance, rootNode) == 96 &&
               offsetof(Instance, firstPrimitive) == 100 && offsetof(Instance, primitiveCount) == 104 &&
               offsetof(Instance, id) == 108);
-static_assert(sizeof(FrameUniforms) == 192 && offsetof(FrameUniforms, topLightCount) == 160 &&
+static_assert(sizeof(FrameUniforms) == 208 && offsetof(FrameUniforms, textureSaturation) == 188 &&
+              offsetof(FrameUniforms, renderDistance) == 192 && offsetof(FrameUniforms, topLightCount) == 160 &&
               offsetof(FrameUniforms, instanceCount) == 152 && offsetof(FrameUniforms, topRoot) == 176 &&
               offsetof(FrameUniforms, envLuminance) == 164 && offsetof(FrameUniforms, lightPickUniform) == 172 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
               offsetof(FrameUniforms, cameraRight) == 16 && offsetof(FrameUniforms, aspect) == 28 &&

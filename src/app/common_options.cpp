@@ -128,4 +128,13 @@ std::unique_ptr<gpu::Context> openDevice(const std::string& selector) {
     return std::move(result.context);
 }
 
+void addViewSettingOptions(CLI::App& cmd, ViewSettings& view) {
+    cmd.add_option("--resolution-scale", view.resolutionScale,
+                   "render at this multiple of the window, 0.25 to 2 (above 1 supersamples; default 1)");
+    cmd.add_option("--texture-saturation", view.textureSaturation,
+                   "saturation of textures, 0 (grey) to 2; 1 keeps them as they are (default)");
+    cmd.add_option("--render-distance", view.renderDistance,
+                   "metres across the floor beyond which nothing is drawn (default 0: no limit)");
+}
+
 }  // namespace penumbra::app

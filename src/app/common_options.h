@@ -10,6 +10,7 @@
 
 #include "gpu/context.h"
 #include "render/settings.h"
+#include "render/view_settings.h"
 #include "scene/io/env_spec.h"
 #include "scene/io/scene_json.h"
 #include "scene/io/wad/wad_loader.h"
@@ -42,6 +43,9 @@ void addCameraOptions(CLI::App& cmd, CameraOverrides& overrides);
 void addEnvironmentOptions(CLI::App& cmd, EnvironmentSpec& env);
 // --wad-glow SCALE, --wad-sector-light SCALE, --wad-filter nearest|bilinear (Doom levels).
 void addWadOptions(CLI::App& cmd, WadOptions& wad);
+// The view settings both the window and the browser start from (view, serve): --resolution-scale
+// and the other settings the WebGPU renderer offers; checked with checkViewSettingRanges.
+void addViewSettingOptions(CLI::App& cmd, ViewSettings& view);
 
 // Parses "x,y,z"; UsageError naming the flag on anything else.
 Vec3 parseVec3(const std::string& text, const std::string& flag);

@@ -16,7 +16,9 @@
 #include "core/atomic_file.h"
 #include "core/duration.h"
 #include "core/error.h"
+#include "image/video_writer.h"
 #include "image/write.h"
+#include "interact/input_script.h"
 #include "scene/animation.h"
 
 namespace penumbra::app {
@@ -100,7 +102,8 @@ std::filesystem::path defaultOutput(const RenderArgs& args, bool sequence) {
     if (!args.output.empty()) return args.output;
     std::string stem = std::filesystem::path(args.scene).stem().string();
     if (!args.map.empty()) stem += "-" + args.map;
-    std::filesystem::path output = std::filesystem::path("out") / (stem + (sequence ? "_%04d.png" : ".png"));
+    const char* suffix = !args.walk.empty() ? ".mp4" : sequence ? "_%04d.png" : ".png";
+    std::filesystem::path output = std::filesystem::path("out") / (stem + suffix);
     std::error_code ec;
     std::filesystem::create_directories(output.parent_path(), ec);  // our own default folder
     return output;
@@ -123,6 +126,42 @@ void printSummary(const Scene& scene, const FrameJob& job, const gpu::Context& c
                  output.string().c_str());
 }
 
+// A walk (--walk) or a video output: the flags that go with frames into one output, checked,
+// and the walk read (a bad file is one line before any device opens). None for other renders.
+std::optional<VideoJob> videoJob(const RenderArgs& args, const CLI::App& cmd, const std::filesystem::path& output) {
+    const bool walk = !args.walk.empty(), video = isVideoPath(output);
+    if (!walk && !video) {
+        if (args.viewerQuality) throw UsageError("--viewer-quality renders walks and videos: add --walk FILE");
+        return std::nullopt;
+    }
+    if (video && !walk && args.frames.empty())
+        throw UsageError("a video needs frames: --walk FILE (a walk's camera path) or --frames A..B");
+    if (walk && !args.frames.empty()) throw UsageError("--walk renders the walk's own frames: leave out --frames");
+    if (!args.resume.empty() || args.checkpointSeconds > 0)
+        throw UsageError("walks and videos cannot be checkpointed or resumed (--checkpoint, --resume)");
+    if (!args.aovs.empty()) throw UsageError("--aov writes EXR layers of one image, not of walks and videos");
+    if (args.mpi) throw UsageError("walks and videos render on one device: leave out --mpi");
+    VideoJob job;
+    job.fps = args.fps;
+    job.offsetSeconds = args.time;
+    job.viewerQuality = args.viewerQuality;
+    if (args.viewerQuality) {
+        job.samplesPerFrame = cmd.count("--spp") ? args.settings.samplesPerPixel : 1;
+        if (job.samplesPerFrame < 1 || job.samplesPerFrame > 64)
+            throw UsageError("with --viewer-quality, --spp is samples a frame: between 1 and 64");
+        if (!video && formatFromPath(output) != ImageFormat::Png)
+            throw UsageError("--viewer-quality frames are display-ready: write a video or .png images");
+    }
+    if (walk) {
+        job.walk = viewer::loadInputScript(args.walk, "--walk");
+        job.walkName = args.walk;
+    } else {
+        job.frames = parseFrames(args.frames);
+    }
+    (void)videoFrameCount(job);  // a walk too long is a UsageError now, not after loading the scene
+    return job;
+}
+
 // Everything before rendering: the scene, the checked job, the output, the device. writesOutput:
 // whether this process writes the output (a rank other than 0 of a single image does not).
 RenderPlan prepareRender(const RenderArgs& args, const CLI::App& cmd, const std::string& device, bool writesOutput) {
@@ -135,7 +174,9 @@ RenderPlan prepareRender(const RenderArgs& args, const CLI::App& cmd, const std:
     plan.output = defaultOutput(args, plan.sequence);
     const std::filesystem::path& output = plan.output;
     // Fail before rendering, not after: a bad name or folder would waste the whole render.
-    formatFromPath(output);
+    plan.video = videoJob(args, cmd, output);
+    const bool video = isVideoPath(output);
+    if (!video) formatFromPath(output);
     std::error_code ec;
     if (!plan.sequence && !args.resume.empty() && !std::filesystem::is_regular_file(args.resume, ec))
         throw Error("--resume " + args.resume + ": no such checkpoint file (it is OUTPUT.state, written by --checkpoint "
@@ -143,7 +184,7 @@ RenderPlan prepareRender(const RenderArgs& args, const CLI::App& cmd, const std:
     if (plan.sequence && !args.resume.empty() && args.resume != output.string())
         throw UsageError("with --frames, --resume takes the output pattern ('" + output.string() + "')");
     if (writesOutput) {
-        checkWritable(plan.sequence ? framePath(output, 0) : output);
+        checkWritable(plan.sequence && !video ? framePath(output, 0) : output);
         if (job.aovs.any()) checkWritable(aovPathFor(output));
     }
     plan.ctx = openDevice(device);
@@ -155,12 +196,18 @@ RenderPlan prepareRender(const RenderArgs& args, const CLI::App& cmd, const std:
 
 void runRender(const RenderArgs& args, const CLI::App& cmd) {
     if (std::unique_ptr<distributed::Comm> comm = startRanks(args.mpi)) {
+        if (!args.walk.empty() || isVideoPath(args.output))
+            throw UsageError("walks and videos render on one device, not across MPI ranks");
         renderOnRanks(*comm, args, [&](const std::string& device, bool writesOutput) {
             return prepareRender(args, cmd, device, writesOutput);
         });
         return;
     }
     RenderPlan plan = prepareRender(args, cmd, args.device, true);
+    if (plan.video) {
+        renderVideo(*plan.ctx, plan.scene, plan.job, plan.output, *plan.video);
+        return;
+    }
     if (plan.sequence) {
         renderSequence(*plan.ctx, plan.scene, plan.job, plan.output, plan.sequenceOptions);
         return;

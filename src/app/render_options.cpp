@@ -48,7 +48,8 @@ void addRenderOptions(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("scene", a.scene, sceneArgumentHelp());
     cmd.add_option("--map", a.map, "level of a .wad file, e.g. E1M1 or MAP01 (default: the first)");
     cmd.add_option("-o,--output", a.output,
-                   "output file, .png or .exr (default out/SCENE.png); with --frames, %04d in the name is the frame number");
+                   "output file, .png or .exr (default out/SCENE.png), or a video (.mp4, .mkv, .mov) of --walk or --frames; "
+                   "an image sequence's name takes the frame number as %04d");
     cmd.add_option("--spp", a.settings.samplesPerPixel, "samples per pixel (with --time-limit or --noise-threshold: at most)");
     cmd.add_option("--bounces", a.settings.maxBounces, "maximum path segments after the camera ray");
     cmd.add_option("--width", a.settings.width, "image width in pixels");
@@ -78,6 +79,12 @@ void addRenderOptions(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--frames", a.frames, "render frames A..B of an animated scene, each at time frame / --fps + --time");
     cmd.add_option("--time", a.time, "the moment of the scene to render, in seconds (camera paths, animations, Doom's animated textures)");
     cmd.add_option("--fps", a.fps, "frames per second of --frames (default 24)");
+    cmd.add_option("--walk", a.walk,
+                   "replay this walk (the viewer's --script events, at 1/--fps seconds a frame) and render its "
+                   "camera path, frame by frame, to a video (-o walk.mp4, the default) or images (-o f_%04d.png)");
+    cmd.add_flag("--viewer-quality", a.viewerQuality,
+                 "walks and videos: render each frame as the viewer does (--spp samples a frame, default 1, "
+                 "accumulated over frames; --denoise its denoiser) instead of a final frame");
     cmd.add_option("--progress", a.progress, "bar (default, on a terminal), json (lines on stdout) or none");
     cmd.add_flag("--mpi", a.mpi,
                  "render across the ranks of an MPI job (implied when started by mpirun; docs/DISTRIBUTED.md)");

@@ -44,6 +44,8 @@ struct RenderArgs {
     double fps = 24;                 // --fps: frames per second of a sequence
     std::string progress = "bar";    // --progress bar|json|none
     bool mpi = false;                // --mpi: join an MPI job even when not started by mpirun
+    std::string walk;                // --walk FILE: replay a walk (the viewer's --script format)
+    bool viewerQuality = false;      // --viewer-quality: walks and videos at the viewer's settings
 };
 
 // Which AOV layers to write.

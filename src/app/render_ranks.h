@@ -11,6 +11,7 @@
 
 #include "app/render_options.h"
 #include "app/render_sequence.h"
+#include "app/render_video.h"
 #include "distributed/comm.h"
 #include "gpu/context.h"
 #include "scene/scene.h"
@@ -26,6 +27,8 @@ struct RenderPlan {
     std::filesystem::path output;  // the image, or the sequence's pattern
     std::unique_ptr<gpu::Context> ctx;
     SequenceOptions sequenceOptions;
+    // A walk (--walk) or a video output: frames into one output (render_video.h).
+    std::optional<VideoJob> video;
 };
 using PrepareRender = std::function<RenderPlan(const std::string& device, bool writesOutput)>;
 

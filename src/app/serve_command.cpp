@@ -50,6 +50,7 @@ void checkArgs(ServeArgs& a) {
     if (!debug) throw UsageError("--debug: no debug view '" + a.debug + "'");
     o.view.debug = *debug;
     o.view.denoise = a.denoise;
+    checkViewSettingRanges(o.view);
 }
 
 void runServe(ServeArgs args) {
@@ -85,6 +86,7 @@ void registerServe(CLI::App& app, Action& action) {
     cmd->add_flag("--denoise", a->denoise, "start with the a-trous denoiser on");
     cmd->add_option("--debug", a->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles, boxes, leaf-depth, leaf-triangles");
     cmd->add_flag("--fly", o.fly, "start in free flight on Doom levels (F toggles walking)");
+    addViewSettingOptions(*cmd, o.view);
     cmd->add_option("--quality", o.encode.restQuality, "JPEG quality while nothing moves (default 85)");
     cmd->add_option("--motion-quality", o.encode.motionQuality, "JPEG quality while the camera moves (default 50)");
     cmd->add_option("--encode-threads", o.encode.threads, "CPU threads encoding each frame's strips (default 4)");

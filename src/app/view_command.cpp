@@ -41,6 +41,7 @@ void runView(ViewArgs args) {
     args.options.fixedDt = args.fixedDt;
     // Read before any window opens, so a bad script is one line and exit code 1.
     if (!args.script.empty()) args.options.script = viewer::loadInputScript(args.script);
+    checkViewSettingRanges(args.options.view);
     args.options.vsync = !args.noVsync;
     args.options.debug = viewer::parseDebugView(args.debug);
     Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env, args.wad);
@@ -67,6 +68,7 @@ void registerView(CLI::App& app, Action& action) {
                   "on exit, print 'camera X,Y,Z direction DX,DY,DZ' (scene units)");
     cmd->add_flag("--fly", args->options.fly, "start in free flight on Doom levels (F toggles walking)");
     cmd->add_flag("--denoise", args->options.denoise, "start with the a-trous denoiser on");
+    addViewSettingOptions(*cmd, args->options.view);
     cmd->add_option("--debug", args->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles, boxes, leaf-depth, leaf-triangles");
     addDeviceOption(*cmd, args->options.device);
     addBvhCacheOption(*cmd);

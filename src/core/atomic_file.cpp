@@ -84,6 +84,28 @@ void writeFileAtomically(const fs::path& target,
     failWrite(target, reason);
 }
 
+PendingFile::PendingFile(const fs::path& target) : target_(target) {
+    if (target.filename().empty()) failWrite(target, "not a file name");
+    tmp_ = createTempFile(target);
+}
+
+PendingFile::~PendingFile() {
+    if (committed_) return;
+    std::error_code ignored;
+    fs::remove(tmp_, ignored);
+}
+
+void PendingFile::commit() {
+    PN_CHECK(!committed_);
+    try {
+        syncFile(tmp_);
+        if (::rename(tmp_.c_str(), target_.c_str()) != 0) throw Error(std::strerror(errno));
+        committed_ = true;
+    } catch (const std::exception& e) {
+        failWrite(target_, e.what());  // the destructor removes the temporary file
+    }
+}
+
 void writeBytesAtomically(const fs::path& target, std::span<const unsigned char> bytes) {
     writeFileAtomically(target, [&](const fs::path& tmp) {
         // POSIX I/O rather than iostreams: write and close report errno (ENOSPC, EIO, EDQUOT),

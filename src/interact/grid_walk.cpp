@@ -7,6 +7,7 @@ namespace penumbra::viewer {
 namespace {
 
 constexpr float kQuarter = 1.5707963f;
+constexpr float kPi = 3.14159265f;
 
 // The horizontal direction of facing f (quarter turns left from -z).
 Vec3 directionOf(float yaw) { return {-std::sin(yaw), 0, -std::cos(yaw)}; }
@@ -46,6 +47,7 @@ void GridWalker::update(const CameraInput& in, float seconds) {
     if (turn == 0 && ahead == 0 && side == 0) return;
     fromEye_ = eyeAt(x_, z_);
     fromYaw_ = float(facing_) * kQuarter;
+    moving_ = turn == 0;
     if (turn != 0) {
         facing_ = (facing_ + turn + 4) % 4;
         // Turning the short way round from 3 to 0 and back: the start yaw moves by a full turn.
@@ -69,6 +71,7 @@ Camera GridWalker::camera() const {
     const float toYaw = float(facing_) * kQuarter;
     Camera c = base_;
     c.position = fromEye_ + (to - fromEye_) * t;
+    if (moving_ && progress_ < 1.0f) c.position.y += kBobFraction * grid_.tileSize * std::sin(kPi * progress_);
     c.lookAt = c.position + directionOf(fromYaw_ + (toYaw - fromYaw_) * t);
     c.up = Vec3{0, 1, 0};
     return c;

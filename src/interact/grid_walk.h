@@ -12,6 +12,10 @@ namespace penumbra::viewer {
 class GridWalker {
 public:
     static constexpr float kStepSeconds = 0.18f;
+    // Head bob: a step forward, back or sideways lifts the eye by up to this fraction of a tile
+    // and sets it down again (half a sine over the step; turns do not bob). The WebGPU renderer's
+    // is 0.06 m on 2 m tiles over its 0.25 s step.
+    static constexpr float kBobFraction = 0.03f;
 
     // Starts on the tile under `start` (or the nearest walkable one), facing the axis closest to
     // its view direction.
@@ -34,6 +38,7 @@ private:
     Vec3 fromEye_;
     float fromYaw_ = 0;       // radians, of the pose the step started from
     float progress_ = 1.0f;  // of the current step, [0, 1]
+    bool moving_ = false;    // the current step goes to another tile (a turn: false)
 };
 
 }  // namespace penumbra::viewer

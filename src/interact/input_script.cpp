@@ -142,18 +142,18 @@ std::vector<ScriptEvent> parseInputScript(std::string_view text, const std::stri
     return events;
 }
 
-std::vector<ScriptEvent> loadInputScript(const std::string& path) {
+std::vector<ScriptEvent> loadInputScript(const std::string& path, const std::string& option) {
     std::error_code ec;
     if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-        throw Error("--script: cannot read " + path + ": it is not a regular file");
+        throw Error(option + ": cannot read " + path + ": it is not a regular file");
     std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) throw Error("--script: cannot read " + path);
+    if (!in) throw Error(option + ": cannot read " + path);
     const std::streamoff size = in.tellg();
     if (size < 0 || size > kMaxScriptBytes)
-        throw Error("--script: " + path + " is larger than 16 MiB");
+        throw Error(option + ": " + path + " is larger than 16 MiB");
     std::string text(std::size_t(size), '\0');
     in.seekg(0);
-    if (!in.read(text.data(), size)) throw Error("--script: cannot read " + path);
+    if (!in.read(text.data(), size)) throw Error(option + ": cannot read " + path);
     return parseInputScript(text, path);
 }
 

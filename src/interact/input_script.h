@@ -28,8 +28,9 @@ constexpr double kMaxScriptSeconds = 1e6;
 
 // Throws Error "NAME:LINE: what is wrong" on the first malformed line.
 std::vector<ScriptEvent> parseInputScript(std::string_view text, const std::string& name);
-// Reads and parses a file (Error when it cannot be read or is larger than 16 MiB).
-std::vector<ScriptEvent> loadInputScript(const std::string& path);
+// Reads and parses a file (Error when it cannot be read or is larger than 16 MiB); `option` is
+// the flag that named it, for the message (--script, or render's --walk).
+std::vector<ScriptEvent> loadInputScript(const std::string& path, const std::string& option = "--script");
 
 // The GLFW key code of a key name (case-insensitive, without GLFW_KEY_), or -1.
 int keyCodeFromName(std::string_view name);

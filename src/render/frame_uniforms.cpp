@@ -25,6 +25,8 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.maxBounces = settings.maxBounces;
     f.rouletteStart = settings.rouletteStart;
     f.shadowRouletteShare = settings.shadowRouletteShare;
+    f.textureSaturation = settings.textureSaturation;
+    f.renderDistance = settings.renderDistance;
     f.lightNodeCount = lightNodeCount;
     f.triCount = triCount;
     f.nodeCount = nodeCount;

@@ -326,6 +326,8 @@ shader::FrameUniforms InteractiveRenderer::frameUniforms(const Camera& camera, c
     rs.shadowRouletteShare = s.shadowRouletteShare;
     rs.seed = seed_;
     rs.time = s.time;
+    rs.textureSaturation = s.textureSaturation;
+    rs.renderDistance = s.renderDistance;
     Camera lens = camera;
     lens.apertureRadius = s.apertureRadius;
     lens.focusDistance = s.focusDistance;

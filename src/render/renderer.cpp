@@ -92,6 +92,11 @@ void Renderer::restart(const Camera& camera) {
     stats_ = {};
 }
 
+void Renderer::restart(const Camera& camera, float time) {
+    settings_.time = time;
+    restart(camera);
+}
+
 namespace {
 
 // Copies host data into an existing device buffer through a staging buffer.

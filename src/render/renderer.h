@@ -45,6 +45,8 @@ public:
     // Drops every sample so far and looks through `camera` from now on: one pipeline for several
     // views of a scene (compiling it is most of a small render's time).
     void restart(const Camera& camera);
+    // The same at another moment of animated textures (RenderSettings::time): a walk's frames.
+    void restart(const Camera& camera, float time);
     std::uint32_t passesDone() const { return passesDone_; }
     void setPassesDone(std::uint32_t passes);
 

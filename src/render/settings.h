@@ -40,6 +40,11 @@ struct RenderSettings {
     // A pixel's samples in one pass share their camera ray (TracePass::setSharesCameraRays): the
     // viewer's setting, here so that tests can render with it.
     bool shareCameraRays = false;
+    // The WebGPU renderer's view settings (shared/view_limits.h): base-colour textures'
+    // saturation (1: as they are), and the render distance across the floor in metres beyond
+    // which nothing is hit (0: no limit). The viewer's come from ViewSettings.
+    float textureSaturation = 1.0f;
+    float renderDistance = 0.0f;
     // Paths per trace dispatch (render/passes/trace_tiles.h); 0: the device's default.
     std::uint64_t pathsPerDispatch = 0;
 };

@@ -34,6 +34,27 @@ std::span<const std::pair<const char*, DebugView>> debugViewNames();
 std::optional<DebugView> debugViewFromName(std::string_view name);
 const char* debugViewName(DebugView view);
 
+// The ranges of the settings the panel, the command line (view, serve) and the browser's page
+// offer: one place, so the three agree.
+struct SettingRange {
+    float min, max;
+};
+// Of the window's size. Above 1 the frame is rendered larger and filtered down to the window
+// (supersampling: at 2, each window pixel averages 2x2 rendered ones).
+inline constexpr SettingRange kResolutionScaleRange{0.25f, 2.0f};
+// Of base-colour textures: 0 grey, 1 as they are, 2 twice as far from grey (shared/view_limits.h).
+inline constexpr SettingRange kTextureSaturationRange{0.0f, 2.0f};
+// Metres across the floor from the camera beyond which nothing is drawn; 0: no limit.
+inline constexpr SettingRange kRenderDistanceRange{0.0f, 500.0f};
+
+// The render's side for a window side at `scale` (clamped to kResolutionScaleRange), at least 1.
+std::uint32_t scaledSide(std::uint32_t side, float scale);
+
+struct ViewSettings;
+// UsageError naming the flag of the first setting outside its range (the command line's check;
+// the panel and the page clamp instead).
+void checkViewSettingRanges(const ViewSettings& settings);
+
 struct ViewSettings {
     std::uint32_t samplesPerFrame = 1;
     std::uint32_t maxBounces = 8;
@@ -50,7 +71,7 @@ struct ViewSettings {
     // RenderSettings::shadowRouletteShare: scaled by the history's mean, so it acts once a pixel's
     // history holds PN_PIXEL_ESTIMATE_MIN_SAMPLES samples.
     float shadowRouletteShare = kDefaultShadowRouletteShare;
-    float resolutionScale = 1.0f;  // render at this fraction of the window, upscaled to it
+    float resolutionScale = 1.0f;  // render at this multiple of the window (kResolutionScaleRange)
     bool temporal = true;
     bool denoise = false;
     std::uint32_t denoiseIterations = 5;
@@ -75,6 +96,8 @@ struct ViewSettings {
     float torchIntensity = 80.0f;  // candela
     float torchRange = 0.0f;       // 0: unlimited
     float time = 0.0f;             // seconds: the moment animated textures show (advanced while playing)
+    float textureSaturation = 1.0f;  // kTextureSaturationRange (RenderSettings::textureSaturation)
+    float renderDistance = 0.0f;     // metres, kRenderDistanceRange; 0: no limit
 
     bool operator==(const ViewSettings&) const = default;
 };

@@ -45,7 +45,14 @@ bool applySetting(RemoteState& state, const std::string& name, const nlohmann::j
     } else if (name == "bounces") {
         if ((ok = readNumber(value, 1, 32, x, error))) v.maxBounces = std::uint32_t(std::lround(x));
     } else if (name == "scale") {
-        if ((ok = readNumber(value, 0.25, 1, x, error))) v.resolutionScale = float(x);
+        if ((ok = readNumber(value, kResolutionScaleRange.min, kResolutionScaleRange.max, x, error)))
+            v.resolutionScale = float(x);
+    } else if (name == "saturation") {
+        if ((ok = readNumber(value, kTextureSaturationRange.min, kTextureSaturationRange.max, x, error)))
+            v.textureSaturation = float(x);
+    } else if (name == "renderDistance") {
+        if ((ok = readNumber(value, kRenderDistanceRange.min, kRenderDistanceRange.max, x, error)))
+            v.renderDistance = float(x);
     } else if (name == "temporal") {
         ok = readBool(value, v.temporal, error);
     } else if (name == "denoise") {
@@ -80,6 +87,8 @@ nlohmann::json settingsJson(const RemoteState& state) {
     return {{"spp", v.samplesPerFrame},
             {"bounces", v.maxBounces},
             {"scale", v.resolutionScale},
+            {"saturation", v.textureSaturation},
+            {"renderDistance", v.renderDistance},
             {"temporal", v.temporal},
             {"denoise", v.denoise ? v.denoiseIterations : 0u},
             {"debug", debugViewName(v.debug)},
@@ -87,6 +96,13 @@ nlohmann::json settingsJson(const RemoteState& state) {
             {"torch", v.torch},
             {"exposure", v.exposure},
             {"playing", state.playing}};
+}
+
+nlohmann::json settingRangesJson() {
+    auto range = [](SettingRange r) { return nlohmann::json::array({r.min, r.max}); };
+    return {{"scale", range(kResolutionScaleRange)},
+            {"saturation", range(kTextureSaturationRange)},
+            {"renderDistance", range(kRenderDistanceRange)}};
 }
 
 nlohmann::json debugViewsJson() {

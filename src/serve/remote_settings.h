@@ -22,6 +22,10 @@ bool applySetting(RemoteState& state, const std::string& name, const nlohmann::j
 
 nlohmann::json settingsJson(const RemoteState& state);
 
+// The ranges of the number settings, {"scale": [min, max], ...}, from render/view_settings.h:
+// the page sets its controls' limits from them, so it follows the viewer's.
+nlohmann::json settingRangesJson();
+
 // The debug views' names, in the order the page offers them ("none" first).
 nlohmann::json debugViewsJson();
 

@@ -7,6 +7,7 @@
 
 #include "interact/navigation.h"
 #include "interact/object_drag.h"
+#include "interact/play_step.h"
 #include "render/interactive_renderer.h"
 #include "render/scene_objects.h"
 #include "scene/animation.h"
@@ -41,14 +42,14 @@ struct LoopState {
     std::uint32_t frameNumber = 0;
     bool mustRender = true;  // a browser joined or something changed: render even when paused
     bool instancesMoved = false;
+    bool geometryChanged = false;  // a mesh moved (WorldChange): the renderer rebuilds the scene
     std::optional<Camera> shownCamera;
     std::optional<ViewSettings> shownSettings;
 };
 
 // The renderer's picture size at the current resolution scale.
 std::pair<std::uint32_t, std::uint32_t> pictureSize(const ServeOptions& o, const ViewSettings& v) {
-    const float scale = std::clamp(v.resolutionScale, 0.1f, 1.0f);
-    return {std::max(1u, std::uint32_t(float(o.width) * scale)), std::max(1u, std::uint32_t(float(o.height) * scale))};
+    return {scaledSide(o.width, v.resolutionScale), scaledSide(o.height, v.resolutionScale)};
 }
 
 void select(LoopState& s, const Scene& scene, const InteractiveRenderer& renderer, const ClickMessage& click) {
@@ -117,13 +118,10 @@ void applyInput(LoopState& s, Scene& scene, float step) {
                                      s.nav.speed(), step))
         s.instancesMoved = true;
     if (s.remote.playing) {
-        s.nav.update(viewer::cameraInputFrom(in), step);
-        s.animationClock += step;
+        const viewer::WorldChange change = viewer::playStep(scene, s.nav, in, s.animationClock, step);
         s.remote.view.time = float(s.animationClock);
-        if (animatesGeometry(scene)) {
-            applyInstanceAnimations(scene, s.animationClock);
-            s.instancesMoved = true;
-        }
+        if (change.instancesMoved || change.geometryChanged) s.instancesMoved = true;
+        s.geometryChanged = s.geometryChanged || change.geometryChanged;
     }
     s.input.endFrame();
 }
@@ -133,6 +131,7 @@ nlohmann::json vec(Vec3 v) { return {v.x, v.y, v.z}; }
 nlohmann::json helloJson(const LoopState& s, const Scene& scene, const InteractiveRenderer& r, const ServeOptions& o) {
     return {{"t", "hello"},          {"scene", scene.name},         {"width", o.width},
             {"height", o.height},    {"settings", settingsJson(s.remote)}, {"debugViews", debugViewsJson()},
+            {"ranges", settingRangesJson()},
             {"walking", s.nav.walking()}, {"canWalk", s.nav.canWalk()}, {"hasTorch", r.hasTorch()},
             {"controls", kControls}};
 }
@@ -161,7 +160,8 @@ void renderFrame(LoopState& s, const Scene& scene, InteractiveRenderer& renderer
                  const Camera& camera, double frameSeconds) {
     const auto now = Clock::now();
     if (s.shownCamera != camera || s.instancesMoved) s.pacer.noteMotion(now);
-    if (s.instancesMoved) renderer.setInstanceTransforms(scene);
+    if (s.geometryChanged) renderer.rebuildScene(scene, true);
+    else if (s.instancesMoved) renderer.setInstanceTransforms(scene);
     FrameMeta meta{++s.frameNumber, renderer.width(), renderer.height(), 0, s.pacer.moving(now), {}};
     meta.acks.assign(s.appliedSeq.begin(), s.appliedSeq.end());
     const bool copy = s.pacer.takeFrame(now, frameSeconds) || s.mustRender;
@@ -174,7 +174,7 @@ void renderFrame(LoopState& s, const Scene& scene, InteractiveRenderer& renderer
     if (copied) readback.publish(float(renderer.stats().passMilliseconds[std::size_t(ViewerPass::Frame)]));
     s.shownCamera = camera;
     s.shownSettings = s.remote.view;
-    s.mustRender = s.instancesMoved = false;
+    s.mustRender = s.instancesMoved = s.geometryChanged = false;
 }
 
 }  // namespace

@@ -79,6 +79,25 @@ TEST_F(ViewerSmokeTest, OpensUnderXvfbRendersFramesAndWritesTheScreenshot) {
     EXPECT_FALSE(fs::exists(dir / "imgui.ini"));
 }
 
+// Resolution scale 2 supersamples: the renderer's frame (what a screenshot holds) is twice the
+// window on each side, and the window shows it filtered down; out of range is one line.
+TEST_F(ViewerSmokeTest, ResolutionScaleTwoRendersTwiceTheWindow) {
+    PN_REQUIRE_XVFB();
+    RunResult r = runViewer(dir, "view cornell --width 80 --height 64 --frames 2 --resolution-scale 2 --screenshot s.png",
+                            true);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+    int w = 0, h = 0, channels = 0;
+    unsigned char* pixels = stbi_load((dir / "s.png").c_str(), &w, &h, &channels, 3);
+    ASSERT_NE(pixels, nullptr) << "no readable screenshot";
+    stbi_image_free(pixels);
+    EXPECT_EQ(w, 160);
+    EXPECT_EQ(h, 128);
+    r = runViewer(dir, "view cornell --resolution-scale 2.5", false);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(r.err, "penumbra: error: --resolution-scale must be between 0.25 and 2\n");
+}
+
 // Issue 12: the device lost while the window is being set up (the UI's font upload), in the first
 // frames and later in the frame loop (a window of 64x64 and 30 frames take about 800 checked
 // calls) ends with one line and exit 1, never a crash: the frame in flight is waited for before

@@ -57,9 +57,25 @@ TEST(ServeSettings, ClampsToTheRanges) {
     apply(s, "debugOpacity", 2);
     EXPECT_EQ(s.view.samplesPerFrame, 64u);
     EXPECT_EQ(s.view.maxBounces, 1u);
-    EXPECT_FLOAT_EQ(s.view.resolutionScale, 1.0f);
+    EXPECT_FLOAT_EQ(s.view.resolutionScale, kResolutionScaleRange.max);  // 2: supersampling
     EXPECT_FLOAT_EQ(s.view.exposure, -10.0f);
     EXPECT_FLOAT_EQ(s.view.debugOpacity, 1.0f);
+}
+
+TEST(ServeSettings, ResolutionScaleGoesFromAQuarterToTwiceTheWindow) {
+    RemoteState s;
+    apply(s, "scale", 0.1);
+    EXPECT_FLOAT_EQ(s.view.resolutionScale, 0.25f);
+    apply(s, "scale", 1.5);
+    EXPECT_FLOAT_EQ(s.view.resolutionScale, 1.5f);
+    // The page's control takes its limits from the same range.
+    const nlohmann::json ranges = settingRangesJson();
+    EXPECT_EQ(ranges["scale"], nlohmann::json::array({0.25f, 2.0f}));
+    // The renderer's size: a quarter to twice the window.
+    EXPECT_EQ(scaledSide(1280, 2.0f), 2560u);
+    EXPECT_EQ(scaledSide(1280, 0.25f), 320u);
+    EXPECT_EQ(scaledSide(1280, 9.0f), 2560u);
+    EXPECT_EQ(scaledSide(2, 0.01f), 1u);
 }
 
 TEST(ServeSettings, WrongTypesAndUnknownNamesChangeNothing) {

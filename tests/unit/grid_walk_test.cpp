@@ -54,6 +54,36 @@ TEST(GridWalk, StepsOneTileAndGlides) {
     EXPECT_EQ(g.tileZ(), 0);
 }
 
+TEST(GridWalk, StepsBobTheHeadAndTurnsDoNot) {
+    GridWalker g(plus(), facingNorthFromCentre());
+    const float eye = g.camera().position.y;
+    const float lift = GridWalker::kBobFraction * 2.0f;  // of the 2 m tile
+    CameraInput forward;
+    forward.forward = 1;
+    g.update(forward, 0.0f);
+    EXPECT_NEAR(g.camera().position.y, eye, 1e-5f);  // the step starts on the ground
+    float highest = eye;
+    for (int i = 1; i <= 8; ++i) {
+        g.update(CameraInput{}, GridWalker::kStepSeconds / 8);
+        const float y = g.camera().position.y;
+        EXPECT_GE(y, eye - 1e-5f);
+        EXPECT_LE(y, eye + lift + 1e-5f);
+        highest = std::max(highest, y);
+        if (i == 4) {
+            EXPECT_NEAR(y, eye + lift, 1e-5f) << "the top of the bob is mid-step";
+        }
+    }
+    EXPECT_NEAR(highest, eye + lift, 1e-5f);
+    EXPECT_NEAR(g.camera().position.y, eye, 1e-5f);  // and it ends on the ground
+    CameraInput turn;
+    turn.turn = 1;
+    g.update(turn, 0.0f);
+    for (int i = 1; i <= 8; ++i) {
+        g.update(CameraInput{}, GridWalker::kStepSeconds / 8);
+        EXPECT_NEAR(g.camera().position.y, eye, 1e-6f) << "turning does not bob";
+    }
+}
+
 TEST(GridWalk, TurnsAQuarterAndStrafesIntoOpenTilesOnly) {
     GridWalker g(plus(), facingNorthFromCentre());
     CameraInput left;

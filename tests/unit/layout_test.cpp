@@ -111,7 +111,8 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, topLightCount), offsetof(FrameUniforms, envLuminance),
                        offsetof(FrameUniforms, lightRefCount), offsetof(FrameUniforms, lightPickUniform),
                        offsetof(FrameUniforms, topRoot), offsetof(FrameUniforms, lightGridOffset), offsetof(FrameUniforms, shadowRouletteShare),
-                       offsetof(FrameUniforms, pad3)});
+                       offsetof(FrameUniforms, textureSaturation), offsetof(FrameUniforms, renderDistance),
+                       offsetof(FrameUniforms, pad4), offsetof(FrameUniforms, pad5), offsetof(FrameUniforms, pad6)});
         expectMembers(spv, "Instance", {0, offsetof(Instance, worldToObject), offsetof(Instance, rootNode),
                                         offsetof(Instance, firstPrimitive), offsetof(Instance, primitiveCount),
                                         offsetof(Instance, id)});

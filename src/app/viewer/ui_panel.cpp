@@ -189,7 +189,12 @@ void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& s
         int spp = int(s.samplesPerFrame), bounces = int(s.maxBounces);
         if (ImGui::SliderInt("spp per frame", &spp, 1, 64)) s.samplesPerFrame = std::uint32_t(spp);
         if (ImGui::SliderInt("max bounces", &bounces, 0, 32)) s.maxBounces = std::uint32_t(bounces);
-        ImGui::SliderFloat("resolution scale", &s.resolutionScale, 0.25f, 1.0f, "%.2f");
+        ImGui::SliderFloat("resolution scale", &s.resolutionScale, kResolutionScaleRange.min,
+                           kResolutionScaleRange.max, "%.2f");
+        ImGui::SliderFloat("texture saturation", &s.textureSaturation, kTextureSaturationRange.min,
+                           kTextureSaturationRange.max, "%.2f");
+        ImGui::SliderFloat("render distance (0: all)", &s.renderDistance, kRenderDistanceRange.min, kRenderDistanceRange.max,
+                           "%.0f m");
         ImGui::Checkbox("one camera ray per pixel per frame", &s.shareCameraRays);
         ImGui::SliderFloat("shadow-ray roulette below", &s.shadowRouletteShare, 0.0f, 0.5f, "%.2f of the pixel");
         ImGui::Checkbox("temporal accumulation", &s.temporal);

@@ -16,6 +16,7 @@
 #include "app/viewer/edit_panel.h"
 #include "interact/navigation.h"
 #include "interact/object_drag.h"
+#include "interact/play_step.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/screenshot.h"
 #include "app/viewer/ui_panel.h"
@@ -271,14 +272,10 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     // Paused, the camera stays where the shown frame was taken, and animated textures hold
     // their frame; playing, they run at the game's rate in simulated time (--fixed-dt too).
     if (advancing) {
-        loop.nav.update(cameraInputFrom(loop.input), step);
-        loop.animationClock += step;
+        const WorldChange change = playStep(scene, loop.nav, loop.input, loop.animationClock, step);
         settings.time = float(loop.animationClock);
-        // Animated instances (glTF animations, scene-file motions) follow the clock.
-        if (animatesGeometry(scene)) {
-            applyInstanceAnimations(scene, loop.animationClock);
-            instancesMoved = true;
-        }
+        if (change.geometryChanged) renderer.rebuildScene(scene, true);
+        else if (change.instancesMoved) instancesMoved = true;
     }
     // A grabbed instance follows the cursor, after the camera and the animations have moved.
     if (!automationDone && dragSelection(w, loop.pointer, scene, loop.camera())) instancesMoved = true;
@@ -334,7 +331,7 @@ void renderOrShow(LoopState& loop, VkCommandBuffer cmd, InteractiveRenderer& ren
                   VkExtent2D framebuffer, const ViewSettings& settings, const ViewerOptions& options,
                   bool automationDone) {
     auto scaled = [&](std::uint32_t side) {
-        return std::max(1u, std::uint32_t(float(side) * std::clamp(settings.resolutionScale, 0.1f, 1.0f)));
+        return scaledSide(side, settings.resolutionScale);
     };
     const std::uint32_t rw = scaled(framebuffer.width), rh = scaled(framebuffer.height);
     const Camera camera = loop.camera();
@@ -372,7 +369,7 @@ std::string cameraLine(const Camera& camera) {
 }
 
 void runViewer(Scene scene, const ViewerOptions& options) {
-    ViewSettings settings;
+    ViewSettings settings = options.view;
     settings.apertureRadius = scene.camera.apertureRadius;
     settings.focusDistance = scene.camera.focusDistance;
     settings.samplesPerFrame = options.samplesPerFrame;

@@ -27,6 +27,7 @@ struct ViewerOptions {
     std::optional<double> fixedDt;  // seconds each frame advances time by, instead of the clock
     bool printCamera = false;       // print the final camera on exit
     bool fly = false;               // start in free flight on levels one can walk
+    ViewSettings view;              // the settings the flags set (addViewSettingOptions)
 };
 
 // "normals", "albedo", "depth", "motion", "samples", "nodes", "triangles" or "none"; UsageError otherwise.

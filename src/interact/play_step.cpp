@@ -1,0 +1,19 @@
+#include "interact/play_step.h"
+
+#include "scene/animation.h"
+
+namespace penumbra::viewer {
+
+WorldChange playStep(Scene& scene, Navigation& nav, const InputState& input, double& clock, float step) {
+    nav.update(cameraInputFrom(input), step);
+    clock += step;
+    WorldChange change;
+    // Animated instances (glTF animations, scene-file motions) follow the clock.
+    if (animatesGeometry(scene)) {
+        applyInstanceAnimations(scene, clock);
+        change.instancesMoved = true;
+    }
+    return change;
+}
+
+}  // namespace penumbra::viewer

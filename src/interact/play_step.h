@@ -1,0 +1,23 @@
+// One frame of play, the same for every front end (the window, the browser, `render --walk`):
+// the camera moves by the input, then the world advances by the frame's time. This is the one
+// place where the world moves by itself each frame: instance animations today; a Doom map's
+// moving sectors (doors, lifts, a per-tic update) plug in here.
+#pragma once
+
+#include "interact/controls.h"
+#include "interact/navigation.h"
+#include "scene/scene.h"
+
+namespace penumbra::viewer {
+
+// What the frame changed besides the camera, so the caller updates its renderer.
+struct WorldChange {
+    bool instancesMoved = false;   // top level only: InteractiveRenderer::setInstanceTransforms
+    bool geometryChanged = false;  // meshes changed: a bottom level must be rebuilt or refitted
+};
+
+// Moves the camera by `input` over `step` seconds, advances `clock` (seconds played) by `step`
+// and moves the world to the new clock.
+WorldChange playStep(Scene& scene, Navigation& nav, const InputState& input, double& clock, float step);
+
+}  // namespace penumbra::viewer
