@@ -1,0 +1,139 @@
+// A Doom level that plays: the map's line specials triggered by the player (walking over lines,
+// using switches and doors, keys picked up by walking over them, the exit), the sector movers
+// they start (sector_movers.h) stepped on a fixed tic clock, and the heights that walking
+// collides with. Plain data and arithmetic: no GPU, no window. The viewer's Navigation runs it
+// (interact/navigation.h) and moves the sectors' geometry, which the WAD loader built as
+// instances (Level::planeInstances).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/doom/line_specials.h"
+#include "scene/doom/sector_movers.h"
+#include "scene/io/wad/map.h"
+#include "scene/walk/walk_map.h"
+
+namespace penumbra::doom {
+
+struct PlayerPosition {
+    double x = 0, y = 0, z = 0;  // map units: centre on the ground plane, feet height
+};
+
+// The heights a sector's floor or ceiling can take once its specials run, as far as the map
+// tells at load time (neighbours that move later may take it further).
+struct PlaneRange {
+    bool moves = false;
+    double low = 0, high = 0;
+};
+
+// An instance of the scene that carries a moving plane (and the walls attached to it): placed at
+// the plane's height `base` when its transform is the identity.
+struct PlaneInstance {
+    int sector = 0;
+    Plane plane = Plane::Floor;
+    std::uint32_t instance = 0;
+    double base = 0;
+};
+
+constexpr double kUseRange = 64;   // USERANGE: how far the player reaches to use a line
+constexpr int kButtonTics = 35;    // BUTTONTIME: a repeatable switch turns back after a second
+
+class Level {
+public:
+    explicit Level(const wad::MapData& map);
+
+    const std::string& mapName() const { return mapName_; }
+    // Heights and walls as they stand now: what walking collides with.
+    const walk::WalkMap& walkMap() const { return walk_; }
+    double height(int sector, Plane plane) const;
+    int lightLevel(int sector) const { return sectors_.at(std::size_t(sector)).light; }
+
+    // One tic: every active mover steps once, switches count down. `player`: where the player
+    // stands (a door closing on it goes back up); none: nothing is in the way.
+    void tic(const std::optional<PlayerPosition>& player);
+    int tics() const { return tics_; }
+    // The player at (x, y), facing `angle` (radians, map frame: 0 east, counter-clockwise), uses
+    // the nearest line within kUseRange that it faces (Doom's P_UseLines). True when it did
+    // something; message() then or otherwise says why not (a locked door).
+    bool use(double x, double y, double angle, const std::optional<PlayerPosition>& player = std::nullopt);
+    // The player's centre moved from (x0, y0) to (x1, y1): walk-over lines it crossed trigger.
+    void crossed(double x0, double y0, double x1, double y1);
+    // Keys the player's box touches are taken (Doom's P_TouchSpecialThing for cards and skulls).
+    void touchThings(const PlayerPosition& player);
+    bool hasKey(Key key) const { return key == Key::None || keys_[std::size_t(key)]; }
+
+    bool exited() const { return exitTic_ >= 0; }
+    bool secretExit() const { return secretExit_; }
+    int exitTic() const { return exitTic_; }
+    // The last thing worth telling the player ("You need a blue key to open this door"); cleared
+    // by takeMessage.
+    std::string takeMessage();
+
+    // Moving sectors and what moves with them.
+    PlaneRange range(int sector, Plane plane) const;
+    std::vector<PlaneInstance>& planeInstances() { return planeInstances_; }
+    const std::vector<PlaneInstance>& planeInstances() const { return planeInstances_; }
+    // Whether the switch on linedef `line` shows its other texture (SW2 for a switch drawn SW1).
+    bool switchFlipped(std::size_t line) const { return lines_.at(line).flipped; }
+    // Changes once per switch that turned, so a front end knows to redraw it.
+    std::uint32_t switchChanges() const { return switchChanges_; }
+    std::size_t activeMovers() const { return movers_.size(); }
+
+    // Starts a special's action as if its line `line` was triggered (tests, and the triggers
+    // above once they decided the line fires). True when something started.
+    bool trigger(std::size_t line, const std::optional<PlayerPosition>& player = std::nullopt);
+
+private:
+    struct SectorState {
+        int light = 0;
+        std::uint16_t tag = 0;
+        std::vector<int> neighbours;  // across two-sided lines, repeats removed
+        bool busy = false;            // Doom's specialdata: one mover at a time
+    };
+    struct LineState {
+        double x1 = 0, y1 = 0, x2 = 0, y2 = 0;
+        int special = 0, tag = 0;
+        int front = -1, back = -1;  // sectors
+        bool flipped = false;       // a switch showing its other texture
+        int buttonTics = 0;         // a repeatable switch turns back when this reaches 0
+    };
+    struct KeyThing {
+        double x = 0, y = 0;
+        Key key = Key::None;
+        bool taken = false;
+    };
+    class World;
+    friend class World;
+
+    std::vector<int> taggedSectors(int tag) const;
+    std::optional<Mover> makeMover(Action action, int sector, const LineState& line) const;
+    bool startOn(Action action, const LineState& line, int sector);
+    bool doTagged(Action action, const LineState& line);
+    bool useManualDoor(LineState& line, const LineSpecial& special);
+    void turnSwitch(LineState& line, bool repeat);
+    void stopOrResume(Action action, const LineState& line, bool stop);
+    void setLights(Action action, const LineState& line);
+    double lowestCeilingAround(int s) const, highestCeilingAround(int s) const;
+    double lowestFloorAround(int s) const, highestFloorAround(int s) const, nextHigherFloor(int s) const;
+
+    std::string mapName_;
+    walk::WalkMap walk_;
+    std::vector<SectorState> sectors_;
+    std::vector<LineState> lines_;
+    std::vector<KeyThing> keyThings_;
+    std::vector<Mover> movers_;  // in the order they started (Doom's thinker order)
+    std::vector<PlaneRange> floorRanges_, ceilingRanges_;
+    std::vector<PlaneInstance> planeInstances_;
+    bool keys_[4] = {true, false, false, false};
+    int tics_ = 0;
+    int exitTic_ = -1;
+    bool secretExit_ = false;
+    std::uint32_t switchChanges_ = 0;
+    std::string message_;
+    std::optional<PlayerPosition> player_;  // during a tic or a use: what movers must not crush
+};
+
+}  // namespace penumbra::doom
