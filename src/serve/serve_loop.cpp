@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <optional>
 #include <thread>
 
@@ -118,6 +119,12 @@ void applyInput(LoopState& s, Scene& scene, float step) {
         s.instancesMoved = true;
     if (s.remote.playing) {
         s.nav.update(viewer::cameraInputFrom(in), step);
+        if (s.nav.moveSectors(scene)) s.instancesMoved = true;  // doors and lifts
+        if (std::optional<std::string> done = s.nav.takeLevelCompletion()) {
+            std::printf("%s\n", done->c_str());
+            std::fflush(stdout);
+            s.message = *done;
+        }
         s.animationClock += step;
         s.remote.view.time = float(s.animationClock);
         if (animatesGeometry(scene)) {

@@ -233,6 +233,7 @@ struct LoopState {
     std::string pendingScreenshot;
     double fpsSmoothed = 0;
     double animationClock = 0;  // seconds played: the moment animated textures show
+    bool levelEndedByScript = false;  // --script ended a Doom level: the viewer exits 0
 
     LoopState(const Scene& scene, const ViewerOptions& options, const InteractiveRenderer& renderer)
         : nav(scene, options.fly) {
@@ -272,6 +273,14 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     // their frame; playing, they run at the game's rate in simulated time (--fixed-dt too).
     if (advancing) {
         loop.nav.update(cameraInputFrom(loop.input), step);
+        if (loop.nav.moveSectors(scene)) instancesMoved = true;  // doors and lifts
+        if (std::optional<std::string> done = loop.nav.takeLevelCompletion()) {
+            std::printf("%s\n", done->c_str());
+            std::fflush(stdout);
+            loop.panel.message = *done;
+            glfwSetWindowTitle(w, ("penumbra - " + scene.name + " - " + *done).c_str());
+            loop.levelEndedByScript = loop.script.has_value();  // a script that ends the level is done
+        }
         loop.animationClock += step;
         settings.time = float(loop.animationClock);
         // Animated instances (glTF animations, scene-file motions) follow the clock.
@@ -404,8 +413,10 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         const float dt = std::min(std::chrono::duration<float>(now - last).count(), 0.25f);
         last = now;
         const float step = options.fixedDt ? float(*options.fixedDt) : dt;  // simulated seconds this frame
-        // Automation: after the N-th frame nothing moves or renders; its frame finishes, then exit.
-        const bool automationDone = options.frames && loop.framesRendered >= *options.frames;
+        // Automation: after the N-th frame (or once a script ended the Doom level) nothing moves or
+        // renders; its frame finishes, then exit.
+        const bool automationDone =
+            (options.frames && loop.framesRendered >= *options.frames) || loop.levelEndedByScript;
 
         applyInput(loop, scene, renderer, ui, window.get(), settings, step, automationDone);
         drawUi(loop, scene, renderer, ui, settings, dt);
