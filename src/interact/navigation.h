@@ -38,6 +38,7 @@ public:
     bool gridMoving() const { return grid_ != nullptr; }
     float speed() const { return controller_.speed(); }
     CameraController& controller() { return controller_; }
+    const CameraController& controller() const { return controller_; }
     // Doom levels: the level being played (none for other scenes).
     DoomPlay* doom() { return doom_.get(); }
     const DoomPlay* doom() const { return doom_.get(); }

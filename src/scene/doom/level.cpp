@@ -455,6 +455,13 @@ void Level::touchThings(const PlayerPosition& player) {
     }
 }
 
+std::vector<std::pair<double, double>> Level::keyPositions() const {
+    std::vector<std::pair<double, double>> out;
+    for (const KeyThing& k : keyThings_)
+        if (!k.taken) out.emplace_back(k.x, k.y);
+    return out;
+}
+
 std::string Level::takeMessage() {
     std::string m;
     std::swap(m, message_);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/doom/line_specials.h"
@@ -50,6 +51,7 @@ public:
     const walk::WalkMap& walkMap() const { return walk_; }
     double height(int sector, Plane plane) const;
     int lightLevel(int sector) const { return sectors_.at(std::size_t(sector)).light; }
+    int sectorTag(int sector) const { return sectors_.at(std::size_t(sector)).tag; }
 
     // One tic: every active mover steps once, switches count down. `player`: where the player
     // stands (a door closing on it goes back up); none: nothing is in the way.
@@ -64,6 +66,8 @@ public:
     // Keys the player's box touches are taken (Doom's P_TouchSpecialThing for cards and skulls).
     void touchThings(const PlayerPosition& player);
     bool hasKey(Key key) const { return key == Key::None || keys_[std::size_t(key)]; }
+    // Where the keys not yet picked up lie (map units).
+    std::vector<std::pair<double, double>> keyPositions() const;
 
     bool exited() const { return exitTic_ >= 0; }
     bool secretExit() const { return secretExit_; }
@@ -82,6 +86,16 @@ public:
     std::uint32_t switchChanges() const { return switchChanges_; }
     std::size_t activeMovers() const { return movers_.size(); }
 
+    struct LineState {
+        double x1 = 0, y1 = 0, x2 = 0, y2 = 0;
+        int special = 0, tag = 0;   // special: 0 once a one-shot line was used
+        int front = -1, back = -1;  // sectors
+        bool flipped = false;       // a switch showing its other texture
+        int buttonTics = 0;         // a repeatable switch turns back when this reaches 0
+    };
+    // The map's linedefs, in order, as the level holds them now.
+    const std::vector<LineState>& lines() const { return lines_; }
+
     // Starts a special's action as if its line `line` was triggered (tests, and the triggers
     // above once they decided the line fires). True when something started.
     bool trigger(std::size_t line, const std::optional<PlayerPosition>& player = std::nullopt);
@@ -92,13 +106,6 @@ private:
         std::uint16_t tag = 0;
         std::vector<int> neighbours;  // across two-sided lines, repeats removed
         bool busy = false;            // Doom's specialdata: one mover at a time
-    };
-    struct LineState {
-        double x1 = 0, y1 = 0, x2 = 0, y2 = 0;
-        int special = 0, tag = 0;
-        int front = -1, back = -1;  // sectors
-        bool flipped = false;       // a switch showing its other texture
-        int buttonTics = 0;         // a repeatable switch turns back when this reaches 0
     };
     struct KeyThing {
         double x = 0, y = 0;
