@@ -171,5 +171,25 @@ TEST_F(ViewerSmokeTest, ScriptedWalkOnFreedoomE1M1StopsAtTheWallAtEyeHeight) {
     EXPECT_NEAR(end.z, map.sectors[std::size_t(sector)].floor + walk::kEyeHeight, 0.01) << "eye height";
 }
 
+// The walk shipped for Freedoom's E1M1 (scenes/walks/), played by the viewer at 64x64 on
+// lavapipe: through the doors and lifts to the exit switch, where ending the level prints the
+// line and ends the run with exit 0 (a --script run that ends its level needs no --frames).
+TEST_F(ViewerSmokeTest, FreedoomE1M1WalkEndsTheLevelAndTheRun) {
+    const char* wadPath = "/usr/share/games/doom/freedoom1.wad";
+    PN_REQUIRE_XVFB();
+    if (!fs::exists(wadPath)) {
+        if (std::getenv("CI")) FAIL() << wadPath << " is missing (install freedoom)";
+        GTEST_SKIP() << wadPath << " is not installed (apt install freedoom)";
+    }
+    const std::string walk = std::string(PENUMBRA_SOURCE_DIR) + "/scenes/walks/freedoom1-e1m1-exit.txt";
+    RunResult r = runViewer(dir,
+                            std::string("view ") + wadPath + " --map E1M1 --width 64 --height 64 --fixed-dt 0.03125 --script " +
+                                walk,
+                            true);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("E1M1 complete in "), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace penumbra::test

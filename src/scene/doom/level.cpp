@@ -100,6 +100,10 @@ Level::Level(const wad::MapData& map) : mapName_(map.name), walk_(walk::buildWal
         std::sort(s.neighbours.begin(), s.neighbours.end());
         s.neighbours.erase(std::unique(s.neighbours.begin(), s.neighbours.end()), s.neighbours.end());
     }
+    for (std::size_t s = 0; s < sectors_.size(); ++s)
+        if (std::optional<LightThinker> light = makeLightThinker(map.sectors[s].special, int(s), sectors_[s].light,
+                                                                  dimmestAround(int(s)), random_))
+            lights_.push_back(*light);
     for (const wad::Thing& t : map.things) {
         const Key key = keyOfThing(t.type);
         if (key != Key::None && !(t.flags & 0x10)) keyThings_.push_back({double(t.x), double(t.y), key, false});
@@ -179,6 +183,19 @@ double Level::highestFloorAround(int s) const {
     for (int n : sectors_[std::size_t(s)].neighbours) h = std::max(h, height(n, Plane::Floor));
     return h;
 }
+int Level::dimmestAround(int s) const {
+    int level = sectors_[std::size_t(s)].light;
+    for (int n : sectors_[std::size_t(s)].neighbours) level = std::min(level, sectors_[std::size_t(n)].light);
+    return level;
+}
+
+void Level::setLight(int sector, int level) {
+    int& light = sectors_.at(std::size_t(sector)).light;
+    if (light == level) return;
+    light = level;
+    ++lightChanges_;
+}
+
 double Level::nextHigherFloor(int s) const {
     const double now = height(s, Plane::Floor);
     double h = kMaxHeight;
@@ -306,9 +323,12 @@ void Level::setLights(Action action, const LineState& line) {
             level = 0;
             for (int n : sec.neighbours) level = std::max(level, sectors_[std::size_t(n)].light);
         } else if (action == Action::LightTurnOffDimmest) {
-            for (int n : sec.neighbours) level = std::min(level, sectors_[std::size_t(n)].light);
+            level = dimmestAround(s);
+        } else if (action == Action::LightStartStrobing) {  // EV_StartLightStrobing: slow, not in sync
+            if (std::optional<LightThinker> t = makeLightThinker(3, s, sec.light, dimmestAround(s), random_))
+                lights_.push_back(*t);
         }
-        sec.light = level;
+        setLight(s, level);
     }
 }
 
@@ -323,7 +343,8 @@ bool Level::doTagged(Action action, const LineState& line) {
         case Action::LightTurnOn255:
         case Action::LightTurnOnBrightest:
         case Action::LightTurnOff35:
-        case Action::LightTurnOffDimmest: setLights(action, line); return true;
+        case Action::LightTurnOffDimmest:
+        case Action::LightStartStrobing: setLights(action, line); return true;
         case Action::ExitLevel:
         case Action::SecretExit:
             if (exitTic_ < 0) exitTic_ = tics_;
@@ -395,6 +416,10 @@ void Level::tic(const std::optional<PlayerPosition>& player) {
         }
     }
     movers_.resize(kept);
+    for (LightThinker& light : lights_) {
+        const int sector = lightSector(light);
+        setLight(sector, ticLight(light, sectors_[std::size_t(sector)].light, random_));
+    }
     for (LineState& line : lines_)
         if (line.buttonTics > 0 && --line.buttonTics == 0) {
             line.flipped = !line.flipped;

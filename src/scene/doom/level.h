@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "scene/doom/light_specials.h"
 #include "scene/doom/line_specials.h"
 #include "scene/doom/sector_movers.h"
 #include "scene/io/wad/map.h"
@@ -51,6 +52,8 @@ public:
     const walk::WalkMap& walkMap() const { return walk_; }
     double height(int sector, Plane plane) const;
     int lightLevel(int sector) const { return sectors_.at(std::size_t(sector)).light; }
+    // Changes whenever a sector's light level changes (light specials, light lines).
+    std::uint32_t lightChanges() const { return lightChanges_; }
     int sectorTag(int sector) const { return sectors_.at(std::size_t(sector)).tag; }
 
     // One tic: every active mover steps once, switches count down. `player`: where the player
@@ -124,6 +127,8 @@ private:
     void stopOrResume(Action action, const LineState& line, bool stop);
     void setLights(Action action, const LineState& line);
     double lowestCeilingAround(int s) const, highestCeilingAround(int s) const;
+    int dimmestAround(int s) const;  // P_FindMinSurroundingLight, from the sector's own level
+    void setLight(int sector, int level);
     double lowestFloorAround(int s) const, highestFloorAround(int s) const, nextHigherFloor(int s) const;
 
     std::string mapName_;
@@ -132,6 +137,9 @@ private:
     std::vector<LineState> lines_;
     std::vector<KeyThing> keyThings_;
     std::vector<Mover> movers_;  // in the order they started (Doom's thinker order)
+    std::vector<LightThinker> lights_;
+    LightRandom random_;
+    std::uint32_t lightChanges_ = 0;
     std::vector<PlaneRange> floorRanges_, ceilingRanges_;
     std::vector<PlaneInstance> planeInstances_;
     bool keys_[4] = {true, false, false, false};
