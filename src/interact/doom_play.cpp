@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "scene/io/wad/sector_light.h"
 #include "scene/io/wad/units.h"
 
 namespace penumbra::viewer {
@@ -59,6 +60,21 @@ bool DoomPlay::moveSectors(Scene& scene) const {
         moved = true;
     }
     return moved;
+}
+
+std::vector<std::uint32_t> DoomPlay::applyLights(Scene& scene) {
+    std::vector<std::uint32_t> changed;
+    if (level_.lightChanges() == lightChangesApplied_) return changed;
+    lightChangesApplied_ = level_.lightChanges();
+    for (const doom::LightMaterial& l : level_.lightMaterials()) {
+        if (l.material >= scene.materials.size()) continue;
+        const Vec3 emission(wad::sectorRadiance(level_.lightLevel(l.sector)) * l.scale);
+        Material& m = scene.materials[l.material];
+        if (m.emission == emission) continue;
+        m.emission = emission;
+        changed.push_back(l.material);
+    }
+    return changed;
 }
 
 std::optional<std::string> DoomPlay::completion() const {

@@ -26,6 +26,9 @@ public:
     std::string use(const CameraController& controller);
     // Moves the instances of the moving planes to their heights now; true when one moved.
     bool moveSectors(Scene& scene) const;
+    // Sets the fill light of sectors whose light changed (light specials) in their materials;
+    // returns the materials changed (for InteractiveRenderer::setUnsampledEmission).
+    std::vector<std::uint32_t> applyLights(Scene& scene);
 
     const doom::Level& level() const { return level_; }
     // Once the level has ended: "E1M1 complete in 42.3 s" (level time: tics / 35).
@@ -39,6 +42,7 @@ private:
     doom::Level level_;
     double clock_ = 0;  // seconds played; the level runs floor(clock_ * 35) tics
     bool completionTaken_ = false;
+    std::uint32_t lightChangesApplied_ = 0;
 };
 
 // The player's position for the level (map units), when walking.

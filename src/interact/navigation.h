@@ -45,6 +45,8 @@ public:
     // Moves the instances of a Doom level's moving floors and ceilings to where they are now; true
     // when one moved (the renderer then takes the new transforms).
     bool moveSectors(Scene& scene) const { return doom_ && doom_->moveSectors(scene); }
+    // A Doom level's sector lights as they are now, in their materials; the materials changed.
+    std::vector<std::uint32_t> applyLights(Scene& scene) { return doom_ ? doom_->applyLights(scene) : std::vector<std::uint32_t>{}; }
     // "E1M1 complete in T s", once, on the first call after a Doom level ended.
     std::optional<std::string> takeLevelCompletion() { return doom_ ? doom_->takeCompletion() : std::nullopt; }
 

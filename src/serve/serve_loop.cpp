@@ -225,6 +225,7 @@ void ServeLoop::run(FrameReadback& readback, FrameEncoder& encoder, const std::f
         renderer.resize(w, h);
         applyInbox(s, scene, renderer, hub.drain());
         applyInput(s, scene, step);
+        for (std::uint32_t m : s.nav.applyLights(scene)) renderer.setUnsampledEmission(m, scene.materials[m].emission);
         const Camera camera = s.nav.camera();
         const bool changed = s.shownCamera != camera || s.shownSettings != s.remote.view || s.instancesMoved;
         if (s.remote.playing || s.mustRender || changed) {

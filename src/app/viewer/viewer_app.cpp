@@ -274,6 +274,7 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     if (advancing) {
         loop.nav.update(cameraInputFrom(loop.input), step);
         if (loop.nav.moveSectors(scene)) instancesMoved = true;  // doors and lifts
+        for (std::uint32_t m : loop.nav.applyLights(scene)) renderer.setUnsampledEmission(m, scene.materials[m].emission);
         if (std::optional<std::string> done = loop.nav.takeLevelCompletion()) {
             std::printf("%s\n", done->c_str());
             std::fflush(stdout);

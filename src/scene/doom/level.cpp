@@ -104,6 +104,13 @@ Level::Level(const wad::MapData& map) : mapName_(map.name), walk_(walk::buildWal
         if (std::optional<LightThinker> light = makeLightThinker(map.sectors[s].special, int(s), sectors_[s].light,
                                                                   dimmestAround(int(s)), random_))
             lights_.push_back(*light);
+    lightVaries_.assign(sectors_.size(), false);
+    for (const LightThinker& light : lights_) lightVaries_[std::size_t(lightSector(light))] = true;
+    for (const LineState& line : lines_) {
+        const std::optional<LineSpecial> special = lineSpecial(line.special);
+        if (special && special->action >= Action::LightTurnOn255 && special->action <= Action::LightStartStrobing)
+            for (int s : taggedSectors(line.tag)) lightVaries_[std::size_t(s)] = true;
+    }
     for (const wad::Thing& t : map.things) {
         const Key key = keyOfThing(t.type);
         if (key != Key::None && !(t.flags & 0x10)) keyThings_.push_back({double(t.x), double(t.y), key, false});
@@ -145,6 +152,8 @@ Level::Level(const wad::MapData& map) : mapName_(map.name), walk_(walk::buildWal
         }
     }
 }
+
+bool Level::lightVaries(int sector) const { return lightVaries_.at(std::size_t(sector)); }
 
 double Level::height(int sector, Plane plane) const {
     const walk::WalkSector& s = walk_.sectors.at(std::size_t(sector));

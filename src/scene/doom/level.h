@@ -40,6 +40,14 @@ struct PlaneInstance {
     double base = 0;
 };
 
+// A material that gives off one sector's fill light (scene/io/wad/sector_light.h), made for that
+// sector alone because its light changes: its emission is sectorRadiance(level) * scale.
+struct LightMaterial {
+    int sector = 0;
+    std::uint32_t material = 0;
+    float scale = 1;
+};
+
 constexpr double kUseRange = 64;   // USERANGE: how far the player reaches to use a line
 constexpr int kButtonTics = 35;    // BUTTONTIME: a repeatable switch turns back after a second
 
@@ -82,6 +90,11 @@ public:
     // Moving sectors and what moves with them.
     PlaneRange range(int sector, Plane plane) const;
     std::vector<PlaneInstance>& planeInstances() { return planeInstances_; }
+    // Sectors whose light can change (a light special, or a light line tagged to them), and the
+    // materials their light drives.
+    bool lightVaries(int sector) const;
+    std::vector<LightMaterial>& lightMaterials() { return lightMaterials_; }
+    const std::vector<LightMaterial>& lightMaterials() const { return lightMaterials_; }
     const std::vector<PlaneInstance>& planeInstances() const { return planeInstances_; }
     // Whether the switch on linedef `line` shows its other texture (SW2 for a switch drawn SW1).
     bool switchFlipped(std::size_t line) const { return lines_.at(line).flipped; }
@@ -142,6 +155,8 @@ private:
     std::uint32_t lightChanges_ = 0;
     std::vector<PlaneRange> floorRanges_, ceilingRanges_;
     std::vector<PlaneInstance> planeInstances_;
+    std::vector<LightMaterial> lightMaterials_;
+    std::vector<bool> lightVaries_;
     bool keys_[4] = {true, false, false, false};
     int tics_ = 0;
     int exitTic_ = -1;

@@ -11,6 +11,9 @@
 #include <sstream>
 
 #include "../wad/freedoom_wad.h"
+#include "interact/doom_play.h"
+#include "scene/doom/level.h"
+#include "scene/io/wad/sector_light.h"
 #include "scene/io/wad/wad_loader.h"
 #include "walk_planner.h"
 
@@ -62,6 +65,27 @@ TEST(DoomWalks, Doom1E1M1WalkEndsTheLevel) {
     const Scene scene = loadWad(doom1Path(), "E1M1");
     writeWalk(scene, "DOOM1.WAD (shareware) E1M1, from the player start to the exit switch", "doom1-e1m1-exit.txt");
     checkWalk(scene, "doom1-e1m1-exit.txt");
+}
+
+// Freedoom's E1M1 has flashing and strobing sectors: as the level plays, their fill light's
+// materials (their own, one sector each) follow the sector's light level.
+TEST(DoomLightMaterials, SectorLightSpecialsDriveTheirFillLight) {
+    REQUIRE_WAD(bytes, "freedoom1.wad");
+    Scene scene = loadWadFromMemory(bytes, "E1M1", "freedoom1.wad");
+    ASSERT_FALSE(scene.doomLevel->lightMaterials().empty());
+    viewer::DoomPlay play(*scene.doomLevel);
+    viewer::CameraController controller(scene.camera, 1.0f, scene.walkMap);
+    std::size_t changes = 0;
+    for (int frame = 0; frame < 70; ++frame) {
+        play.update(controller, std::nullopt, float(kWalkStep));
+        const std::vector<std::uint32_t> changed = play.applyLights(scene);
+        changes += changed.size();
+        for (const doom::LightMaterial& l : play.level().lightMaterials()) {
+            const float want = wad::sectorRadiance(play.level().lightLevel(l.sector)) * l.scale;
+            EXPECT_EQ(scene.materials[l.material].emission.x, want) << scene.materials[l.material].name;
+        }
+    }
+    EXPECT_GT(changes, 0u);
 }
 
 }  // namespace

@@ -124,15 +124,21 @@ private:
 
     // A floor or non-sky ceiling: it gives off its sector's fill light (sector_light.h) unless it
     // glows itself (its own light fills the sector then) or the sector is closed (a shut door).
-    std::uint32_t flatMaterial(const Sector& sec, const std::string& flatName, bool moving = false) {
+    // A sector whose light changes (a light special) gets materials of its own, which the level
+    // drives (doom::Level::lightMaterials).
+    std::uint32_t flatMaterial(int sector, const std::string& flatName, bool moving = false) {
+        const Sector& sec = map_.sectors[std::size_t(sector)];
         const int texture = textures_.flat(flatName);
         const float radiance = sectorRadiance(sec.lightLevel) * options_.sectorLight;
         const bool glows = options_.glow > 0 && glowOf(flatName, true).kind != GlowKind::None;
-        if (glows || !(radiance > 0) || sec.ceilingHeight <= sec.floorHeight)
+        const bool varies = level_->lightVaries(sector) && options_.sectorLight > 0;
+        if (glows || !(radiance > 0 || varies) || sec.ceilingHeight <= sec.floorHeight)
             return material("flat " + flatName, flatName, true, texture, false, moving);
         const int level = std::clamp<int>(sec.lightLevel, 0, 255);
-        const std::string key = "flat " + flatName + " light " + std::to_string(level);
-        return add(key, [&] {
+        const std::string key = "flat " + flatName + " light " + std::to_string(level) +
+                                (varies ? " sector " + std::to_string(sector) : std::string());
+        const std::size_t before = scene_.materials.size();
+        const std::uint32_t index = add(key, [&] {
             Material m = surface(key, texture, false);
             m.emission = Vec3(radiance);
             m.emissionHiddenFromCamera = true;  // the room looks lit; its floor and ceiling do not glow
@@ -143,6 +149,9 @@ private:
             m.lightSampled = false;
             return m;
         });
+        if (varies && scene_.materials.size() > before)
+            level_->lightMaterials().push_back({sector, index, options_.sectorLight});
+        return index;
     }
 
     // A sky ceiling: a portal onto the sky, which also brings its sector's fill light (outdoors,
@@ -346,9 +355,9 @@ private:
             const Sector& sec = map_.sectors[s];
             const bool floorMoves = moves(int(s), doom::Plane::Floor);
             const bool ceilingMoves = moves(int(s), doom::Plane::Ceiling);
-            std::uint32_t floorMat = flatMaterial(sec, sec.floorFlat, floorMoves);
+            std::uint32_t floorMat = flatMaterial(int(s), sec.floorFlat, floorMoves);
             std::uint32_t ceilMat =
-                isSky(sec.ceilingFlat) ? skyMaterial(sec) : flatMaterial(sec, sec.ceilingFlat, ceilingMoves);
+                isSky(sec.ceilingFlat) ? skyMaterial(sec) : flatMaterial(int(s), sec.ceilingFlat, ceilingMoves);
             const int floorProto = floorMoves ? movingPrototype(int(s), doom::Plane::Floor) : -1;
             const int ceilingProto = ceilingMoves ? movingPrototype(int(s), doom::Plane::Ceiling) : -1;
             Mesh& floor = mesh(int(s), "floor", floorMat, floorProto);
