@@ -5,6 +5,7 @@
 // take no history from it (no ghost of the door): their first frame starts a new running mean.
 #include <cmath>
 #include <filesystem>
+#include <set>
 
 #include "gpu_fixture.h"
 #include "render/interactive_renderer.h"
@@ -47,10 +48,13 @@ TEST_F(ViewerDoorMotionTest, OpeningDoorMovesWithItsMotionVectorsAndLeavesNoGhos
     for (const doom::PlaneInstance& p : level.planeInstances())
         if (p.sector == kDoorSector && p.plane == doom::Plane::Ceiling) door = &p;
     ASSERT_NE(door, nullptr);
-    // The door face: the walls its instance carries.
+    // The door face: the walls its instance carries; and every surface that moves with it.
     std::uint32_t faceSurface = 0;
-    for (const Mesh& m : scene.prototypes[scene.instances[door->instance].prototype].meshes)
+    std::set<std::uint32_t> doorSurfaces;
+    for (const Mesh& m : scene.prototypes[scene.instances[door->instance].prototype].meshes) {
         if (m.name.find("walls") != std::string::npos) faceSurface = m.material + 1;
+        doorSurfaces.insert(m.material + 1);
+    }
     ASSERT_NE(faceSurface, 0u);
 
     InteractiveRenderer viewer(*ctx, scene, false);
@@ -73,10 +77,13 @@ TEST_F(ViewerDoorMotionTest, OpeningDoorMovesWithItsMotionVectorsAndLeavesNoGhos
     ASSERT_TRUE(level.trigger(kDoorLine));
     const float pixelsPerMetre =
         float(kH) / (2.0f * float(kDistance / wad::kUnitsPerMetre) * std::tan(degreesToRadians(scene.camera.fovYDegrees * 0.5f)));
-    const float risePixels = float(kTicsPerFrame * doom::kDoorSpeed / wad::kUnitsPerMetre) * pixelsPerMetre;
-    std::uint32_t faceChecked = 0, faceFollowed = 0, uncovered = 0;
+
+    std::uint32_t faceChecked = 0, faceMoved = 0, faceFollowed = 0, uncovered = 0;
     for (int k = 0; k < 12; ++k) {
+        const double before = level.height(kDoorSector, doom::Plane::Ceiling);
         for (int t = 0; t < kTicsPerFrame; ++t) level.tic(std::nullopt);
+        const double rise = level.height(kDoorSector, doom::Plane::Ceiling) - before;  // 8 units, less at the top
+        const float risePixels = float(rise / wad::kUnitsPerMetre) * pixelsPerMetre;
         const float offset = float((level.height(kDoorSector, doom::Plane::Ceiling) - door->base) / wad::kUnitsPerMetre);
         scene.instances[door->instance].transform = Affine::translation({0, offset, 0});
         viewer.setInstanceTransforms(scene);
@@ -85,12 +92,13 @@ TEST_F(ViewerDoorMotionTest, OpeningDoorMovesWithItsMotionVectorsAndLeavesNoGhos
             const shader::GBufferTexel& g = now.gbuffer[i];
             if (g.surfaceId == faceSurface && last.gbuffer[i].surfaceId == faceSurface) {
                 // The face rose kTicsPerFrame tics of door: that many pixels below, a frame ago.
+                // (A static wall of the same texture may share the face's surface id: counted, not failed.)
                 ++faceChecked;
-                EXPECT_NEAR(std::abs(g.motion.y), risePixels, 0.05f) << "frame " << k << " pixel " << i;
-                EXPECT_NEAR(g.motion.x, 0.0f, 0.05f);
+                faceMoved += std::abs(std::abs(g.motion.y) - risePixels) < 0.05f && std::abs(g.motion.x) < 0.05f;
                 faceFollowed += now.history[i].samples > 1.5f;
-            } else if (last.gbuffer[i].surfaceId == faceSurface && g.surfaceId != faceSurface) {
-                // Uncovered by the door: its history starts again (nothing of the door blended in).
+            } else if (last.gbuffer[i].surfaceId == faceSurface && !doorSurfaces.count(g.surfaceId)) {
+                // Uncovered by the door, a surface that stays: its history starts again (nothing of
+                // the door blended in). The door's own underside, seen as it rises, keeps its own.
                 ++uncovered;
                 EXPECT_LT(now.history[i].samples, 1.5f) << "frame " << k << " pixel " << i << ": a ghost of the door";
             }
@@ -98,6 +106,7 @@ TEST_F(ViewerDoorMotionTest, OpeningDoorMovesWithItsMotionVectorsAndLeavesNoGhos
         last = now;
     }
     EXPECT_GT(faceChecked, 50u);
+    EXPECT_GT(faceMoved, faceChecked * 95 / 100) << faceMoved << " of " << faceChecked << " move with the door";
     EXPECT_GT(faceFollowed, faceChecked * 2 / 3) << faceFollowed << " of " << faceChecked;
     EXPECT_GT(uncovered, 20u);
     EXPECT_GT(level.height(kDoorSector, doom::Plane::Ceiling), level.height(kDoorSector, doom::Plane::Floor) + 56);
