@@ -30,8 +30,7 @@ void BM_DoomLevelTic(benchmark::State& state) {
         return;
     }
     Scene scene = loadWad(wadPath(), "E1M1");
-    doom::Level started = *scene.doomLevel;
-    for (std::size_t i = 0; i < started.lines().size(); ++i) started.trigger(i);  // everything that moves, moving
+    const doom::Level started = doom::withEverythingMoving(*scene.doomLevel);
     doom::Level level = started;
     SceneArrays arrays = buildSceneArrays(scene);
     viewer::CameraController controller(scene.camera, 1.0f, scene.walkMap);
@@ -43,10 +42,7 @@ void BM_DoomLevelTic(benchmark::State& state) {
             state.ResumeTiming();
         }
         level.tic(std::nullopt);
-        for (const doom::PlaneInstance& p : level.planeInstances()) {
-            const float offset = float((level.height(p.sector, p.plane) - p.base) / 32.0);
-            scene.instances[p.instance].transform = Affine::translation({0, offset, 0});
-        }
+        doom::placePlaneInstances(level, scene.instances);
         controller.setSectorHeights(level.walkMap().sectors);
         for (shader::Instance& i : arrays.instances) {
             if (i.id == PN_NO_HIT || i.id >= scene.instances.size()) continue;

@@ -48,19 +48,7 @@ std::string DoomPlay::use(const CameraController& controller) {
     return level_.takeMessage();
 }
 
-bool DoomPlay::moveSectors(Scene& scene) const {
-    bool moved = false;
-    for (const doom::PlaneInstance& p : level_.planeInstances()) {
-        if (p.instance >= scene.instances.size()) continue;
-        const double offset = (level_.height(p.sector, p.plane) - p.base) / wad::kUnitsPerMetre;
-        const Affine placed = Affine::translation(Vec3(0.0f, float(offset), 0.0f));
-        Affine& transform = scene.instances[p.instance].transform;
-        if (transform.m[1][3] == placed.m[1][3]) continue;
-        transform = placed;
-        moved = true;
-    }
-    return moved;
-}
+bool DoomPlay::moveSectors(Scene& scene) const { return doom::placePlaneInstances(level_, scene.instances); }
 
 std::vector<std::uint32_t> DoomPlay::applyLights(Scene& scene) {
     std::vector<std::uint32_t> changed;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "scene/walk/wad_walk_map.h"
+#include "scene/io/wad/units.h"
 #include "scene/walk/walk_physics.h"
 
 namespace penumbra::doom {
@@ -493,6 +494,33 @@ std::vector<std::pair<double, double>> Level::keyPositions() const {
     std::vector<std::pair<double, double>> out;
     for (const KeyThing& k : keyThings_)
         if (!k.taken) out.emplace_back(k.x, k.y);
+    return out;
+}
+
+bool placePlaneInstances(const Level& level, std::vector<Instance>& instances) {
+    bool moved = false;
+    for (const PlaneInstance& p : level.planeInstances()) {
+        if (p.instance >= instances.size()) continue;
+        const double offset = (level.height(p.sector, p.plane) - p.base) / wad::kUnitsPerMetre;
+        const Affine placed = Affine::translation(Vec3(0.0f, float(offset), 0.0f));
+        Affine& transform = instances[p.instance].transform;
+        if (transform.m[1][3] == placed.m[1][3]) continue;
+        transform = placed;
+        moved = true;
+    }
+    return moved;
+}
+
+Level withEverythingMoving(const Level& level) {
+    Level out = level;
+    for (std::size_t i = 0; i < out.lines().size(); ++i) {
+        const std::optional<LineSpecial> special = lineSpecial(out.lines()[i].special);
+        if (!special || special->action == Action::ExitLevel || special->action == Action::SecretExit) continue;
+        // A manual door already moving would be sent back: fire each door once.
+        const int back = out.lines()[i].back;
+        if (special->trigger == Trigger::Manual && back >= 0 && out.busySector(back)) continue;
+        out.trigger(i);
+    }
     return out;
 }
 

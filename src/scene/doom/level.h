@@ -16,6 +16,7 @@
 #include "scene/doom/line_specials.h"
 #include "scene/doom/sector_movers.h"
 #include "scene/io/wad/map.h"
+#include "scene/scene.h"
 #include "scene/walk/walk_map.h"
 
 namespace penumbra::doom {
@@ -101,6 +102,7 @@ public:
     // Changes once per switch that turned, so a front end knows to redraw it.
     std::uint32_t switchChanges() const { return switchChanges_; }
     std::size_t activeMovers() const { return movers_.size(); }
+    bool busySector(int sector) const { return sectors_.at(std::size_t(sector)).busy; }
 
     struct LineState {
         double x1 = 0, y1 = 0, x2 = 0, y2 = 0;
@@ -165,5 +167,13 @@ private:
     std::string message_;
     std::optional<PlayerPosition> player_;  // during a tic or a use: what movers must not crush
 };
+
+// Moves the instances carrying the level's moving planes (Level::planeInstances) to the planes'
+// heights now: a vertical translation by (height - base). True when one moved.
+bool placePlaneInstances(const Level& level, std::vector<Instance>& instances);
+
+// A level with every special line fired once (those that can start something without a key):
+// every door, lift, floor and crusher of the map on its way. For benchmarks.
+Level withEverythingMoving(const Level& level);
 
 }  // namespace penumbra::doom
