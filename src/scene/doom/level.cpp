@@ -79,6 +79,7 @@ Level::Level(const wad::MapData& map) : mapName_(map.name), walk_(walk::buildWal
     for (std::size_t s = 0; s < map.sectors.size(); ++s) {
         sectors_[s].light = map.sectors[s].lightLevel;
         sectors_[s].tag = map.sectors[s].tag;
+        if (sectors_[s].tag != 0) sectorsByTag_[sectors_[s].tag].push_back(int(s));
     }
     auto sectorOf = [&](std::uint16_t side) {
         return side == wad::kNoSide ? -1 : int(map.sidedefs[side].sector);
@@ -107,9 +108,11 @@ Level::Level(const wad::MapData& map) : mapName_(map.name), walk_(walk::buildWal
             lights_.push_back(*light);
     lightVaries_.assign(sectors_.size(), false);
     for (const LightThinker& light : lights_) lightVaries_[std::size_t(lightSector(light))] = true;
+    std::set<int> lightTags;  // each tag once, however many lines name it
     for (const LineState& line : lines_) {
         const std::optional<LineSpecial> special = lineSpecial(line.special);
-        if (special && special->action >= Action::LightTurnOn255 && special->action <= Action::LightStartStrobing)
+        if (special && special->action >= Action::LightTurnOn255 && special->action <= Action::LightStartStrobing &&
+            lightTags.insert(line.tag).second)
             for (int s : taggedSectors(line.tag)) lightVaries_[std::size_t(s)] = true;
     }
     for (const wad::Thing& t : map.things) {
@@ -129,16 +132,19 @@ Level::Level(const wad::MapData& map) : mapName_(map.name), walk_(walk::buildWal
         r.low = std::min({r.low, a, b});
         r.high = std::max({r.high, a, b});
     };
+    // Each (tag, action) and (sector, action) once: a hostile map's many lines cost no more.
+    std::set<std::pair<int, Action>> predicted, tagActions;
     for (const LineState& line : lines_) {
         const std::optional<LineSpecial> special = lineSpecial(line.special);
         if (!special) continue;
         std::vector<int> targets;
         if (special->trigger == Trigger::Manual) {
             if (line.back >= 0) targets.push_back(line.back);
-        } else {
+        } else if (tagActions.insert({line.tag, special->action}).second) {
             targets = taggedSectors(line.tag);
         }
         for (int s : targets) {
+            if (!predicted.insert({s, special->action}).second) continue;
             const std::optional<Mover> m = makeMover(special->action, s, line);
             if (!m) continue;
             if (const Door* d = std::get_if<Door>(&*m)) {
@@ -166,11 +172,9 @@ PlaneRange Level::range(int sector, Plane plane) const {
 }
 
 std::vector<int> Level::taggedSectors(int tag) const {
-    std::vector<int> out;
-    if (tag == 0) return out;  // vanilla's tag-0 lines move every untagged sector: a map bug, not done
-    for (std::size_t s = 0; s < sectors_.size(); ++s)
-        if (sectors_[s].tag == tag) out.push_back(int(s));
-    return out;
+    // Vanilla's tag-0 lines move every untagged sector: a map bug, not done.
+    const auto it = sectorsByTag_.find(tag);
+    return it == sectorsByTag_.end() ? std::vector<int>{} : it->second;
 }
 
 double Level::lowestCeilingAround(int s) const {

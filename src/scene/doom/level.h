@@ -7,6 +7,8 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <set>
 #include <optional>
 #include <string>
 #include <utility>
@@ -156,6 +158,7 @@ private:
     LightRandom random_;
     std::uint32_t lightChanges_ = 0;
     std::vector<PlaneRange> floorRanges_, ceilingRanges_;
+    std::map<int, std::vector<int>> sectorsByTag_;  // tag -> its sectors, in order
     std::vector<PlaneInstance> planeInstances_;
     std::vector<LightMaterial> lightMaterials_;
     std::vector<bool> lightVaries_;

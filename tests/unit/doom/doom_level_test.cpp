@@ -152,5 +152,18 @@ TEST(DoomLevel, LiftCarriesThePlayerUpAndTheExitSwitchEndsTheLevel) {
     EXPECT_EQ(level.exitTic(), level.tics());
 }
 
+// Hostile maps: many special lines naming one tag shared by many sectors are read in time linear
+// in their number (each tag and action is looked at once), and firing them all stays bounded.
+TEST(DoomLevel, ManyLinesOnManyTaggedSectorsLoadQuickly) {
+    wad::MapData map;
+    map.name = "MAP01";
+    map.vertices = {{0, 0}, {64, 0}};
+    for (int s = 0; s < 20000; ++s) map.sectors.push_back({0, 128, "F", "C", 160, 0, 1});
+    map.sidedefs.push_back({0, 0, "-", "-", "W", 0});
+    for (int i = 0; i < 60000; ++i) map.linedefs.push_back({0, 1, 0, std::uint16_t(i % 2 ? 23 : 63), 1, 0, wad::kNoSide});
+    const Level level(map);
+    EXPECT_TRUE(level.range(19999, Plane::Floor).moves || level.range(19999, Plane::Ceiling).moves);
+}
+
 }  // namespace
 }  // namespace penumbra::doom
