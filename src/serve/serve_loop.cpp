@@ -21,7 +21,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr auto kStatsInterval = std::chrono::milliseconds(250);
 constexpr const char* kControls =
-    "WASD/arrows move, Q/E turn, Space/C up/down, Shift fast, F walk/fly, G grid, R reset, P play/pause, "
+    "WASD/arrows move, Q/E turn, Space/C up/down, Space/Enter use (walking a Doom level), Shift fast, F walk/fly, "
+    "G grid, R reset, P play/pause, "
     "N next object, I/K/J/L/O/U and ,/. move and turn it, click selects, drag moves (Shift turns)";
 
 // What the loop carries from frame to frame besides the scene and the renderer.

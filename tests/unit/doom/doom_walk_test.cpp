@@ -3,6 +3,7 @@
 // 0.03125` plays it (no window, no GPU; the GPU run at 64x64 is tests/gpu's). DOOM1.WAD is not in
 // Debian: its walk is checked where DOOM1_WAD names a copy (default /tmp/DOOM1.WAD), else skipped.
 // PENUMBRA_WRITE_WALKS=DIR plans the walks again (walk_planner.h) and writes them into DIR.
+#include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -11,6 +12,7 @@
 #include <sstream>
 
 #include "../wad/freedoom_wad.h"
+#include "interact/controls.h"
 #include "interact/doom_play.h"
 #include "scene/doom/level.h"
 #include "scene/io/wad/sector_light.h"
@@ -65,6 +67,21 @@ TEST(DoomWalks, Doom1E1M1WalkEndsTheLevel) {
     const Scene scene = loadWad(doom1Path(), "E1M1");
     writeWalk(scene, "DOOM1.WAD (shareware) E1M1, from the player start to the exit switch", "doom1-e1m1-exit.txt");
     checkWalk(scene, "doom1-e1m1-exit.txt");
+}
+
+// Space is Doom's use key while walking and still moves up in free flight; Enter uses too.
+TEST(DoomControls, SpaceAndEnterUse) {
+    viewer::InputState in;
+    viewer::applyKey(in, GLFW_KEY_SPACE, true);
+    EXPECT_TRUE(in.use);
+    EXPECT_EQ(viewer::cameraInputFrom(in).up, 1.0f);
+    viewer::endInputFrame(in);
+    EXPECT_FALSE(in.use);
+    EXPECT_EQ(viewer::cameraInputFrom(in).up, 1.0f);  // held: still up, used once
+    viewer::applyKey(in, GLFW_KEY_SPACE, false);
+    viewer::applyKey(in, GLFW_KEY_ENTER, true);
+    EXPECT_TRUE(in.use);
+    EXPECT_EQ(viewer::cameraInputFrom(in).up, 0.0f);
 }
 
 // Freedoom's E1M1 has flashing and strobing sectors: as the level plays, their fill light's
