@@ -406,9 +406,15 @@ std::optional<PlannedWalk> planWalk(const Scene& scene, const std::string& title
 std::optional<std::string> playWalk(const Scene& scene, const std::string& script, double limitSeconds) {
     viewer::ScriptPlayer player(viewer::parseInputScript(script, "walk"));
     Session session(scene);
-    while (session.clock <= limitSeconds && !session.completion) {
+    const char* trace = std::getenv("PENUMBRA_WALK_TRACE");  // frames between printed positions
+    const int every = trace ? std::max(1, std::atoi(trace)) : 0;
+    for (int frame = 1; session.clock <= limitSeconds && !session.completion; ++frame) {
         player.playFrame(session.input, kWalkStep);
         session.frame();
+        if (every && frame % every == 0) {
+            const walk::WalkState& p = session.nav.controller().player();
+            std::fprintf(stderr, "frame %d: %.5g %.5g %.5g\n", frame, p.x / 32, (p.z + 41) / 32, -p.y / 32);
+        }
     }
     return session.completion;
 }
