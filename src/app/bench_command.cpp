@@ -29,6 +29,7 @@ struct BenchArgs {
     std::uint32_t spp = 1, denoise = 5;
     std::optional<std::uint32_t> rouletteStart;  // unset: the scene's, as in the viewer
     bool noTemporal = false;
+    bool moveSectors = false;
     bool shareCameraRays = false;
     float shadowRoulette = kDefaultShadowRouletteShare;
     std::string motion = "static";
@@ -78,11 +79,11 @@ void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Conte
                      const ViewerBenchResult& r) {
     std::printf("{\n  \"scene\": \"%s\",\n  \"device\": \"%s\",\n  \"width\": %u,\n  \"height\": %u,\n"
                 "  \"spp\": %u,\n  \"bounces\": %u,\n  \"roulette_start\": %u,\n  \"temporal\": %s,\n"
-                "  \"denoise_passes\": %u,\n  \"shared_camera_rays\": %s,\n  \"shadow_roulette\": %.3g,\n  \"camera_motion\": \"%s\",\n  \"frames\": %d,\n  \"viewer_frame_ms\": %.4f,\n  \"passes\": {",
+                "  \"denoise_passes\": %u,\n  \"shared_camera_rays\": %s,\n  \"shadow_roulette\": %.3g,\n  \"camera_motion\": \"%s\",\n  \"move_sectors\": %s,\n  \"frames\": %d,\n  \"viewer_frame_ms\": %.4f,\n  \"passes\": {",
                 jsonEscape(scene.name).c_str(), jsonEscape(ctx.info().name).c_str(), o.width, o.height, o.view.samplesPerFrame,
                 o.view.maxBounces, o.view.rouletteStart, o.view.temporal ? "true" : "false",
                 o.view.denoise ? o.view.denoiseIterations : 0, o.view.shareCameraRays ? "true" : "false", o.view.shadowRouletteShare,
-                cameraMotionName(o.motion), r.frames, r.frameMs);
+                cameraMotionName(o.motion), o.moveSectors ? "true" : "false", r.frames, r.frameMs);
     const char* sep = "";
     for (const auto& [name, ms] : r.passMs) {
         std::printf("%s\n    \"%s\": %.4f", sep, name.c_str(), ms);
@@ -126,6 +127,7 @@ void runViewerBenchCommand(const BenchArgs& args) {
     o.view.samplesPerFrame = args.spp;
     o.view.maxBounces = args.bounces;
     o.view.temporal = !args.noTemporal;
+    o.moveSectors = args.moveSectors;
     o.view.shareCameraRays = args.shareCameraRays;
     o.view.denoise = args.denoise > 0;
     o.view.denoiseIterations = std::max(args.denoise, 1u);
@@ -240,6 +242,8 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--spp", args->spp, "--viewer: samples per pixel per frame (default 1)");
     cmd->add_option("--denoise", args->denoise, "--viewer: a-trous denoiser passes, 0 turns it off (default 5)");
     cmd->add_flag("--no-temporal", args->noTemporal, "--viewer: no temporal accumulation");
+    cmd->add_flag("--move-sectors", args->moveSectors,
+                  "--viewer, Doom levels: every door, lift, floor and crusher moves while timing (issue 40's target)");
     cmd->add_flag("--share-camera-rays", args->shareCameraRays,
                   "--viewer: a pixel's samples in a frame share one camera ray (the viewer's option; faster, raw mean noisier)");
     cmd->add_option("--shadow-roulette", args->shadowRoulette,

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "app/render_sequence.h"
 #include "core/atomic_file.h"
@@ -82,7 +84,7 @@ class FinalFrames final : public FrameMaker {
 public:
     FinalFrames(const gpu::Context& ctx, const FrameJob& job) : ctx_(ctx), job_(job) {}
     RenderedFrame make(const Scene& scene, const Camera& camera, double seconds, WorldChange change) override {
-        if (!renderer_ || change.instancesMoved || change.geometryChanged)
+        if (!renderer_ || change.instancesMoved || change.geometryChanged || !change.lightsChanged.empty())
             renderer_ = std::make_unique<Renderer>(ctx_, scene, job_.settings);
         renderer_->restart(camera, textureTime(seconds));
         ProgressiveRender render(*renderer_, job_.adaptive);
@@ -116,6 +118,7 @@ public:
     RenderedFrame make(const Scene& scene, const Camera& camera, double seconds, WorldChange change) override {
         if (change.geometryChanged) renderer_.rebuildScene(scene, true);
         else if (change.instancesMoved) renderer_.setInstanceTransforms(scene);
+        for (std::uint32_t m : change.lightsChanged) renderer_.setUnsampledEmission(m, scene.materials[m].emission);
         settings_.time = textureTime(seconds);
         renderer_.commands().run([&](VkCommandBuffer cmd) { renderer_.record(cmd, camera, settings_); });
         renderer_.finishFrame();
@@ -210,11 +213,13 @@ void renderVideo(const gpu::Context& ctx, Scene& scene, const FrameJob& job, con
     std::optional<StopOnSignals> signals;
     if (job.stopOnSignals) signals.emplace();
     const auto start = std::chrono::steady_clock::now();
+    std::optional<std::string> levelCompleted;  // a walk that ends a Doom level says so at the end
     {
         ProgressBar progress(video.walk ? "walk" : "video", total, job.quiet ? ProgressMode::Off : job.progress,
                              "frames");
         for (std::uint64_t i = 0; i < total; ++i) {
             const WorldChange change = source->next(scene);
+            if (change.levelCompleted) levelCompleted = change.levelCompleted;
             const RenderedFrame frame = maker->make(scene, source->camera(scene), source->seconds(), change);
             // A frame cut short by the signal is not kept: every frame kept is a whole one.
             if (const int signal = StopOnSignals::signal().load()) throwInterrupted(signal, i, total, sink.video(), output);
@@ -225,6 +230,7 @@ void renderVideo(const gpu::Context& ctx, Scene& scene, const FrameJob& job, con
         progress.finish();
     }
     if (job.quiet) return;
+    if (levelCompleted) std::fprintf(stderr, "penumbra: %s\n", levelCompleted->c_str());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "penumbra: %s: %llu frames %ux%u at %.4g fps (%s, %u spp a frame) in %.1f s -> %s\n",
                  video.walk ? video.walkName.c_str() : scene.name.c_str(), static_cast<unsigned long long>(total),

@@ -61,6 +61,10 @@ bool CameraController::setWalking(bool on) {
     return true;
 }
 
+void CameraController::setSectorHeights(const std::vector<walk::WalkSector>& sectors) {
+    if (walkMap_ && walkMap_->sectors.size() == sectors.size()) walkMap_->sectors = sectors;
+}
+
 void CameraController::scaleSpeed(float factor) { speed_ = std::clamp(speed_ * factor, 1e-4f, 1e6f); }
 
 Vec3 CameraController::horizontalForward() const { return yawZero_ * std::cos(yaw_) + yawNinety_ * std::sin(yaw_); }

@@ -34,6 +34,9 @@ public:
     bool canWalk() const { return walkMap_.has_value(); }
 
     Camera camera() const;
+    // Walking: the player (map units). Its level's sectors move: the heights walking meets now.
+    const walk::WalkState& player() const { return player_; }
+    void setSectorHeights(const std::vector<walk::WalkSector>& sectors);
     float speed() const { return speed_; }
 
 private:

@@ -19,6 +19,9 @@ void applyKey(InputState& in, int key, bool pressed) {
         case GLFW_KEY_ESCAPE: in.escape = true; break;
         case GLFW_KEY_N: in.nextInstance = true; break;
         case GLFW_KEY_G: in.gridToggled = true; break;
+        // Space also moves up, in free flight; walking, it is Doom's use key (Enter is the other).
+        case GLFW_KEY_SPACE:
+        case GLFW_KEY_ENTER: in.use = true; break;
         default: break;
     }
 }
@@ -57,7 +60,7 @@ void endInputFrame(InputState& in) {
     in.lookX = in.lookY = in.scroll = 0;
     in.pauseToggled = in.resetCamera = in.screenshot = false;
     in.walkToggled = in.panelToggled = in.escape = false;
-    in.nextInstance = in.gridToggled = false;
+    in.nextInstance = in.gridToggled = in.use = false;
 }
 
 }  // namespace penumbra::viewer

@@ -17,6 +17,7 @@ struct InputState {
     bool pauseToggled = false, resetCamera = false, screenshot = false;
     bool walkToggled = false, panelToggled = false, escape = false;
     bool nextInstance = false, gridToggled = false;
+    bool use = false;  // Doom's "use" (Space or Enter): opens doors and turns switches while walking
 };
 
 // What the held keys ask of the selected instance: I/K forward/back, J/L left/right (along the

@@ -17,11 +17,22 @@ Navigation::Navigation(const Scene& scene, bool fly)
     : controller_(scene.camera, cameraSpeedFor(scene), scene.walkMap) {
     if (fly) controller_.setWalking(false);
     if (scene.tileGrid && !fly) grid_ = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
+    if (scene.doomLevel) {
+        doom_ = std::make_unique<DoomPlay>(*scene.doomLevel);
+        // Walking meets the heights the level holds (as loaded, at the start).
+        controller_.setSectorHeights(doom_->level().walkMap().sectors);
+    }
 }
 
 void Navigation::update(const CameraInput& input, float seconds) {
-    if (grid_) grid_->update(input, seconds);
-    else controller_.update(input, seconds);
+    if (grid_) {
+        grid_->update(input, seconds);
+        return;
+    }
+    std::optional<walk::WalkState> before;
+    if (controller_.walking()) before = controller_.player();
+    controller_.update(input, seconds);
+    if (doom_) doom_->update(controller_, before, seconds);
 }
 
 std::string Navigation::handlePresses(const InputState& input, const Scene& scene) {
@@ -33,6 +44,10 @@ std::string Navigation::handlePresses(const InputState& input, const Scene& scen
     if (input.walkToggled) message = toggleWalking();
     if (input.gridToggled) message = toggleGrid(scene);
     if (input.scroll != 0) controller_.scaleSpeed(std::pow(1.25f, input.scroll));
+    if (input.use && doom_ && walking())
+        if (std::string said = doom_->use(controller_); !said.empty()) message = said;
+    if (doom_)
+        if (std::string said = doom_->takeMessage(); !said.empty()) message = said;
     return message;
 }
 
@@ -50,6 +65,7 @@ std::string Navigation::toggleWalking() {
 std::string Navigation::toggleGrid(const Scene& scene) {
     if (grid_) {
         controller_ = CameraController(grid_->camera(), cameraSpeedFor(scene), scene.walkMap);
+        if (doom_) controller_.setSectorHeights(doom_->level().walkMap().sectors);
         controller_.setWalking(false);
         grid_.reset();
         return "free flight (G: grid movement)";

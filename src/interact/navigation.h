@@ -9,6 +9,7 @@
 
 #include "interact/camera_controller.h"
 #include "interact/controls.h"
+#include "interact/doom_play.h"
 #include "interact/grid_walk.h"
 #include "render/view_settings.h"
 #include "scene/scene.h"
@@ -24,9 +25,11 @@ public:
     Navigation(const Scene& scene, bool fly);
 
     Camera camera() const { return grid_ ? grid_->camera() : controller_.camera(); }
-    // Moves by the held keys and the look motion over `seconds`.
+    // Moves by the held keys and the look motion over `seconds`; a Doom level plays on (its
+    // specials, doors and lifts: doom_play.h).
     void update(const CameraInput& input, float seconds);
-    // The frame's presses: R resets, F walks or flies, G grid movement, the wheel flight speed.
+    // The frame's presses: R resets, F walks or flies, G grid movement, the wheel flight speed,
+    // Space or Enter uses (walking a Doom level).
     // Returns the line to show the user ("" when nothing needs saying).
     std::string handlePresses(const InputState& input, const Scene& scene);
 
@@ -35,6 +38,17 @@ public:
     bool gridMoving() const { return grid_ != nullptr; }
     float speed() const { return controller_.speed(); }
     CameraController& controller() { return controller_; }
+    const CameraController& controller() const { return controller_; }
+    // Doom levels: the level being played (none for other scenes).
+    DoomPlay* doom() { return doom_.get(); }
+    const DoomPlay* doom() const { return doom_.get(); }
+    // Moves the instances of a Doom level's moving floors and ceilings to where they are now; true
+    // when one moved (the renderer then takes the new transforms).
+    bool moveSectors(Scene& scene) const { return doom_ && doom_->moveSectors(scene); }
+    // A Doom level's sector lights as they are now, in their materials; the materials changed.
+    std::vector<std::uint32_t> applyLights(Scene& scene) { return doom_ ? doom_->applyLights(scene) : std::vector<std::uint32_t>{}; }
+    // "E1M1 complete in T s", once, on the first call after a Doom level ended.
+    std::optional<std::string> takeLevelCompletion() { return doom_ ? doom_->takeCompletion() : std::nullopt; }
 
 private:
     std::string toggleWalking();
@@ -43,6 +57,7 @@ private:
     CameraController controller_;
     // Not std::optional: GCC 12 warns of it being maybe uninitialized.
     std::unique_ptr<GridWalker> grid_;
+    std::unique_ptr<DoomPlay> doom_;
 };
 
 // What the scene decides of the view. The torch: attached as the scene's last punctual light so

@@ -5,9 +5,12 @@
 namespace penumbra::viewer {
 
 WorldChange playStep(Scene& scene, Navigation& nav, const InputState& input, double& clock, float step) {
-    nav.update(cameraInputFrom(input), step);
+    nav.update(cameraInputFrom(input), step);  // a Doom level's tics run here too
     clock += step;
     WorldChange change;
+    change.instancesMoved = nav.moveSectors(scene);  // doors and lifts
+    change.lightsChanged = nav.applyLights(scene);
+    change.levelCompleted = nav.takeLevelCompletion();
     // Animated instances (glTF animations, scene-file motions) follow the clock.
     if (animatesGeometry(scene)) {
         applyInstanceAnimations(scene, clock);

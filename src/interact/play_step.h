@@ -1,8 +1,13 @@
 // One frame of play, the same for every front end (the window, the browser, `render --walk`):
 // the camera moves by the input, then the world advances by the frame's time. This is the one
-// place where the world moves by itself each frame: instance animations today; a Doom map's
-// moving sectors (doors, lifts, a per-tic update) plug in here.
+// place where the world moves by itself each frame: instance animations, and a Doom level's
+// specials (doors, lifts, light changes, the exit: interact/doom_play.h).
 #pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "interact/controls.h"
 #include "interact/navigation.h"
@@ -14,6 +19,10 @@ namespace penumbra::viewer {
 struct WorldChange {
     bool instancesMoved = false;   // top level only: InteractiveRenderer::setInstanceTransforms
     bool geometryChanged = false;  // meshes changed: a bottom level must be rebuilt or refitted
+    // Materials whose emission changed (a Doom sector's light): InteractiveRenderer::setUnsampledEmission.
+    std::vector<std::uint32_t> lightsChanged;
+    // The frame the level ended: "E1M1 complete in 42.3 s", for the front end to print and show.
+    std::optional<std::string> levelCompleted;
 };
 
 // Moves the camera by `input` over `step` seconds, advances `clock` (seconds played) by `step`

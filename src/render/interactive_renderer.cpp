@@ -154,6 +154,13 @@ void InteractiveRenderer::setMaterial(std::uint32_t index, const Material& mater
     stillGBuffer_[0] = stillGBuffer_[1] = false;  // the albedo changed
 }
 
+void InteractiveRenderer::setUnsampledEmission(std::uint32_t index, Vec3 emission) {
+    PN_CHECK(index < arrays_.materials.size());
+    arrays_.materials[index].emission = emission;
+    pendingMaterials_.push_back(index);
+    historyValid_ = false;
+}
+
 void InteractiveRenderer::setInstanceTransforms(const Scene& scene) {
     bool changed = false;
     for (shader::Instance& i : arrays_.instances) {
@@ -380,6 +387,10 @@ void InteractiveRenderer::recordUploads(VkCommandBuffer cmd, const Camera& camer
                           &light);
     }
     uploadInstances(cmd, instancesMoved);
+    for (std::uint32_t index : pendingMaterials_)
+        vkCmdUpdateBuffer(cmd, gpuScene_->materials.get(), VkDeviceSize(index) * sizeof(shader::Material),
+                          sizeof(shader::Material), &arrays_.materials[index]);
+    pendingMaterials_.clear();
     if (heat) vkCmdFillBuffer(cmd, heatCounters_.get(), 0, VK_WHOLE_SIZE, 0);
     transferToComputeBarrier(cmd);
 }

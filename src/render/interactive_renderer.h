@@ -50,6 +50,10 @@ public:
     // other ones (a material turned to glass or metal). Its emission must be unchanged, because
     // the light tables weigh emitters by power (an emission edit needs rebuildScene).
     void setMaterial(std::uint32_t index, const Material& material);
+    // New emission for a material that light sampling leaves out (Material::lightSampled false:
+    // Doom's sector fill light, which light specials change every few tics). It goes up with the
+    // next frame, no wait; the history restarts, since the light changed wherever it reaches.
+    void setUnsampledEmission(std::uint32_t index, Vec3 emission);
 
     // Moves the instances to where `scene` (the scene loaded, its instances moved: an animation,
     // an edited object) now places them: the top level is rebuilt on the CPU and goes to the GPU
@@ -137,7 +141,8 @@ private:
     // The instances as the previous frame placed them (gbuffer.comp's object motion), and the
     // staging buffer that carries moved instances and the top level up.
     gpu::Buffer instancesPrev_, instanceStaging_;
-    std::vector<shader::Instance> lastFrameInstances_;  // as the last recorded frame placed them
+    std::vector<shader::Instance> lastFrameInstances_;
+    std::vector<std::uint32_t> pendingMaterials_;  // materials to upload with the next frame  // as the last recorded frame placed them
     bool prevMatchesCurrent_ = true;  // instancesPrev_ holds the current instances
     bool objectMotionVectors_ = true;
     gpu::Buffer* historyIn_ = nullptr;  // last frame's history; the two swap every frame

@@ -10,6 +10,7 @@
 #include "core/median.h"
 #include "gpu/buffer.h"
 #include "render/kernel_features.h"
+#include "scene/doom/level.h"
 #include "scene/animation.h"
 #include "shared/constants.h"
 
@@ -125,11 +126,23 @@ ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bo
     // Animated instances (the dungeon's phantom, glTF animations) move on the same clock, so the
     // timed frames include their top-level upload and object motion.
     std::optional<Scene> moving;
-    if (animatesGeometry(scene)) moving = scene;
+    if (animatesGeometry(scene) || (o.moveSectors && scene.doomLevel)) moving = scene;
+    std::optional<doom::Level> level, started;
+    int ticked = 0;
+    if (o.moveSectors && scene.doomLevel) started = level = doom::withEverythingMoving(*scene.doomLevel);
     auto nextCamera = [&] {
         Camera c = cameraInMotion(scene.camera, o.motion, scriptTime);
         if (moving) {
-            applyInstanceAnimations(*moving, scriptTime);
+            if (animatesGeometry(scene)) applyInstanceAnimations(*moving, scriptTime);
+            if (level) {
+                const int due = int(scriptTime * doom::kTicsPerSecond);
+                ticked = std::min(ticked, due);  // the timed frames start the script again
+                for (; ticked < due; ++ticked) {
+                    level->tic(std::nullopt);
+                    if (level->activeMovers() == 0) level = started;
+                }
+                doom::placePlaneInstances(*level, moving->instances);
+            }
             renderer.setInstanceTransforms(*moving);
         }
         scriptTime += o.frameSeconds;

@@ -40,6 +40,9 @@ struct ViewerBenchOptions {
     // Instead of budgetMs: exactly this many frames per trial, so that builds which differ only
     // after the trace (the denoiser) filter the same images.
     int budgetFrameCount = 0;
+    // A Doom level: every door, lift, floor and crusher moves on the script's clock (fired again
+    // once all have stopped), so the frames include the moving sectors' top-level uploads.
+    bool moveSectors = false;
 };
 
 struct ViewerBenchResult {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +17,10 @@
 #include "scene/walk/walk_map.h"
 
 namespace penumbra {
+
+namespace doom {
+class Level;  // scene/doom/level.h
+}
 
 // A texture that is one frame of a cycle (Doom's flowing liquids, fire): the textures
 // [index - frame, index - frame + frames) are the cycle's frames in order, each shown for
@@ -256,6 +261,9 @@ struct Scene {
     std::optional<std::uint32_t> viewerRouletteStart;
     // Doom levels: the lines walking collides with (map units); none where a format has no levels.
     std::optional<walk::WalkMap> walkMap;
+    // Doom levels: the level as loaded, with its line specials and the instances that carry its
+    // moving floors and ceilings (scene/doom/level.h); the viewer plays a copy of it.
+    std::shared_ptr<const doom::Level> doomLevel;
     // Tile-map levels: the grid the viewer's grid movement steps on.
     std::optional<TileGrid> tileGrid;
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <optional>
 #include <thread>
 
@@ -21,7 +22,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr auto kStatsInterval = std::chrono::milliseconds(250);
 constexpr const char* kControls =
-    "WASD/arrows move, Q/E turn, Space/C up/down, Shift fast, F walk/fly, G grid, R reset, P play/pause, "
+    "WASD/arrows move, Q/E turn, Space/C up/down, Space/Enter use (walking a Doom level), Shift fast, F walk/fly, "
+    "G grid, R reset, P play/pause, "
     "N next object, I/K/J/L/O/U and ,/. move and turn it, click selects, drag moves (Shift turns)";
 
 // What the loop carries from frame to frame besides the scene and the renderer.
@@ -43,6 +45,7 @@ struct LoopState {
     bool mustRender = true;  // a browser joined or something changed: render even when paused
     bool instancesMoved = false;
     bool geometryChanged = false;  // a mesh moved (WorldChange): the renderer rebuilds the scene
+    std::vector<std::uint32_t> lightsChanged;  // materials whose emission a Doom light special changed
     std::optional<Camera> shownCamera;
     std::optional<ViewSettings> shownSettings;
 };
@@ -119,6 +122,12 @@ void applyInput(LoopState& s, Scene& scene, float step) {
         s.instancesMoved = true;
     if (s.remote.playing) {
         const viewer::WorldChange change = viewer::playStep(scene, s.nav, in, s.animationClock, step);
+        s.lightsChanged.insert(s.lightsChanged.end(), change.lightsChanged.begin(), change.lightsChanged.end());
+        if (change.levelCompleted) {
+            std::printf("%s\n", change.levelCompleted->c_str());
+            std::fflush(stdout);
+            s.message = *change.levelCompleted;
+        }
         s.remote.view.time = float(s.animationClock);
         if (change.instancesMoved || change.geometryChanged) s.instancesMoved = true;
         s.geometryChanged = s.geometryChanged || change.geometryChanged;
@@ -218,6 +227,8 @@ void ServeLoop::run(FrameReadback& readback, FrameEncoder& encoder, const std::f
         renderer.resize(w, h);
         applyInbox(s, scene, renderer, hub.drain());
         applyInput(s, scene, step);
+        for (std::uint32_t m : s.lightsChanged) renderer.setUnsampledEmission(m, scene.materials[m].emission);
+        s.lightsChanged.clear();
         const Camera camera = s.nav.camera();
         const bool changed = s.shownCamera != camera || s.shownSettings != s.remote.view || s.instancesMoved;
         if (s.remote.playing || s.mustRender || changed) {

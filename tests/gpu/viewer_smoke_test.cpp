@@ -190,5 +190,29 @@ TEST_F(ViewerSmokeTest, ScriptedWalkOnFreedoomE1M1StopsAtTheWallAtEyeHeight) {
     EXPECT_NEAR(end.z, map.sectors[std::size_t(sector)].floor + walk::kEyeHeight, 0.01) << "eye height";
 }
 
+// The walk shipped for Freedoom's E1M1 (scenes/walks/), played by the viewer at 64x64 on
+// lavapipe: through the doors and lifts to the exit switch, where ending the level prints the
+// line and ends the run with exit 0 (a --script run that ends its level needs no --frames). Its
+// 2300 frames are drawn in the albedo view (the G-buffer, no path tracing), which lavapipe draws
+// in a tenth of a second at this size: the walk, the moving sectors' uploads and the window are
+// the same; full path tracing would take half an hour on a 2-core machine.
+TEST_F(ViewerSmokeTest, FreedoomE1M1WalkEndsTheLevelAndTheRun) {
+    const char* wadPath = "/usr/share/games/doom/freedoom1.wad";
+    PN_REQUIRE_XVFB();
+    if (!fs::exists(wadPath)) {
+        if (std::getenv("CI")) FAIL() << wadPath << " is missing (install freedoom)";
+        GTEST_SKIP() << wadPath << " is not installed (apt install freedoom)";
+    }
+    const std::string walk = std::string(PENUMBRA_SOURCE_DIR) + "/scenes/walks/freedoom1-e1m1-exit.txt";
+    RunResult r = runViewer(dir,
+                            std::string("view ") + wadPath + " --map E1M1 --width 64 --height 64 --debug albedo --fixed-dt 0.03125 --script " +
+                                walk,
+                            true, "timeout 1800");  // a walk that never ends its level would keep the window open
+    ASSERT_NE(r.exitCode, 124) << "the walk did not end the level within 30 minutes";
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("E1M1 complete in 71.7 s"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace penumbra::test

@@ -234,6 +234,7 @@ struct LoopState {
     std::string pendingScreenshot;
     double fpsSmoothed = 0;
     double animationClock = 0;  // seconds played: the moment animated textures show
+    bool levelEndedByScript = false;  // --script ended a Doom level: the viewer exits 0
 
     LoopState(const Scene& scene, const ViewerOptions& options, const InteractiveRenderer& renderer)
         : nav(scene, options.fly) {
@@ -273,6 +274,14 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     // their frame; playing, they run at the game's rate in simulated time (--fixed-dt too).
     if (advancing) {
         const WorldChange change = playStep(scene, loop.nav, loop.input, loop.animationClock, step);
+        for (std::uint32_t m : change.lightsChanged) renderer.setUnsampledEmission(m, scene.materials[m].emission);
+        if (change.levelCompleted) {
+            std::printf("%s\n", change.levelCompleted->c_str());
+            std::fflush(stdout);
+            loop.panel.message = *change.levelCompleted;
+            glfwSetWindowTitle(w, ("penumbra - " + scene.name + " - " + *change.levelCompleted).c_str());
+            loop.levelEndedByScript = loop.script.has_value();  // a script that ends the level is done
+        }
         settings.time = float(loop.animationClock);
         if (change.geometryChanged) renderer.rebuildScene(scene, true);
         else if (change.instancesMoved) instancesMoved = true;
@@ -401,8 +410,10 @@ void runViewer(Scene scene, const ViewerOptions& options) {
         const float dt = std::min(std::chrono::duration<float>(now - last).count(), 0.25f);
         last = now;
         const float step = options.fixedDt ? float(*options.fixedDt) : dt;  // simulated seconds this frame
-        // Automation: after the N-th frame nothing moves or renders; its frame finishes, then exit.
-        const bool automationDone = options.frames && loop.framesRendered >= *options.frames;
+        // Automation: after the N-th frame (or once a script ended the Doom level) nothing moves or
+        // renders; its frame finishes, then exit.
+        const bool automationDone =
+            (options.frames && loop.framesRendered >= *options.frames) || loop.levelEndedByScript;
 
         applyInput(loop, scene, renderer, ui, window.get(), settings, step, automationDone);
         drawUi(loop, scene, renderer, ui, settings, dt);

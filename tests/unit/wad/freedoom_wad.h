@@ -9,6 +9,9 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
+
+#include "scene/scene.h"
 
 namespace penumbra::test {
 
@@ -19,6 +22,15 @@ inline std::string readWad(const std::string& name) {
     std::ifstream in(std::filesystem::path(kDoomDir) / name, std::ios::binary);
     if (!in) return {};
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// The level's meshes: the world's, then those of the instances that carry its moving floors and
+// ceilings (placed where the map has them: their transforms are the identity at load).
+inline std::vector<Mesh> worldAndMovingMeshes(const Scene& scene) {
+    std::vector<Mesh> out = scene.meshes;
+    for (const Instance& i : scene.instances)
+        for (const Mesh& m : scene.prototypes[i.prototype].meshes) out.push_back(m);
+    return out;
 }
 
 }  // namespace penumbra::test

@@ -70,7 +70,7 @@ void checkMap(const std::string& bytes, const std::string& file, const wad::MapL
     validateCamera(scene.camera);
 
     std::vector<double> floorArea(map.sectors.size()), ceilingArea(map.sectors.size());
-    for (const Mesh& m : scene.meshes) {
+    for (const Mesh& m : test::worldAndMovingMeshes(scene)) {
         for (Vec3 p : m.positions) ASSERT_TRUE(isFinite(p)) << m.name;
         for (Vec3 n : m.normals) ASSERT_NEAR(length(n), 1.0f, 1e-5f) << m.name;
         ASSERT_GE(m.lightLevel, 0.0f);
@@ -216,7 +216,7 @@ TEST(WadFreedoom, E1M1GlowsSectorLightSkyAndSprites) {
     Scene scene = loadWadFromMemory(bytes, "E1M1", "freedoom1.wad");
     std::size_t glowing = 0, sectorLit = 0, sky = 0;
     std::map<std::string, std::size_t> glowingByMaterial;
-    for (const Mesh& m : scene.meshes) {
+    for (const Mesh& m : test::worldAndMovingMeshes(scene)) {
         const Material& mat = scene.materials[m.material];
         if (mat.skyPortal) sky += m.triangleCount();
         else if (mat.emissionHiddenFromCamera) sectorLit += m.triangleCount();

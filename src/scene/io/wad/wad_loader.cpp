@@ -1,7 +1,9 @@
 // Builds a Scene from one Doom map: walls with Doom's pegging rules, sector floors and ceilings
 // (triangulate.cpp), glowing textures and flats as emitters (glow.h), sector light levels as fill
 // light from the ceilings (sector_light.h), sky ceilings as portals onto the sky (sky.h), the
-// player start as the camera, and things as sprites and lamps (thing_placement.h). Doom units
+// player start as the camera, and things as sprites and lamps (thing_placement.h). Floors and
+// ceilings that the map's specials can move (scene/doom/level.h) go into instances of their own,
+// with the walls that move with them, so the viewer moves them by their transforms. Doom units
 // become metres at 32 units per metre; Doom (x, y, z up) becomes (x, z, -y) here, with y up.
 #include "scene/io/wad/wad_loader.h"
 
@@ -14,6 +16,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "scene/doom/level.h"
 #include "scene/environment.h"
 #include "scene/io/wad/glow.h"
 #include "scene/io/wad/map.h"
@@ -45,7 +48,7 @@ bool hasTexture(const std::string& name) { return !name.empty() && name != "-"; 
 class SceneBuilder {
 public:
     SceneBuilder(const WadFile& wad, const MapData& map, const WadOptions& options)
-        : wad_(wad), map_(map), options_(options), textures_(wad) {}
+        : wad_(wad), map_(map), options_(options), textures_(wad), level_(std::make_shared<doom::Level>(map)) {}
 
     Scene build() {
         scene_.name = wad_.fileName() + ":" + map_.name;
@@ -60,6 +63,8 @@ public:
         placeCamera();
         placeThings(wad_, map_, textures_, options_, scene_);
         scene_.walkMap = walk::buildWalkMap(map_);
+        placeMovingPlanes();
+        scene_.doomLevel = level_;
         scene_.textures = std::move(textures_.textures());
         scene_.validate();
         return std::move(scene_);
@@ -82,14 +87,19 @@ private:
     }
 
     // A wall texture or flat, glowing where glow.h says it does.
-    std::uint32_t material(const std::string& key, const std::string& texName, bool flat, int texture, bool masked) {
-        return add(key, [&] {
+    // moving: for geometry that moves (an instance): a glow there is found by bounce rays only,
+    // since light-sampled emitters are baked into the world where they stand (instances.h).
+    std::uint32_t material(const std::string& key, const std::string& texName, bool flat, int texture, bool masked,
+                           bool moving = false) {
+        const Glow glow = options_.glow > 0 ? glowOf(texName, flat) : Glow{};
+        const bool movingGlow = moving && glow.kind != GlowKind::None;
+        return add(movingGlow ? "moving " + key : key, [&] {
             Material m = surface(key, texture, masked);
-            const Glow glow = options_.glow > 0 ? glowOf(texName, flat) : Glow{};
             if (glow.kind != GlowKind::None) {
                 m.emission = Vec3(glow.strength * options_.glow);
                 m.emissionTexture = m.albedoTexture;
                 m.emissionTexture.texture = glowTextureOf(texture, glow.kind);
+                m.lightSampled = !movingGlow;
             }
             return m;
         });
@@ -114,15 +124,21 @@ private:
 
     // A floor or non-sky ceiling: it gives off its sector's fill light (sector_light.h) unless it
     // glows itself (its own light fills the sector then) or the sector is closed (a shut door).
-    std::uint32_t flatMaterial(const Sector& sec, const std::string& flatName) {
+    // A sector whose light changes (a light special) gets materials of its own, which the level
+    // drives (doom::Level::lightMaterials).
+    std::uint32_t flatMaterial(int sector, const std::string& flatName, bool moving = false) {
+        const Sector& sec = map_.sectors[std::size_t(sector)];
         const int texture = textures_.flat(flatName);
         const float radiance = sectorRadiance(sec.lightLevel) * options_.sectorLight;
         const bool glows = options_.glow > 0 && glowOf(flatName, true).kind != GlowKind::None;
-        if (glows || !(radiance > 0) || sec.ceilingHeight <= sec.floorHeight)
-            return material("flat " + flatName, flatName, true, texture, false);
+        const bool varies = level_->lightVaries(sector) && options_.sectorLight > 0;
+        if (glows || !(radiance > 0 || varies) || sec.ceilingHeight <= sec.floorHeight)
+            return material("flat " + flatName, flatName, true, texture, false, moving);
         const int level = std::clamp<int>(sec.lightLevel, 0, 255);
-        const std::string key = "flat " + flatName + " light " + std::to_string(level);
-        return add(key, [&] {
+        const std::string key = "flat " + flatName + " light " + std::to_string(level) +
+                                (varies ? " sector " + std::to_string(sector) : std::string());
+        const std::size_t before = scene_.materials.size();
+        const std::uint32_t index = add(key, [&] {
             Material m = surface(key, texture, false);
             m.emission = Vec3(radiance);
             m.emissionHiddenFromCamera = true;  // the room looks lit; its floor and ceiling do not glow
@@ -133,6 +149,9 @@ private:
             m.lightSampled = false;
             return m;
         });
+        if (varies && scene_.materials.size() > before)
+            level_->lightMaterials().push_back({sector, index, options_.sectorLight});
+        return index;
     }
 
     // A sky ceiling: a portal onto the sky, which also brings its sector's fill light (outdoors,
@@ -167,10 +186,12 @@ private:
         scene_.background = skyPortalRadiance(scene_.environment, scene_.background);
     }
 
-    // Meshes are grouped by (sector, part, material) so each keeps its sector's light level.
-    Mesh& mesh(int sector, const char* part, std::uint32_t mat) {
-        auto key = std::make_tuple(sector, std::string(part), mat);
-        auto [it, inserted] = meshes_.try_emplace(key, scene_.meshes.size());
+    // Meshes are grouped by (sector, part, material) so each keeps its sector's light level;
+    // proto >= 0: in that prototype (a moving plane's), else in the world.
+    Mesh& mesh(int sector, const char* part, std::uint32_t mat, int proto = -1) {
+        std::vector<Mesh>& list = proto < 0 ? scene_.meshes : scene_.prototypes[std::size_t(proto)].meshes;
+        auto key = std::make_tuple(sector, std::string(part), mat, proto);
+        auto [it, inserted] = meshes_.try_emplace(key, list.size());
         if (inserted) {
             Mesh m;
             m.name = map_.name + " sector " + std::to_string(sector) + " " + part + " " +
@@ -178,10 +199,37 @@ private:
             m.material = mat;
             int level = std::clamp<int>(map_.sectors[std::size_t(sector)].lightLevel, 0, 255);
             m.lightLevel = float(level) / 255.0f;
-            scene_.meshes.push_back(std::move(m));
+            list.push_back(std::move(m));
         }
-        return scene_.meshes[it->second];
+        return list[it->second];
     }
+
+    // The prototype of a sector's moving floor or ceiling: what moves with it.
+    int movingPrototype(int sector, doom::Plane plane) {
+        auto [it, inserted] = prototypes_.try_emplace({sector, plane}, int(scene_.prototypes.size()));
+        if (inserted) {
+            Prototype p;
+            p.name = map_.name + " sector " + std::to_string(sector) +
+                     (plane == doom::Plane::Floor ? " floor" : " ceiling");
+            scene_.prototypes.push_back(std::move(p));
+        }
+        return it->second;
+    }
+
+    // One instance per moving plane, placed where the map has it (the identity), and the level
+    // told which instance carries which plane at which height.
+    void placeMovingPlanes() {
+        for (const auto& [key, proto] : prototypes_) {
+            if (scene_.prototypes[std::size_t(proto)].meshes.empty()) continue;
+            const auto [sector, plane] = key;
+            const std::uint32_t instance = std::uint32_t(scene_.instances.size());
+            scene_.instances.push_back({std::uint32_t(proto), Affine{}});
+            const Sector& sec = map_.sectors[std::size_t(sector)];
+            const double base = plane == doom::Plane::Floor ? sec.floorHeight : sec.ceilingHeight;
+            level_->planeInstances().push_back({sector, plane, instance, base});
+        }
+    }
+    bool moves(int sector, doom::Plane plane) const { return level_->range(sector, plane).moves; }
 
     // A convex polygon (3 or 4 corners), wound so that its front faces `facing`.
     static void addPolygon(Mesh& m, const Vec3* p, const Vec2* uv, int n, Vec3 facing) {
@@ -202,12 +250,14 @@ private:
 
     // One wall piece from z0 to z1 (Doom units) along a -> b, facing right of a -> b.
     // textureTop: the height of the texture's top row (offsets included).
+    // proto >= 0: the quad moves with that prototype's plane.
     void wallQuad(int sector, const Vertex& a, const Vertex& b, double z0, double z1,
-                  const std::string& texName, double textureTop, double uOffset, bool masked) {
+                  const std::string& texName, double textureTop, double uOffset, bool masked, int proto = -1) {
         if (!(z1 > z0)) return;
         int tex = textures_.wallTexture(texName);
         double tw = textures_.width(tex), th = textures_.height(tex);
-        std::uint32_t mat = material((masked ? "masked " : "wall ") + texName, texName, false, tex, masked);
+        std::uint32_t mat =
+            material((masked ? "masked " : "wall ") + texName, texName, false, tex, masked, proto >= 0);
         double dx = double(b.x) - a.x, dy = double(b.y) - a.y;
         double len = std::sqrt(dx * dx + dy * dy);
         Vec3 facing = normalize(Vec3(float(dy), 0.0f, float(dx)));  // Doom right (dy, -dx)
@@ -216,7 +266,7 @@ private:
         float u0 = float(uOffset / tw), u1 = float((uOffset + len) / tw);
         float vBottom = float((textureTop - z0) / th), vTop = float((textureTop - z1) / th);
         Vec2 uv[4] = {{u0, vBottom}, {u1, vBottom}, {u1, vTop}, {u0, vTop}};
-        addPolygon(mesh(sector, "walls", mat), p, uv, 4, facing);
+        addPolygon(mesh(sector, "walls", mat, proto), p, uv, 4, facing);
     }
 
     void buildWalls() {
@@ -230,8 +280,13 @@ private:
         }
     }
 
+    // A side's walls. Where a plane of either sector can move, the walls span every height it
+    // can take: a wall whose edge is the other sector's moving plane moves with that plane (its
+    // extra height goes behind this sector's own floor or ceiling), and a wall whose edge is this
+    // sector's moving plane stays, reaching as far as the plane goes (the plane covers the rest).
     void wallSide(const Linedef& line, const Sidedef& side, std::uint16_t otherSide,
                   const Vertex& a, const Vertex& b) {
+        using doom::Plane;
         const int fs = side.sector;
         const Sector& f = map_.sectors[std::size_t(fs)];
         const double u = side.xOffset, dyOff = side.yOffset;
@@ -240,21 +295,38 @@ private:
         auto texHeight = [&](const std::string& name) {
             return double(textures_.height(textures_.wallTexture(name)));
         };
+        // This sector's lowest floor and highest ceiling.
+        const double fFloorLow = moves(fs, Plane::Floor) ? level_->range(fs, Plane::Floor).low : f.floorHeight;
+        const double fCeilHigh = moves(fs, Plane::Ceiling) ? level_->range(fs, Plane::Ceiling).high : f.ceilingHeight;
         if (otherSide == kNoSide) {
             if (!hasTexture(side.middle)) return;
             double top = lowerUnpegged ? f.floorHeight + texHeight(side.middle) : f.ceilingHeight;
-            wallQuad(fs, a, b, f.floorHeight, f.ceilingHeight, side.middle, top + dyOff, u, false);
+            wallQuad(fs, a, b, fFloorLow, fCeilHigh, side.middle, top + dyOff, u, false);
             return;
         }
-        const Sector& k = map_.sectors[map_.sidedefs[otherSide].sector];
-        if (k.ceilingHeight < f.ceilingHeight && hasTexture(side.upper) &&
-            !(isSky(f.ceilingFlat) && isSky(k.ceilingFlat))) {
-            double top = upperUnpegged ? f.ceilingHeight : k.ceilingHeight + texHeight(side.upper);
-            wallQuad(fs, a, b, k.ceilingHeight, f.ceilingHeight, side.upper, top + dyOff, u, false);
+        const int ks = map_.sidedefs[otherSide].sector;
+        const Sector& k = map_.sectors[std::size_t(ks)];
+        if (hasTexture(side.upper) && !(isSky(f.ceilingFlat) && isSky(k.ceilingFlat))) {
+            const double top = upperUnpegged ? f.ceilingHeight : k.ceilingHeight + texHeight(side.upper);
+            if (moves(ks, Plane::Ceiling)) {
+                const double reach = fCeilHigh - level_->range(ks, Plane::Ceiling).low;
+                if (reach > 0)
+                    wallQuad(fs, a, b, k.ceilingHeight, k.ceilingHeight + reach, side.upper, top + dyOff, u, false,
+                             movingPrototype(ks, Plane::Ceiling));
+            } else if (k.ceilingHeight < fCeilHigh) {
+                wallQuad(fs, a, b, k.ceilingHeight, fCeilHigh, side.upper, top + dyOff, u, false);
+            }
         }
-        if (k.floorHeight > f.floorHeight && hasTexture(side.lower)) {
-            double top = lowerUnpegged ? f.ceilingHeight : k.floorHeight;
-            wallQuad(fs, a, b, f.floorHeight, k.floorHeight, side.lower, top + dyOff, u, false);
+        if (hasTexture(side.lower)) {
+            const double top = lowerUnpegged ? f.ceilingHeight : k.floorHeight;
+            if (moves(ks, Plane::Floor)) {
+                const double reach = level_->range(ks, Plane::Floor).high - fFloorLow;
+                if (reach > 0)
+                    wallQuad(fs, a, b, k.floorHeight - reach, k.floorHeight, side.lower, top + dyOff, u, false,
+                             movingPrototype(ks, Plane::Floor));
+            } else if (k.floorHeight > fFloorLow) {
+                wallQuad(fs, a, b, fFloorLow, k.floorHeight, side.lower, top + dyOff, u, false);
+            }
         }
         if (hasTexture(side.middle)) {
             // Masked middle textures are drawn once, not tiled vertically, between the
@@ -281,11 +353,16 @@ private:
             }
             if (tris.empty()) continue;
             const Sector& sec = map_.sectors[s];
-            std::uint32_t floorMat = flatMaterial(sec, sec.floorFlat);
-            std::uint32_t ceilMat = isSky(sec.ceilingFlat) ? skyMaterial(sec) : flatMaterial(sec, sec.ceilingFlat);
-            Mesh& floor = mesh(int(s), "floor", floorMat);
+            const bool floorMoves = moves(int(s), doom::Plane::Floor);
+            const bool ceilingMoves = moves(int(s), doom::Plane::Ceiling);
+            std::uint32_t floorMat = flatMaterial(int(s), sec.floorFlat, floorMoves);
+            std::uint32_t ceilMat =
+                isSky(sec.ceilingFlat) ? skyMaterial(sec) : flatMaterial(int(s), sec.ceilingFlat, ceilingMoves);
+            const int floorProto = floorMoves ? movingPrototype(int(s), doom::Plane::Floor) : -1;
+            const int ceilingProto = ceilingMoves ? movingPrototype(int(s), doom::Plane::Ceiling) : -1;
+            Mesh& floor = mesh(int(s), "floor", floorMat, floorProto);
             for (const Triangle2& t : tris) flatTriangle(floor, t, sec.floorHeight, Vec3(0, 1, 0));
-            Mesh& ceiling = mesh(int(s), "ceiling", ceilMat);
+            Mesh& ceiling = mesh(int(s), "ceiling", ceilMat, ceilingProto);
             for (const Triangle2& t : tris)
                 flatTriangle(ceiling, t, sec.ceilingHeight, Vec3(0, -1, 0));
         }
@@ -350,7 +427,9 @@ private:
     std::map<std::string, std::uint32_t> materials_;
     std::map<int, int> glowTextures_;  // albedo texture -> its emission texture
     bool hasSky_ = false;
-    std::map<std::tuple<int, std::string, std::uint32_t>, std::size_t> meshes_;
+    std::map<std::tuple<int, std::string, std::uint32_t, int>, std::size_t> meshes_;
+    std::shared_ptr<doom::Level> level_;
+    std::map<std::pair<int, doom::Plane>, int> prototypes_;  // moving planes' prototypes
 };
 
 std::string upper(std::string s) {
