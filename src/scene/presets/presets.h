@@ -35,6 +35,12 @@ Scene makeBvhLesson();
 // corridor (an instance with a scene motion) and a tile grid for the viewer's grid movement.
 Scene makeDungeon();
 
+// Suzanne (Debian assimp-testmodels, read at run time) in the Cornell room without its blocks, as
+// "Casually Pathtracing with WebGPU" renders it. Throws Error naming the package when the model
+// is not installed.
+Scene makeSuzanne();
+const char* suzanneModelPath();
+
 std::vector<std::string> presetNames();
 // The names, comma-separated, for messages and help.
 std::string presetList();
