@@ -6,6 +6,8 @@
 #include <array>
 #include <cstring>
 
+#include "scene/sphere_groups.h"
+
 namespace penumbra::viewer {
 namespace {
 
@@ -40,8 +42,13 @@ void selection(EditState& state, EditRequests& requests) {
     m.emission = Vec3{std::max(m.emission.x, 0.0f), std::max(m.emission.y, 0.0f), std::max(m.emission.z, 0.0f)};
     requests.materialChanged = changed;
     // Moving rebuilds the whole BVH, so it happens when the drag ends, not on every step.
-    ImGui::DragFloat3("position", &state.position.x, 0.01f);
+    ImGui::DragFloat3(state.group == kNoObject ? "position" : "position (pivot)", &state.position.x, 0.01f);
     if (ImGui::IsItemDeactivatedAfterEdit()) requests.moveObject = true;
+    if (state.group != kNoObject) {
+        ImGui::DragFloat3("turn by (deg, x y z)", &state.turnDegrees.x, 0.5f, -180.0f, 180.0f, "%.1f");
+        if (ImGui::IsItemDeactivatedAfterEdit()) requests.turnGroup = true;
+        ImGui::TextDisabled("drag an atom to move the group; Shift+drag turns it");
+    }
 }
 
 void openScene(EditState& state, EditRequests& requests) {
@@ -65,6 +72,11 @@ void drawEditSections(ViewSettings& settings, EditState& state, EditRequests& re
     depthOfField(settings, state);
     selection(state, requests);
     openScene(state, requests);
+}
+
+Vec3 selectionCentre(const Scene& scene, const EditState& state) {
+    if (state.group < scene.sphereGroups.size()) return sphereGroupPivot(scene, state.group);
+    return objectCentre(scene, state.object);
 }
 
 Vec3 objectCentre(const Scene& scene, std::uint32_t object) {

@@ -17,7 +17,10 @@ struct EditState {
     std::string objectName;
     std::uint32_t materialIndex = 0;
     Material material;                   // the selection's material as edited
-    Vec3 position{0};                    // the selection's centre as edited
+    Vec3 position{0};                    // the selection's centre as edited (a group's pivot)
+    // A sphere of a group (scene/sphere_groups.h) selects the whole group: it moves and turns.
+    std::uint32_t group = kNoObject;
+    Vec3 turnDegrees{0};                 // the turn being dialled in (about x, y, z through the pivot)
     std::string openPath;                // the Open field
     std::string openMessage;             // the last Open error (one line)
 };
@@ -26,6 +29,7 @@ struct EditState {
 struct EditRequests {
     bool materialChanged = false;  // write state.material to scene.materials[state.materialIndex]
     bool moveObject = false;       // translate the selection to state.position
+    bool turnGroup = false;        // turn the selected group by state.turnDegrees (then zero them)
     bool openScene = false;        // open state.openPath
     bool clearSelection = false;
 };
@@ -35,5 +39,7 @@ void drawEditSections(ViewSettings& settings, EditState& state, EditRequests& re
 
 // The centre of an object (a sphere's centre, a mesh's bounding-box centre).
 Vec3 objectCentre(const Scene& scene, std::uint32_t object);
+// The selection's centre: its group's pivot when it has one, else objectCentre.
+Vec3 selectionCentre(const Scene& scene, const EditState& state);
 
 }  // namespace penumbra::viewer

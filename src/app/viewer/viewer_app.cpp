@@ -15,6 +15,7 @@
 #include "interact/controls.h"
 #include "app/viewer/edit_panel.h"
 #include "interact/navigation.h"
+#include "interact/group_drag.h"
 #include "interact/object_drag.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/screenshot.h"
@@ -25,6 +26,7 @@
 #include "render/interactive_renderer.h"
 #include "render/scene_objects.h"
 #include "scene/animation.h"
+#include "scene/sphere_groups.h"
 
 namespace penumbra::viewer {
 namespace {
@@ -39,6 +41,7 @@ struct PointerState {
     double leftDownX = 0, leftDownY = 0;
     // A left press on the selected instance grabs it: it follows the cursor until the release.
     std::optional<ObjectDrag> drag;
+    std::optional<GroupDrag> groupDrag;  // the same for a selected sphere group
 };
 
 struct Click {
@@ -52,11 +55,17 @@ struct LeftButton {
 
 void select(const Scene& scene, std::uint32_t object, EditState& edit) {
     edit.object = object;
+    edit.group = kNoObject;
     if (object == kNoObject) return;
     edit.objectName = objectName(scene, object);
     edit.materialIndex = objectMaterial(scene, object);
     edit.material = scene.materials[edit.materialIndex];
-    edit.position = objectCentre(scene, object);
+    const bool sphere = object >= scene.meshes.size();
+    const std::optional<std::uint32_t> group = sphere ? sphereGroupOf(scene, object - scene.meshes.size()) : std::nullopt;
+    edit.group = group ? *group : kNoObject;
+    if (group) edit.objectName = sphereGroupName(scene, *group) + ", " + edit.objectName;
+    edit.turnDegrees = Vec3{0};
+    edit.position = selectionCentre(scene, edit);
 }
 
 // Applies the panel's edits to the scene and the renderer. Failures go to the panel as one line.
@@ -105,6 +114,7 @@ void setCaptured(GLFWwindow* w, PointerState& pointer, bool on) {
     glfwGetCursorPos(w, &pointer.lastX, &pointer.lastY);  // no jump on the next frame
     pointer.dragging = pointer.leftDown = false;
     pointer.drag.reset();
+    pointer.groupDrag.reset();
 }
 
 // Pointer motion that looks (captured, or dragging with the right button), left presses and clicks.
@@ -127,8 +137,9 @@ LeftButton trackPointer(GLFWwindow* w, PointerState& p, InputState& input, bool 
             left.press = Click{mx, my};
         } else if (!leftHeld && p.leftDown) {
             p.leftDown = false;
-            const bool dragged = p.drag.has_value();
+            const bool dragged = p.drag.has_value() || p.groupDrag.has_value();
             p.drag.reset();
+            p.groupDrag.reset();
             // A press and release in place is a click, unless it grabbed the selection (walking,
             // a click captures the mouse, which would end the user's handling of the object).
             if (std::abs(mx - p.leftDownX) + std::abs(my - p.leftDownY) < 4.0 && !dragged) left.click = Click{mx, my};
@@ -142,7 +153,8 @@ LeftButton trackPointer(GLFWwindow* w, PointerState& p, InputState& input, bool 
 // A left press on the selected instance grabs it (the CPU pick under the cursor, as a click's):
 // to move it, or with Shift held to turn it.
 void grabSelection(GLFWwindow* w, const Click& press, PointerState& pointer, const Scene& scene,
-                   const InteractiveRenderer& renderer, const Camera& camera, std::uint32_t selectedInstance) {
+                   const InteractiveRenderer& renderer, const Camera& camera, std::uint32_t selectedInstance,
+                   std::uint32_t selectedGroup) {
     int ww = 0, wh = 0;
     glfwGetWindowSize(w, &ww, &wh);
     if (ww <= 0 || wh <= 0) return;
@@ -150,6 +162,20 @@ void grabSelection(GLFWwindow* w, const Click& press, PointerState& pointer, con
         glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
     pointer.drag = grabInstance(scene, renderer.sceneArrays(), camera, std::uint32_t(ww), std::uint32_t(wh),
                                 float(press.x), float(press.y), selectedInstance, shift);
+    if (!pointer.drag && selectedGroup != kNoObject)
+        pointer.groupDrag = grabSphereGroup(scene, renderer.sceneArrays(), camera, std::uint32_t(ww), std::uint32_t(wh),
+                                            float(press.x), float(press.y), selectedGroup, shift);
+}
+
+// Moves (or turns) a grabbed sphere group as the cursor moved; true when it moved. Its spheres are
+// world data: the caller rebuilds the scene.
+bool dragGroup(GLFWwindow* w, PointerState& pointer, Scene& scene, const Camera& camera) {
+    if (!pointer.groupDrag) return false;
+    int ww = 0, wh = 0;
+    glfwGetWindowSize(w, &ww, &wh);
+    if (ww <= 0 || wh <= 0) return false;
+    return followCursor(*pointer.groupDrag, scene, camera, std::uint32_t(ww), std::uint32_t(wh), float(pointer.lastX),
+                        float(pointer.lastY));
 }
 
 // Moves (or turns) a grabbed instance as the cursor moved; true when it moved.
@@ -260,7 +286,9 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
         loop.panel.message = instanceName(scene, loop.selectedInstance) + kInstanceControls;
     }
     const LeftButton left = trackPointer(w, loop.pointer, loop.input, ui.wantsMouse());
-    if (left.press) grabSelection(w, *left.press, loop.pointer, scene, renderer, loop.camera(), loop.selectedInstance);
+    if (left.press)
+        grabSelection(w, *left.press, loop.pointer, scene, renderer, loop.camera(), loop.selectedInstance,
+                      loop.edit.group);
     if (left.click)
         handleClick(w, *left.click, loop.pointer, scene, renderer, loop.nav, loop.camera(), settings, loop.edit,
                     loop.selectedInstance, loop.panel);
@@ -282,6 +310,11 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     }
     // A grabbed instance follows the cursor, after the camera and the animations have moved.
     if (!automationDone && dragSelection(w, loop.pointer, scene, loop.camera())) instancesMoved = true;
+    if (!automationDone && dragGroup(w, loop.pointer, scene, loop.camera())) {
+        renderer.rebuildScene(scene, true);
+        loop.edit.position = selectionCentre(scene, loop.edit);
+        loop.shown.valid = false;
+    }
     if (instancesMoved) {
         renderer.setInstanceTransforms(scene);
         loop.shown.valid = false;
@@ -306,8 +339,10 @@ void drawUi(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, UiLaye
     if (requests.openScene) {  // nothing selected in the new scene
         loop.selectedInstance = kNoObject;
         loop.pointer.drag.reset();
+        loop.pointer.groupDrag.reset();
     }
-    if (requests.materialChanged || requests.moveObject || requests.openScene) loop.shown.valid = false;
+    if (requests.materialChanged || requests.moveObject || requests.turnGroup || requests.openScene)
+        loop.shown.valid = false;
 }
 
 // Once the previous frame has finished, its timings and its display buffer are readable: a
@@ -436,7 +471,7 @@ namespace {
 
 void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& settings, EditState& edit,
                 const EditRequests& requests, Navigation& nav, PanelState& panel) {
-    if (requests.clearSelection) edit.object = kNoObject;
+    if (requests.clearSelection) edit.object = edit.group = kNoObject;
     try {
         if (requests.materialChanged && edit.materialIndex < scene.materials.size()) {
             Material& target = scene.materials[edit.materialIndex];
@@ -448,7 +483,15 @@ void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& setti
             if (emissionChanged) renderer.rebuildScene(scene, true);
             else renderer.setMaterial(edit.materialIndex, target);
         }
-        if (requests.moveObject && isObject(scene, edit.object)) {
+        if (requests.turnGroup && edit.group < scene.sphereGroups.size()) {
+            turnSphereGroup(scene, edit.group, Affine::eulerDegrees(edit.turnDegrees));
+            edit.turnDegrees = Vec3{0};
+            renderer.rebuildScene(scene, true);
+        }
+        if (requests.moveObject && edit.group < scene.sphereGroups.size()) {
+            moveSphereGroup(scene, edit.group, edit.position - sphereGroupPivot(scene, edit.group));
+            renderer.rebuildScene(scene, true);
+        } else if (requests.moveObject && isObject(scene, edit.object)) {
             translateObject(scene, edit.object, edit.position - objectCentre(scene, edit.object));
             renderer.rebuildScene(scene, true);
             panel.bvhNodes = renderer.sceneArrays().nodes.size();
@@ -470,7 +513,7 @@ void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& setti
             settings.apertureRadius = scene.camera.apertureRadius;
             settings.focusDistance = scene.camera.focusDistance;
             nav = Navigation(scene, false);  // the new scene's own movement mode
-            edit.object = kNoObject;
+            edit.object = edit.group = kNoObject;
             edit.openMessage.clear();
             panel.sceneName = scene.name;
             panel.triangles = scene.triangleCount();

@@ -17,7 +17,8 @@ Scene makeCornellBox();
 Scene makeFurnace(float albedo, Vec3 emission);
 
 // The caffeine molecule's 24 atoms as CPK-coloured spheres over a coffee-brown plane, one sphere
-// light, and a thin-lens camera focused on the molecule.
+// light, and a thin-lens camera focused on the molecule. The atoms form one sphere group, which
+// the viewer moves and turns as one object.
 Scene makeCaffeine();
 
 // A room with mirror walls, a glass sphere, a semi-specular floor, a ceiling light and two soft
