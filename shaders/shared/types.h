@@ -487,8 +487,11 @@ PN_STRUCT(FrameUniforms) {
     uint topRoot;          // with instanceCount > 0: the top-level BVH's root node
     uint lightGridOffset;  // word of the light grid in the light tree's buffer (0: none, walk the tree)
     float shadowRouletteShare;  // shadow-ray roulette below this share of the pixel's estimate (lib/path.glsl); 0: off
-    uint pad3;
+    uint flags;            // PN_FRAME_*
 };
+// FrameUniforms.flags. NO_JITTER: camera rays go through pixel centres (no anti-aliasing; the
+// random draws are made all the same, so the rest of each path's numbers do not change).
+#define PN_FRAME_NO_JITTER 1u
 
 // ---- viewer passes (temporal.comp, atrous.comp, tonemap.comp, gbuffer.comp, heatmap.comp) ----
 #define PN_TONEMAP_REINHARD 0u

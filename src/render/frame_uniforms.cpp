@@ -25,6 +25,7 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.maxBounces = settings.maxBounces;
     f.rouletteStart = settings.rouletteStart;
     f.shadowRouletteShare = settings.shadowRouletteShare;
+    f.flags = settings.pixelJitter ? 0u : PN_FRAME_NO_JITTER;
     f.lightNodeCount = lightNodeCount;
     f.triCount = triCount;
     f.nodeCount = nodeCount;

@@ -60,7 +60,8 @@ bool changesTheImage(const ViewSettings& a, const ViewSettings& b) {
     auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
     return a.apertureRadius != b.apertureRadius || a.focusDistance != b.focusDistance ||
            a.samplesPerFrame != b.samplesPerFrame || a.maxBounces != b.maxBounces ||
-           a.rouletteStart != b.rouletteStart || a.shareCameraRays != b.shareCameraRays || a.torch != b.torch ||
+           a.rouletteStart != b.rouletteStart || a.shareCameraRays != b.shareCameraRays ||
+           a.antiAliasing != b.antiAliasing || a.torch != b.torch ||
            !same(a.torchColor, b.torchColor) || a.torchIntensity != b.torchIntensity || a.torchRange != b.torchRange;
 }
 
@@ -324,6 +325,7 @@ shader::FrameUniforms InteractiveRenderer::frameUniforms(const Camera& camera, c
     rs.maxBounces = s.maxBounces;
     rs.rouletteStart = s.rouletteStart;
     rs.shadowRouletteShare = s.shadowRouletteShare;
+    rs.pixelJitter = s.antiAliasing;
     rs.seed = seed_;
     rs.time = s.time;
     Camera lens = camera;

@@ -40,6 +40,9 @@ struct RenderSettings {
     // A pixel's samples in one pass share their camera ray (TracePass::setSharesCameraRays): the
     // viewer's setting, here so that tests can render with it.
     bool shareCameraRays = false;
+    // Camera rays jittered over their pixel (anti-aliasing); false: through its centre (render
+    // --no-jitter, the viewer's toggle), which shows aliased edges as the seed ray tracers do.
+    bool pixelJitter = true;
     // Paths per trace dispatch (render/passes/trace_tiles.h); 0: the device's default.
     std::uint64_t pathsPerDispatch = 0;
 };

@@ -47,6 +47,7 @@ struct ViewSettings {
     // good or better at equal time, but the raw mean can be noisier where textures have detail
     // below a pixel (Freedoom E1M1: +6%), so it is off unless asked for.
     bool shareCameraRays = false;
+    bool antiAliasing = true;  // RenderSettings::pixelJitter
     // RenderSettings::shadowRouletteShare: scaled by the history's mean, so it acts once a pixel's
     // history holds PN_PIXEL_ESTIMATE_MIN_SAMPLES samples.
     float shadowRouletteShare = kDefaultShadowRouletteShare;

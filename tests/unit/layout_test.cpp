@@ -111,7 +111,7 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, topLightCount), offsetof(FrameUniforms, envLuminance),
                        offsetof(FrameUniforms, lightRefCount), offsetof(FrameUniforms, lightPickUniform),
                        offsetof(FrameUniforms, topRoot), offsetof(FrameUniforms, lightGridOffset), offsetof(FrameUniforms, shadowRouletteShare),
-                       offsetof(FrameUniforms, pad3)});
+                       offsetof(FrameUniforms, flags)});
         expectMembers(spv, "Instance", {0, offsetof(Instance, worldToObject), offsetof(Instance, rootNode),
                                         offsetof(Instance, firstPrimitive), offsetof(Instance, primitiveCount),
                                         offsetof(Instance, id)});

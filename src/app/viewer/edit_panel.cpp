@@ -51,6 +51,34 @@ void selection(EditState& state, EditRequests& requests) {
     }
 }
 
+// Sliders for one light at a time. Intensity and colour change the light tables (lights are
+// weighed by power) and position and radius the BVH, so an edit applies when the slider is let go.
+void lights(EditState& state, EditRequests& requests) {
+    if (state.lights.empty() || !ImGui::CollapsingHeader("Lights")) return;
+    std::vector<const char*> names;
+    for (const std::string& n : state.lightNames) names.push_back(n.c_str());
+    if (ImGui::Combo("light", &state.lightChoice, names.data(), int(names.size()))) requests.lightChosen = true;
+    LightParams& p = state.light;
+    bool edited = false;
+    auto released = [&] { edited |= ImGui::IsItemDeactivatedAfterEdit(); };
+    if (p.hasPosition) {
+        ImGui::DragFloat3("position (m)", &p.position.x, 0.01f);
+        released();
+    }
+    ImGui::ColorEdit3("light colour", &p.color.x);
+    released();
+    ImGui::SliderFloat("intensity", &p.intensity, 0.0f, 1000.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    released();
+    ImGui::SliderFloat(p.hasPosition ? "radius (m, 0: a point)" : "angular radius (rad)", &p.radius, 0.0f,
+                       p.hasPosition ? 2.0f : 0.785f, "%.4f", ImGuiSliderFlags_Logarithmic);
+    released();
+    if (p.isSpot) {
+        ImGui::SliderFloat("spot angle (deg)", &p.spotDegrees, 0.1f, 90.0f, "%.1f");
+        released();
+    }
+    requests.lightChanged = edited;
+}
+
 void openScene(EditState& state, EditRequests& requests) {
     if (!ImGui::CollapsingHeader("Scene file")) return;
     std::array<char, 1024> buffer{};
@@ -71,7 +99,16 @@ void openScene(EditState& state, EditRequests& requests) {
 void drawEditSections(ViewSettings& settings, EditState& state, EditRequests& requests) {
     depthOfField(settings, state);
     selection(state, requests);
+    lights(state, requests);
     openScene(state, requests);
+}
+
+void loadLights(const Scene& scene, EditState& state) {
+    state.lights = editableLights(scene);
+    state.lightNames.clear();
+    for (const EditableLight& l : state.lights) state.lightNames.push_back(lightName(scene, l));
+    state.lightChoice = 0;
+    if (!state.lights.empty()) state.light = lightParams(scene, state.lights[0]);
 }
 
 Vec3 selectionCentre(const Scene& scene, const EditState& state) {

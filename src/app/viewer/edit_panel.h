@@ -7,6 +7,7 @@
 
 #include "render/scene_objects.h"
 #include "render/view_settings.h"
+#include "scene/light_edit.h"
 #include "scene/scene.h"
 
 namespace penumbra::viewer {
@@ -21,6 +22,11 @@ struct EditState {
     // A sphere of a group (scene/sphere_groups.h) selects the whole group: it moves and turns.
     std::uint32_t group = kNoObject;
     Vec3 turnDegrees{0};                 // the turn being dialled in (about x, y, z through the pivot)
+    // The Lights section: the scene's editable lights, the one shown and its values as edited.
+    std::vector<EditableLight> lights;
+    std::vector<std::string> lightNames;
+    int lightChoice = 0;
+    LightParams light;
     std::string openPath;                // the Open field
     std::string openMessage;             // the last Open error (one line)
 };
@@ -32,10 +38,15 @@ struct EditRequests {
     bool turnGroup = false;        // turn the selected group by state.turnDegrees (then zero them)
     bool openScene = false;        // open state.openPath
     bool clearSelection = false;
+    bool lightChosen = false;      // load state.light from the light state.lightChoice names
+    bool lightChanged = false;     // write state.light to that light
 };
 
 // Draws the sections into the current ImGui window.
 void drawEditSections(ViewSettings& settings, EditState& state, EditRequests& requests);
+
+// Fills the Lights section's list from the scene and loads the first light's values.
+void loadLights(const Scene& scene, EditState& state);
 
 // The centre of an object (a sphere's centre, a mesh's bounding-box centre).
 Vec3 objectCentre(const Scene& scene, std::uint32_t object);

@@ -270,6 +270,7 @@ struct LoopState {
         panel.bvhNodes = renderer.sceneArrays().nodes.size();
         panel.bvhDepth = bvh::treeDepth(renderer.sceneArrays().nodes);
         panel.hasTorch = renderer.hasTorch();
+        loadLights(scene, edit);
     }
     Camera camera() const { return nav.camera(); }
 };
@@ -341,7 +342,8 @@ void drawUi(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, UiLaye
         loop.pointer.drag.reset();
         loop.pointer.groupDrag.reset();
     }
-    if (requests.materialChanged || requests.moveObject || requests.turnGroup || requests.openScene)
+    if (requests.materialChanged || requests.moveObject || requests.turnGroup || requests.lightChanged ||
+        requests.openScene)
         loop.shown.valid = false;
 }
 
@@ -412,6 +414,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     settings.focusDistance = scene.camera.focusDistance;
     settings.samplesPerFrame = options.samplesPerFrame;
     settings.denoise = options.denoise;
+    settings.antiAliasing = options.antiAliasing;
     settings.debug = options.debug;
     prepareSceneSettings(scene, settings);
 
@@ -483,6 +486,13 @@ void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& setti
             if (emissionChanged) renderer.rebuildScene(scene, true);
             else renderer.setMaterial(edit.materialIndex, target);
         }
+        const bool lightValid = edit.lightChoice >= 0 && std::size_t(edit.lightChoice) < edit.lights.size();
+        if (requests.lightChosen && lightValid) edit.light = lightParams(scene, edit.lights[edit.lightChoice]);
+        if (requests.lightChanged && lightValid) {
+            setLightParams(scene, edit.lights[edit.lightChoice], edit.light);
+            edit.light = lightParams(scene, edit.lights[edit.lightChoice]);  // as clamped
+            renderer.rebuildScene(scene, true);
+        }
         if (requests.turnGroup && edit.group < scene.sphereGroups.size()) {
             turnSphereGroup(scene, edit.group, Affine::eulerDegrees(edit.turnDegrees));
             edit.turnDegrees = Vec3{0};
@@ -514,6 +524,7 @@ void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& setti
             settings.focusDistance = scene.camera.focusDistance;
             nav = Navigation(scene, false);  // the new scene's own movement mode
             edit.object = edit.group = kNoObject;
+            loadLights(scene, edit);
             edit.openMessage.clear();
             panel.sceneName = scene.name;
             panel.triangles = scene.triangleCount();

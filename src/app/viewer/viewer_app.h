@@ -21,6 +21,7 @@ struct ViewerOptions {
     std::string screenshot;
     std::uint32_t samplesPerFrame = 1;
     bool denoise = false;
+    bool antiAliasing = true;  // view --no-jitter turns it off
     DebugView debug = DebugView::None;
     // Scripted input (--script): played from the first frame, which then starts playing.
     std::optional<std::vector<ScriptEvent>> script;
