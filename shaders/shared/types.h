@@ -110,6 +110,11 @@ using namespace penumbra::gpu_types;
 // their camera paths in place (PN_WAVE_CAMERA_IN_PLACE); the later rounds' kernels carry none of
 // that code (measured: DOOM1's shading 1-2% faster; the driver kept the registers, docs/PERFORMANCE.md).
 #define PN_FEATURE_CAMERA_IN_PLACE 16384u
+// Not a scene's feature but a traversal option (--cull-backfaces), so not in PN_FEATURE_ALL: the
+// closest-hit walks skip triangles whose geometric normal (e1 x e2, counter-clockwise front) faces
+// away from the ray, except those flagged PN_TRI_KEEP_BACK; any-hit (shadow) rays cull nothing,
+// so light never leaks through a wall seen from behind. lib/bvh.glsl hitPrimitive.
+#define PN_FEATURE_CULL_BACKFACES 131072u
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic
@@ -156,6 +161,9 @@ using namespace penumbra::gpu_types;
 // in metres (x along the card, to the viewer's right); e2.y = the direction the thing faces, in
 // radians counter-clockwise (seen from above) from +x toward -z; e2.z = its views (1 or 8).
 #define PN_TRI_SPRITE 4u
+// Never culled by PN_FEATURE_CULL_BACKFACES: its material transmits (a path inside glass must
+// find the back faces to leave it).
+#define PN_TRI_KEEP_BACK 8u
 
 // ---- texture flags and sampler words (a material's *Wrap fields: PN_WRAP_* for u,
 // | PN_WRAP_* for v << 8, | PN_SAMPLER_NEAREST) ----

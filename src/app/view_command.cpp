@@ -67,6 +67,8 @@ void registerView(CLI::App& app, Action& action) {
                   "on exit, print 'camera X,Y,Z direction DX,DY,DZ' (scene units)");
     cmd->add_flag("--fly", args->options.fly, "start in free flight on Doom levels (F toggles walking)");
     cmd->add_flag("--denoise", args->options.denoise, "start with the a-trous denoiser on");
+    cmd->add_flag("--cull-backfaces", args->options.cullBackfaces,
+                  "camera and bounce rays skip triangles seen from behind (not shadow rays, not glass)");
     cmd->add_flag_callback("--no-jitter", [args] { args->options.antiAliasing = false; },
                   "start with anti-aliasing off: camera rays through pixel centres (the panel toggles it)");
     cmd->add_option("--debug", args->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles, boxes, leaf-depth, leaf-triangles");

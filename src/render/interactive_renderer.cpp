@@ -234,7 +234,16 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
     previousFrame_.reset();
 }
 
-std::uint32_t InteractiveRenderer::sceneKernelFeatures() const { return penumbra::kernelFeatures(arrays_, Accel::Bvh); }
+std::uint32_t InteractiveRenderer::sceneKernelFeatures() const {
+    return penumbra::kernelFeatures(arrays_, Accel::Bvh, cullBackfaces_);
+}
+
+void InteractiveRenderer::setCullBackfaces(bool on) {
+    if (on == cullBackfaces_) return;
+    cullBackfaces_ = on;
+    if (trace_) createPasses();
+    historyValid_ = false;
+}
 
 void InteractiveRenderer::createPasses() {
     stillGBuffer_[0] = stillGBuffer_[1] = false;  // new buffers, or a new scene in them

@@ -59,6 +59,9 @@ public:
     // Off: the G-buffer sees every instance as still (no object motion in the motion vectors); the
     // comparison the ghost test makes. On by default.
     void setObjectMotionVectors(bool on) { objectMotionVectors_ = on; }
+    // Closest-hit walks skip back faces (RenderSettings::cullBackfaces); remakes the kernels and
+    // drops history when it changes. Off by default.
+    void setCullBackfaces(bool on);
 
     // Sets the render resolution; a change reallocates the per-pixel buffers and drops history.
     void resize(std::uint32_t width, std::uint32_t height);
@@ -140,6 +143,7 @@ private:
     std::vector<shader::Instance> lastFrameInstances_;  // as the last recorded frame placed them
     bool prevMatchesCurrent_ = true;  // instancesPrev_ holds the current instances
     bool objectMotionVectors_ = true;
+    bool cullBackfaces_ = false;
     gpu::Buffer* historyIn_ = nullptr;  // last frame's history; the two swap every frame
     gpu::Buffer* historyOut_ = nullptr;
     std::unique_ptr<TracePass> trace_;

@@ -57,7 +57,8 @@ RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repe
     gpu::Buffer results(ctx, pixels * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                         gpu::MemoryKind::DeviceLocal);
     // The timed kernel and its counting twin, over the same points and results.
-    const std::uint32_t features = kernelFeatures(renderer.sceneArrays(), renderer.settings().accel);
+    const std::uint32_t features =
+        kernelFeatures(renderer.sceneArrays(), renderer.settings().accel, renderer.settings().cullBackfaces);
     auto makeBench = [&](const char* shader) {
         auto made = makeScenePipeline(ctx, shader, renderer.gpuScene(), renderer.frameUniforms(),
                                       {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2}, features);

@@ -33,7 +33,7 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
     activeMask_ = gpu::Buffer(ctx, pixels * sizeof(std::uint32_t),
                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                               gpu::MemoryKind::DeviceLocal);
-    features_ = penumbra::kernelFeatures(arrays_, settings_.accel);
+    features_ = penumbra::kernelFeatures(arrays_, settings_.accel, settings_.cullBackfaces);
     trace_ = std::make_unique<TracePass>(ctx, *gpuScene_, frameUniforms_, accumulation_, counters_, features_, &activeMask_);
     trace_->setPathBudget(settings_.pathsPerDispatch);
     trace_->setSharesCameraRays(settings_.shareCameraRays);

@@ -428,6 +428,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     gpu::Context& ctx = *result.context;
 
     InteractiveRenderer renderer(ctx, scene, true);
+    renderer.setCullBackfaces(options.cullBackfaces);
     Presenter presenter(ctx, window, options.vsync);
     UiLayer ui(ctx, window.get(), presenter);
     LoopState loop(scene, options, renderer);

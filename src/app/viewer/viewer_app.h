@@ -22,6 +22,7 @@ struct ViewerOptions {
     std::uint32_t samplesPerFrame = 1;
     bool denoise = false;
     bool antiAliasing = true;  // view --no-jitter turns it off
+    bool cullBackfaces = false;  // view --cull-backfaces
     DebugView debug = DebugView::None;
     // Scripted input (--script): played from the first frame, which then starts playing.
     std::optional<std::vector<ScriptEvent>> script;
