@@ -515,6 +515,9 @@ PN_STRUCT(FrameUniforms) {
 #define PN_DEBUG_BVH_BOXES 8u    // the image with the BVH's boxes at one depth outlined (boxes.comp)
 #define PN_DEBUG_LEAF_DEPTH 9u   // depth of the BVH leaf holding the primary ray's hit (root: 0)
 #define PN_DEBUG_LEAF_TRIS 10u   // primitives in the BVH leaf holding the primary ray's hit
+// The fast preview (ViewSettings::preview, shown while the view moves): the primary hit's albedo
+// times the cosine between its normal and the ray, as a raster preview with a headlight draws it.
+#define PN_DEBUG_PREVIEW 11u
 #define PN_MAX_OVERLAY_BOXES 4096u  // boxes the overlay draws at most (each pixel tests every one)
 // The debug view's small window (picture-in-picture): 1/PN_DEBUG_INSET_DIVISOR of the image's
 // width and height, PN_DEBUG_INSET_MARGIN pixels from its bottom right corner, in a one-pixel frame.

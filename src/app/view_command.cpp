@@ -67,6 +67,9 @@ void registerView(CLI::App& app, Action& action) {
                   "on exit, print 'camera X,Y,Z direction DX,DY,DZ' (scene units)");
     cmd->add_flag("--fly", args->options.fly, "start in free flight on Doom levels (F toggles walking)");
     cmd->add_flag("--denoise", args->options.denoise, "start with the a-trous denoiser on");
+    cmd->add_flag("--preview", args->options.preview,
+                  "while the view moves, draw a fast preview (albedo times a cosine at the primary hits); path "
+                  "tracing resumes at rest (V toggles it)");
     cmd->add_flag("--cull-backfaces", args->options.cullBackfaces,
                   "camera and bounce rays skip triangles seen from behind (not shadow rays, not glass)");
     cmd->add_flag_callback("--no-jitter", [args] { args->options.antiAliasing = false; },

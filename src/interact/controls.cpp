@@ -19,6 +19,8 @@ void applyKey(InputState& in, int key, bool pressed) {
         case GLFW_KEY_ESCAPE: in.escape = true; break;
         case GLFW_KEY_N: in.nextInstance = true; break;
         case GLFW_KEY_G: in.gridToggled = true; break;
+        case GLFW_KEY_V: in.previewToggled = true; break;
+        case GLFW_KEY_M: in.addModel = true; break;
         default: break;
     }
 }
@@ -58,6 +60,7 @@ void endInputFrame(InputState& in) {
     in.pauseToggled = in.resetCamera = in.screenshot = false;
     in.walkToggled = in.panelToggled = in.escape = false;
     in.nextInstance = in.gridToggled = false;
+    in.previewToggled = in.addModel = false;
 }
 
 }  // namespace penumbra::viewer

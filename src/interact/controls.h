@@ -17,6 +17,8 @@ struct InputState {
     bool pauseToggled = false, resetCamera = false, screenshot = false;
     bool walkToggled = false, panelToggled = false, escape = false;
     bool nextInstance = false, gridToggled = false;
+    bool previewToggled = false;  // V: the fast preview while moving (ViewSettings::preview)
+    bool addModel = false;        // M: add the model named in the panel's Add model field
 };
 
 // What the held keys ask of the selected instance: I/K forward/back, J/L left/right (along the

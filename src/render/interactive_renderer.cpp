@@ -291,6 +291,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
         !arrays_.instances.empty() && std::memcmp(lastFrameInstances_.data(), arrays_.instances.data(),
                                                   arrays_.instances.size() * sizeof(shader::Instance)) != 0;
     const bool moved = previousFrame_ && (!sameCamera(*previousFrame_, f) || animating || instancesMoved);
+    if (s.preview && moved) return recordPreview(cmd, camera, s, f, instancesMoved);
     // A still view whose G-buffers both hold it reuses them (recordGBuffer): the temporal pass is
     // told, so it neither compares them nor writes the denoiser's guide again.
     if (moved) stillGBuffer_[0] = stillGBuffer_[1] = false;
@@ -316,6 +317,39 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     historyValid_ = true;
     ++frameIndex_;
     stats_.samplesPerPixel = frameIndex_ * s.samplesPerFrame;
+}
+
+void InteractiveRenderer::recordPreview(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& s,
+                                        shader::FrameUniforms f, bool instancesMoved) {
+    shader::ViewerUniforms v = viewerUniforms(s, f, true);
+    v.debugMode = PN_DEBUG_PREVIEW;
+    v.debugOpacity = 1.0f;
+    v.debugInset = 0u;
+    v.denoise = 0u;
+    std::memcpy(frameUniforms_.mapped(), &f, sizeof(f));
+    std::memcpy(viewerUniforms_.mapped(), &v, sizeof(v));
+    clearRayCounters(counters_);
+    heatFrame_ = false;
+    timer_.reset();
+    recorded_ = 0;
+    timer_.begin(cmd, std::uint32_t(ViewerPass::Frame));
+    recordUploads(cmd, camera, s, instancesMoved, false);
+    const bool toB = historyIn_ == &historyA_;
+    recordGBuffer(cmd, toB, true, false);
+    gpu::computeBarrier(cmd);
+    TonemapPass& tonemap = toB ? *tonemapB_ : *tonemapA_;
+    tonemap.setFiltered(filterB_);
+    timed(cmd, ViewerPass::Tonemap, [&] { tonemap.record(cmd, width_, height_); });
+    gpu::computeBarrier(cmd);
+    timer_.end(cmd, std::uint32_t(ViewerPass::Frame));
+    recorded_ |= 1u << std::uint32_t(ViewerPass::Frame);
+    denoised_ = nullptr;
+    stats_.tonemapInDenoiser = false;
+    previousFrame_ = f;
+    // Nothing was traced: the first still frame starts the path-traced mean afresh.
+    historyValid_ = false;
+    frameIndex_ = 0;
+    stats_.samplesPerPixel = 0;
 }
 
 void InteractiveRenderer::startHistory(const ViewSettings& s) {

@@ -115,6 +115,9 @@ private:
     // Records this frame's G-buffer pass unless both letters already hold this still view (reuse).
     void recordGBuffer(VkCommandBuffer cmd, bool toB, bool moved, bool reuse);
     void recordBoxOverlay(VkCommandBuffer cmd, const ViewSettings& s);
+    // A fast-preview frame (ViewSettings::preview while moving): G-buffer, then the display.
+    void recordPreview(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& s, shader::FrameUniforms f,
+                       bool instancesMoved);
     // Records body between the pass's timestamps and notes that the pass ran this frame.
     template <class Body>
     void timed(VkCommandBuffer cmd, ViewerPass pass, Body&& body) {

@@ -192,6 +192,7 @@ void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& s
         ImGui::SliderFloat("resolution scale", &s.resolutionScale, 0.25f, 1.0f, "%.2f");
         ImGui::Checkbox("one camera ray per pixel per frame", &s.shareCameraRays);
         ImGui::Checkbox("anti-aliasing (jitter camera rays over the pixel)", &s.antiAliasing);
+        ImGui::Checkbox("fast preview while moving (V)", &s.preview);
         ImGui::SliderFloat("shadow-ray roulette below", &s.shadowRouletteShare, 0.0f, 0.5f, "%.2f of the pixel");
         ImGui::Checkbox("temporal accumulation", &s.temporal);
         ImGui::SliderFloat("history clamp (0: off)", &s.clampSigma, 0.0f, 4.0f, "%.2f sigma");

@@ -282,6 +282,7 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     const bool advancing = loop.panel.playing && !automationDone;
     if (loop.script && advancing) loop.script->playFrame(loop.input, step);
     handlePresses(loop.input, w, loop.pointer, loop.nav, scene, loop.panel);
+    if (loop.input.previewToggled) settings.preview = !settings.preview;
     if (loop.input.nextInstance && !scene.instances.empty()) {
         loop.selectedInstance = loop.selectedInstance + 1 < scene.instances.size() ? loop.selectedInstance + 1 : 0;
         loop.panel.message = instanceName(scene, loop.selectedInstance) + kInstanceControls;
@@ -415,6 +416,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     settings.samplesPerFrame = options.samplesPerFrame;
     settings.denoise = options.denoise;
     settings.antiAliasing = options.antiAliasing;
+    settings.preview = options.preview;
     settings.debug = options.debug;
     prepareSceneSettings(scene, settings);
 
