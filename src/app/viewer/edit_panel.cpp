@@ -94,12 +94,26 @@ void openScene(EditState& state, EditRequests& requests) {
     }
 }
 
+void addModel(EditState& state, EditRequests& requests) {
+    if (!ImGui::CollapsingHeader("Add model")) return;
+    std::array<char, 1024> buffer{};
+    std::strncpy(buffer.data(), state.addPath.c_str(), buffer.size() - 1);
+    const bool entered =
+        ImGui::InputText("model path", buffer.data(), buffer.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    state.addPath = buffer.data();
+    ImGui::SameLine();
+    if (ImGui::Button("Add (M)") || entered) requests.addModel = true;
+    ImGui::TextDisabled("placed in front of the camera as an instance: drag it, Shift+drag turns it");
+    if (!state.addMessage.empty()) ImGui::TextWrapped("%s", state.addMessage.c_str());
+}
+
 }  // namespace
 
 void drawEditSections(ViewSettings& settings, EditState& state, EditRequests& requests) {
     depthOfField(settings, state);
     selection(state, requests);
     lights(state, requests);
+    addModel(state, requests);
     openScene(state, requests);
 }
 

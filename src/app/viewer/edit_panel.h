@@ -29,6 +29,8 @@ struct EditState {
     LightParams light;
     std::string openPath;                // the Open field
     std::string openMessage;             // the last Open error (one line)
+    std::string addPath;                 // the Add model field
+    std::string addMessage;              // what the last Add did (one line)
 };
 
 // What the user asked for this frame.
@@ -38,6 +40,7 @@ struct EditRequests {
     bool turnGroup = false;        // turn the selected group by state.turnDegrees (then zero them)
     bool openScene = false;        // open state.openPath
     bool clearSelection = false;
+    bool addModel = false;         // add the model at state.addPath in front of the camera
     bool lightChosen = false;      // load state.light from the light state.lightChoice names
     bool lightChanged = false;     // write state.light to that light
 };

@@ -9,7 +9,9 @@
 #include <cstdio>
 #include <ctime>
 #include <memory>
+#include <limits>
 #include <optional>
+#include <utility>
 
 #include "app/scene_opener.h"
 #include "interact/controls.h"
@@ -25,6 +27,7 @@
 #include "core/error.h"
 #include "render/interactive_renderer.h"
 #include "render/scene_objects.h"
+#include "scene/add_model.h"
 #include "scene/animation.h"
 #include "scene/sphere_groups.h"
 
@@ -259,6 +262,7 @@ struct LoopState {
     std::string pendingScreenshot;
     double fpsSmoothed = 0;
     double animationClock = 0;  // seconds played: the moment animated textures show
+    bool addModelKey = false;   // M was pressed: add the model named in the panel
 
     LoopState(const Scene& scene, const ViewerOptions& options, const InteractiveRenderer& renderer)
         : nav(scene, options.fly) {
@@ -283,6 +287,7 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     if (loop.script && advancing) loop.script->playFrame(loop.input, step);
     handlePresses(loop.input, w, loop.pointer, loop.nav, scene, loop.panel);
     if (loop.input.previewToggled) settings.preview = !settings.preview;
+    if (loop.input.addModel) loop.addModelKey = true;
     if (loop.input.nextInstance && !scene.instances.empty()) {
         loop.selectedInstance = loop.selectedInstance + 1 < scene.instances.size() ? loop.selectedInstance + 1 : 0;
         loop.panel.message = instanceName(scene, loop.selectedInstance) + kInstanceControls;
@@ -324,6 +329,8 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     endInputFrame(loop.input);
 }
 
+void addModel(LoopState& loop, Scene& scene, InteractiveRenderer& renderer);
+
 // The panel, and the edits it asks for.
 void drawUi(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, UiLayer& ui, ViewSettings& settings,
             float dt) {
@@ -337,7 +344,9 @@ void drawUi(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, UiLaye
     panel.fps = loop.fpsSmoothed;
     EditRequests requests;
     if (panel.visible) ui.drawPanel(settings, panel, renderer.stats(), loop.edit, requests);
+    requests.addModel = requests.addModel || std::exchange(loop.addModelKey, false);
     applyEdits(scene, renderer, settings, loop.edit, requests, loop.nav, panel);
+    if (requests.addModel) addModel(loop, scene, renderer);
     if (requests.openScene) {  // nothing selected in the new scene
         loop.selectedInstance = kNoObject;
         loop.pointer.drag.reset();
@@ -346,6 +355,42 @@ void drawUi(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, UiLaye
     if (requests.materialChanged || requests.moveObject || requests.turnGroup || requests.lightChanged ||
         requests.openScene)
         loop.shown.valid = false;
+}
+
+// Adds the model named in the panel in front of the camera as a new instance, and selects it so
+// that it can be dragged and turned at once. A failure leaves the scene as it was.
+void addModel(LoopState& loop, Scene& scene, InteractiveRenderer& renderer) {
+    EditState& edit = loop.edit;
+    if (edit.addPath.empty()) {
+        edit.addMessage = "type a model's path (or a built-in scene's name) first";
+        return;
+    }
+    app::OpenedScene opened = app::openSceneFile(edit.addPath);
+    if (!opened.scene) {
+        edit.addMessage = opened.error;
+        std::fprintf(stderr, "penumbra: error: %s\n", opened.error.c_str());
+        return;
+    }
+    try {
+        Scene next = scene;
+        // Half the depth of what the middle of the view shows: a model too large for that room
+        // is scaled down to fit in front of it.
+        const Camera camera = loop.camera();
+        const Pick ahead = pickPixel(renderer.sceneArrays(), camera, 64, 64, 32.0f, 32.0f);
+        const float room = ahead.depth > 0 ? 0.5f * ahead.depth : std::numeric_limits<float>::infinity();
+        const AddedModel added = addModelInFront(next, std::move(*opened.scene), camera, room);
+        renderer.rebuildScene(next, true);
+        scene = std::move(next);
+        loop.selectedInstance = added.instance;
+        loop.panel.message = instanceName(scene, added.instance) + kInstanceControls;
+        edit.addMessage = "added " + instanceName(scene, added.instance);
+        loop.panel.bvhNodes = renderer.sceneArrays().nodes.size();
+        loop.panel.bvhDepth = bvh::treeDepth(renderer.sceneArrays().nodes);
+        loop.shown.valid = false;
+    } catch (const Error& e) {
+        edit.addMessage = e.what();
+        std::fprintf(stderr, "penumbra: error: %s\n", e.what());
+    }
 }
 
 // Once the previous frame has finished, its timings and its display buffer are readable: a
