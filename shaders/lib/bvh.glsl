@@ -14,6 +14,13 @@
 #ifndef PN_COUNT_TRIANGLE
 #define PN_COUNT_TRIANGLE()
 #endif
+// Called with each closest hit and each any-hit answer (trace kernels' frame statistics).
+#ifndef PN_COUNT_CLOSEST
+#define PN_COUNT_CLOSEST(hit)
+#endif
+#ifndef PN_COUNT_OCCLUDED
+#define PN_COUNT_OCCLUDED(blocked)
+#endif
 // Called with the leaf node whose primitive became the closest hit so far (heatmap.comp's leaf views).
 #ifndef PN_NOTE_LEAF_HIT
 #define PN_NOTE_LEAF_HIT(leaf, primitives)
@@ -191,8 +198,16 @@ Hit traceRay(vec3 o, vec3 d, float tMax, bool anyHit) {
                                                                            : traverseBvh(o, d, tMax, anyHit);
 }
 
-Hit traceClosest(vec3 o, vec3 d, float tMax) { return traceRay(o, d, tMax, false); }
+Hit traceClosest(vec3 o, vec3 d, float tMax) {
+    Hit hit = traceRay(o, d, tMax, false);
+    PN_COUNT_CLOSEST(hit);
+    return hit;
+}
 
-bool traceOccluded(vec3 o, vec3 d, float tMax) { return traceRay(o, d, tMax, true).triangle != PN_NO_HIT; }
+bool traceOccluded(vec3 o, vec3 d, float tMax) {
+    bool blocked = traceRay(o, d, tMax, true).triangle != PN_NO_HIT;
+    PN_COUNT_OCCLUDED(blocked);
+    return blocked;
+}
 
 #endif

@@ -115,6 +115,9 @@ using namespace penumbra::gpu_types;
 // away from the ray, except those flagged PN_TRI_KEEP_BACK; any-hit (shadow) rays cull nothing,
 // so light never leaks through a wall seen from behind. lib/bvh.glsl hitPrimitive.
 #define PN_FEATURE_CULL_BACKFACES 131072u
+// Not a scene's feature but a measurement: the trace kernels count primitive tests, closest hits
+// and blocked shadow rays into RayCounters (lib/trace_outputs.glsl); without it none of that code.
+#define PN_FEATURE_FRAME_STATS 262144u
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic
@@ -652,7 +655,12 @@ PN_STRUCT(RayCounters) {
     uint closestRays;
     uint shadowRays;
     uint invalidSamples;  // NaN or infinite path samples (always counted; dropped from the image)
-    uint pad[29];
+    // PN_FEATURE_FRAME_STATS only: primitives (triangles, spheres, sprites) tested by the walks,
+    // closest-hit rays that hit something, shadow rays that found an occluder.
+    uint primitivesTested;
+    uint closestHits;
+    uint shadowBlocked;
+    uint pad[26];
 };
 
 // A ray for the test and benchmark kernels, 32 bytes.

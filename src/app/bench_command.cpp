@@ -206,7 +206,12 @@ void runBench(const BenchArgs& args) {
                         sep, kind, static_cast<unsigned long long>(w->rays), w->nodesPerRay, w->primitivesPerRay, w->laneUse);
             sep = ",";
         }
-        std::printf("\n  }\n}\n");
+        const auto& fs = r.frameStats;
+        std::printf("\n  },\n  \"frame_statistics\": {\"closest_rays\": %llu, \"closest_hits\": %llu, \"shadow_rays\": %llu, "
+                    "\"shadow_blocked\": %llu, \"primitives_tested\": %llu}\n}\n",
+                    static_cast<unsigned long long>(fs.closestRays), static_cast<unsigned long long>(fs.closestHits),
+                    static_cast<unsigned long long>(fs.shadowRays), static_cast<unsigned long long>(fs.shadowBlocked),
+                    static_cast<unsigned long long>(fs.primitivesTested));
         return;
     }
     std::printf("%s on %s, %ux%u, accel %s%s, medians of %d runs\n", scene.name.c_str(), ctx->info().name.c_str(),
@@ -224,6 +229,11 @@ void runBench(const BenchArgs& args) {
     for (const auto& [kind, w] : rayWork(r))
         std::printf("  %-8s walk: %.1f nodes and %.1f primitives per ray, %.0f%% of warp lanes busy\n", kind, w->nodesPerRay,
                     w->primitivesPerRay, 100.0 * w->laneUse);
+    const auto& fs = r.frameStats;
+    std::printf("  frame statistics: %llu closest-hit rays (%llu hit), %llu shadow rays (%llu blocked), %llu primitives tested\n",
+                static_cast<unsigned long long>(fs.closestRays), static_cast<unsigned long long>(fs.closestHits),
+                static_cast<unsigned long long>(fs.shadowRays), static_cast<unsigned long long>(fs.shadowBlocked),
+                static_cast<unsigned long long>(fs.primitivesTested));
 }
 
 }  // namespace

@@ -235,7 +235,14 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
 }
 
 std::uint32_t InteractiveRenderer::sceneKernelFeatures() const {
-    return penumbra::kernelFeatures(arrays_, Accel::Bvh, cullBackfaces_);
+    return penumbra::kernelFeatures(arrays_, Accel::Bvh, cullBackfaces_) |
+           (frameStatistics_ ? PN_FEATURE_FRAME_STATS : 0u);
+}
+
+void InteractiveRenderer::setFrameStatistics(bool on) {
+    if (on == frameStatistics_) return;
+    frameStatistics_ = on;
+    if (trace_) createPasses();  // the image stays the same: history is kept
 }
 
 void InteractiveRenderer::setCullBackfaces(bool on) {
@@ -487,6 +494,12 @@ void InteractiveRenderer::finishFrame() {
     const RayCounts counts = sumRayCounters(counters_);
     const double traceSeconds = stats_.passMilliseconds[std::size_t(ViewerPass::Trace)] * 1e-3;
     stats_.rays = counts.closestRays + counts.shadowRays;
+    stats_.closestRays = counts.closestRays;
+    stats_.shadowRays = counts.shadowRays;
+    stats_.primitivesTested = counts.primitivesTested;
+    stats_.closestHits = counts.closestHits;
+    stats_.shadowBlocked = counts.shadowBlocked;
+    stats_.frameStatistics = (features_ & PN_FEATURE_FRAME_STATS) != 0;
     stats_.raysPerSecond = traceSeconds > 0 ? double(stats_.rays) / traceSeconds : 0.0;
     if (heatFrame_) {
         const auto* heat = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());

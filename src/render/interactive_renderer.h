@@ -30,6 +30,10 @@ struct ViewerStats {
     double passMilliseconds[std::size_t(ViewerPass::Count)] = {};  // last frame; -1: no timestamps
     double raysPerSecond = 0;           // last frame's rays over its trace time
     std::uint64_t rays = 0;             // last frame's rays: closest hits and shadow rays
+    // Last frame's, with setFrameStatistics(true) (zero otherwise).
+    std::uint64_t closestRays = 0, shadowRays = 0;
+    std::uint64_t primitivesTested = 0, closestHits = 0, shadowBlocked = 0;
+    bool frameStatistics = false;       // whether the last frame counted them
     bool gbufferSkipped = false;        // last frame reused the still view's G-buffer
     bool tonemapInDenoiser = false;     // last frame's denoiser wrote the display (no tonemap pass)
     std::uint32_t heatMaxNodes = 0, heatMaxTriangles = 0;  // last heat-map frame
@@ -62,6 +66,9 @@ public:
     // Closest-hit walks skip back faces (RenderSettings::cullBackfaces); remakes the kernels and
     // drops history when it changes. Off by default.
     void setCullBackfaces(bool on);
+    // The trace kernels also count primitive tests, closest hits and blocked shadow rays into
+    // ViewerStats (PN_FEATURE_FRAME_STATS); remakes the kernels when it changes. Off by default.
+    void setFrameStatistics(bool on);
 
     // Sets the render resolution; a change reallocates the per-pixel buffers and drops history.
     void resize(std::uint32_t width, std::uint32_t height);
@@ -147,6 +154,7 @@ private:
     bool prevMatchesCurrent_ = true;  // instancesPrev_ holds the current instances
     bool objectMotionVectors_ = true;
     bool cullBackfaces_ = false;
+    bool frameStatistics_ = false;
     gpu::Buffer* historyIn_ = nullptr;  // last frame's history; the two swap every frame
     gpu::Buffer* historyOut_ = nullptr;
     std::unique_ptr<TracePass> trace_;

@@ -46,7 +46,7 @@ std::string kernelFeatureNames(std::uint32_t features) {
         {PN_FEATURE_INSTANCES, "instances"},     {PN_FEATURE_WIDE_BVH, "wide-bvh"},
         {PN_FEATURE_LIGHT_GRID, "light-grid"},   {PN_FEATURE_ONE_TOP_LIGHT, "one-top-light"},
         {PN_FEATURE_SHADOW_ROULETTE, "shadow-roulette"}, {PN_FEATURE_GLOSSY, "glossy"},
-        {PN_FEATURE_CULL_BACKFACES, "cull-backfaces"}};
+        {PN_FEATURE_CULL_BACKFACES, "cull-backfaces"}, {PN_FEATURE_FRAME_STATS, "frame-stats"}};
     std::string out;
     for (auto [bit, name] : kNames) {
         if (!(features & bit)) continue;

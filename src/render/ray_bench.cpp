@@ -125,6 +125,16 @@ RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repe
     const RenderStats before = renderer.stats();
     renderer.renderPasses(1, true);
     r.frameRays = (renderer.stats().closestRays - before.closestRays) + (renderer.stats().shadowRays - before.shadowRays);
+
+    // And one with the kernels that count tests, hits and blocked shadow rays (slower, untimed).
+    renderer.setFrameStatistics(true);
+    const RenderStats counted = renderer.stats();
+    renderer.renderPasses(1, true);
+    const RenderStats& after = renderer.stats();
+    r.frameStats = {after.closestRays - counted.closestRays, after.closestHits - counted.closestHits,
+                    after.shadowRays - counted.shadowRays, after.shadowBlocked - counted.shadowBlocked,
+                    after.primitivesTested - counted.primitivesTested};
+    renderer.setFrameStatistics(false);
     return r;
 }
 

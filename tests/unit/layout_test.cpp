@@ -131,7 +131,8 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                                         offsetof(PassPush, waveStride), offsetof(PassPush, waveBounce), 40, 44});
         expectMembers(spv, "WaveControl", {0, offsetof(WaveControl, shadowCount), offsetof(WaveControl, shadowLive),
                                            offsetof(WaveControl, extendGroups), offsetof(WaveControl, shadowGroups)});
-        expectMembers(spv, "RayCounters", {0, 4, offsetof(RayCounters, invalidSamples), 12});
+        expectMembers(spv, "RayCounters", {0, 4, offsetof(RayCounters, invalidSamples), offsetof(RayCounters, primitivesTested),
+                                             offsetof(RayCounters, closestHits), offsetof(RayCounters, shadowBlocked), 24});
         expectMembers(spv, "RayDesc", {0, offsetof(RayDesc, tMax), offsetof(RayDesc, direction), 28});
         expectMembers(spv, "HitRecord", {0, offsetof(HitRecord, triangle), 8, offsetof(HitRecord, v)});
         expectMembers(spv, "SurfacePoint", {0, offsetof(SurfacePoint, valid), offsetof(SurfacePoint, normal), 28});

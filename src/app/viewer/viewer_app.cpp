@@ -347,6 +347,7 @@ void drawUi(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, UiLaye
     requests.addModel = requests.addModel || std::exchange(loop.addModelKey, false);
     applyEdits(scene, renderer, settings, loop.edit, requests, loop.nav, panel);
     if (requests.addModel) addModel(loop, scene, renderer);
+    renderer.setFrameStatistics(panel.frameStatistics);
     if (requests.openScene) {  // nothing selected in the new scene
         loop.selectedInstance = kNoObject;
         loop.pointer.drag.reset();
