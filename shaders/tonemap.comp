@@ -23,10 +23,18 @@ vec3 heatRamp(float t) {
     return clamp(vec3(1.5 - abs(4.0 * t - 3.0), 1.5 - abs(4.0 * t - 2.0), 1.5 - abs(4.0 * t - 1.0)), 0.0, 1.0);
 }
 
+// The fast preview's shading: albedo times the cosine at the pixel-centre hit (black on a miss).
+vec3 previewColor(uint i, GBufferTexel g) {
+    if (g.surfaceId == 0u) return vec3(0.0);
+    vec2 centre = vec2(float(i % frame.width), float(i / frame.width)) + 0.5;
+    return g.albedo * abs(dot(g.normal, normalize(viewDirection(centre))));
+}
+
 // Debug views are display colours already (no tone curve), in linear light.
 vec3 debugColor(uint i) {
     GBufferTexel g = gbuffer[i];
     switch (viewer.debugMode) {
+        case PN_DEBUG_PREVIEW: return previewColor(i, g);
         case PN_DEBUG_NORMALS: return g.surfaceId == 0u ? vec3(0.0) : g.normal * 0.5 + 0.5;
         case PN_DEBUG_ALBEDO: return g.albedo;
         case PN_DEBUG_DEPTH: return vec3(g.depth > 0.0 ? 1.0 / (1.0 + g.depth) : 0.0);

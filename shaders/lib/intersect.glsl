@@ -32,6 +32,15 @@ bool intersectTriangle(TriVerts tri, vec3 o, vec3 d, float tMax, out float t, ou
     return true;
 }
 
+// Whether direction d sees the triangle's back (its normal e1 x e2, the counter-clockwise front,
+// points along d): the sign of intersectTriangle's determinant, by the same operations in the same
+// order, so back-face culling agrees with the CPU reference bit for bit. Edge-on is not a back.
+bool facesAway(TriVerts tri, vec3 d) {
+    precise vec3 n = cross(tri.e1, tri.e2);
+    precise float det = -dot(d, n);
+    return det < 0.0;
+}
+
 // The nearest root with t in (0, tMax) of |o + t d - c| = r for a PN_TRI_SPHERE slot (v0 = c,
 // e1.x = r), in the numerically stable form of Ray Tracing Gems ch. 7: the discriminant comes
 // from the centre's distance to the ray's line (not b^2 - ac, which loses every digit when a

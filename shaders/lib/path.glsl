@@ -85,13 +85,15 @@ PendingShadow noShadow() { return PendingShadow(ShadowRay(vec3(0.0), vec3(0.0, 0
 Path startPath(uvec2 pixel, uint pixelIndex, uint sampleIndex, bool sharedCamera) {
     Path path;
     path.rng = rngSeed(pixelIndex, sampleIndex, frame.seed);
-    vec2 jitter = rngNext2(path.rng);
-    cameraRay(vec2(pixel) + jitter, path.rng, path.origin, path.direction);
+    bool jittered = (frame.flags & PN_FRAME_NO_JITTER) == 0u;
+    vec2 jitter = rngNext2(path.rng);  // drawn either way, so later draws stay the same
+    cameraRay(vec2(pixel) + (jittered ? jitter : vec2(0.5)), path.rng, path.origin, path.direction);
     if (sharedCamera) {
         uint pass = sampleIndex / frame.samplesPerPass;
         uint rotation = pcgHash(pixelIndex ^ pcgHash(frame.seed ^ 0x85ebca6bu));
         uint lensRng = rngSeed(pixelIndex, pass * frame.samplesPerPass, frame.seed);
-        cameraRay(vec2(pixel) + passJitter(rotation, pcgHash(rotation), pass), lensRng, path.origin, path.direction);
+        vec2 inPixel = jittered ? passJitter(rotation, pcgHash(rotation), pass) : vec2(0.5);
+        cameraRay(vec2(pixel) + inPixel, lensRng, path.origin, path.direction);
     }
     path.throughput = vec3(1.0);
     path.result = vec3(0.0);

@@ -82,7 +82,7 @@ Hit traverseWide(vec3 o, vec3 d, float tMax, bool anyHit) {
             prims.y &= prims.y - 1u;
             PN_COUNT_TRIANGLE();
             float t, u, v;
-            if (hitPrimitive(i, o, d, hit.t, t, u, v)) {
+            if (hitPrimitive(i, o, d, hit.t, anyHit, t, u, v)) {
                 hit = Hit(t, i, u, v, PN_NO_HIT);
                 if (anyHit) return hit;
             }

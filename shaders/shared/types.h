@@ -110,6 +110,14 @@ using namespace penumbra::gpu_types;
 // their camera paths in place (PN_WAVE_CAMERA_IN_PLACE); the later rounds' kernels carry none of
 // that code (measured: DOOM1's shading 1-2% faster; the driver kept the registers, docs/PERFORMANCE.md).
 #define PN_FEATURE_CAMERA_IN_PLACE 16384u
+// Not a scene's feature but a traversal option (--cull-backfaces), so not in PN_FEATURE_ALL: the
+// closest-hit walks skip triangles whose geometric normal (e1 x e2, counter-clockwise front) faces
+// away from the ray, except those flagged PN_TRI_KEEP_BACK; any-hit (shadow) rays cull nothing,
+// so light never leaks through a wall seen from behind. lib/bvh.glsl hitPrimitive.
+#define PN_FEATURE_CULL_BACKFACES 131072u
+// Not a scene's feature but a measurement: the trace kernels count primitive tests, closest hits
+// and blocked shadow rays into RayCounters (lib/trace_outputs.glsl); without it none of that code.
+#define PN_FEATURE_FRAME_STATS 262144u
 
 // ---- estimators the integrator combines (FrameUniforms.misMode) ----
 #define PN_MIS_BOTH 0u        // light sampling and BSDF sampling, power heuristic
@@ -156,6 +164,9 @@ using namespace penumbra::gpu_types;
 // in metres (x along the card, to the viewer's right); e2.y = the direction the thing faces, in
 // radians counter-clockwise (seen from above) from +x toward -z; e2.z = its views (1 or 8).
 #define PN_TRI_SPRITE 4u
+// Never culled by PN_FEATURE_CULL_BACKFACES: its material transmits (a path inside glass must
+// find the back faces to leave it).
+#define PN_TRI_KEEP_BACK 8u
 
 // ---- texture flags and sampler words (a material's *Wrap fields: PN_WRAP_* for u,
 // | PN_WRAP_* for v << 8, | PN_SAMPLER_NEAREST) ----
@@ -489,10 +500,13 @@ PN_STRUCT(FrameUniforms) {
     float shadowRouletteShare;  // shadow-ray roulette below this share of the pixel's estimate (lib/path.glsl); 0: off
     float textureSaturation;    // of base-colour textures (shared/view_limits.h); 1: as they are
     float renderDistance;       // metres across the floor from the camera; nothing beyond is hit; 0: no limit
-    uint pad4;
+    uint flags;                 // PN_FRAME_*
     uint pad5;
     uint pad6;
 };
+// FrameUniforms.flags. NO_JITTER: camera rays go through pixel centres (no anti-aliasing; the
+// random draws are made all the same, so the rest of each path's numbers do not change).
+#define PN_FRAME_NO_JITTER 1u
 
 // ---- viewer passes (temporal.comp, atrous.comp, tonemap.comp, gbuffer.comp, heatmap.comp) ----
 #define PN_TONEMAP_REINHARD 0u
@@ -508,6 +522,9 @@ PN_STRUCT(FrameUniforms) {
 #define PN_DEBUG_BVH_BOXES 8u    // the image with the BVH's boxes at one depth outlined (boxes.comp)
 #define PN_DEBUG_LEAF_DEPTH 9u   // depth of the BVH leaf holding the primary ray's hit (root: 0)
 #define PN_DEBUG_LEAF_TRIS 10u   // primitives in the BVH leaf holding the primary ray's hit
+// The fast preview (ViewSettings::preview, shown while the view moves): the primary hit's albedo
+// times the cosine between its normal and the ray, as a raster preview with a headlight draws it.
+#define PN_DEBUG_PREVIEW 11u
 #define PN_MAX_OVERLAY_BOXES 4096u  // boxes the overlay draws at most (each pixel tests every one)
 // The debug view's small window (picture-in-picture): 1/PN_DEBUG_INSET_DIVISOR of the image's
 // width and height, PN_DEBUG_INSET_MARGIN pixels from its bottom right corner, in a one-pixel frame.
@@ -642,7 +659,12 @@ PN_STRUCT(RayCounters) {
     uint closestRays;
     uint shadowRays;
     uint invalidSamples;  // NaN or infinite path samples (always counted; dropped from the image)
-    uint pad[29];
+    // PN_FEATURE_FRAME_STATS only: primitives (triangles, spheres, sprites) tested by the walks,
+    // closest-hit rays that hit something, shadow rays that found an occluder.
+    uint primitivesTested;
+    uint closestHits;
+    uint shadowBlocked;
+    uint pad[26];
 };
 
 // A ray for the test and benchmark kernels, 32 bytes.
@@ -727,7 +749,7 @@ static_assert(sizeof(Instance) == 112 && offsetof(Instance, worldToObject) == 48
               offsetof(Instance, firstPrimitive) == 100 && offsetof(Instance, primitiveCount) == 104 &&
               offsetof(Instance, id) == 108);
 static_assert(sizeof(FrameUniforms) == 208 && offsetof(FrameUniforms, textureSaturation) == 188 &&
-              offsetof(FrameUniforms, renderDistance) == 192 && offsetof(FrameUniforms, topLightCount) == 160 &&
+              offsetof(FrameUniforms, renderDistance) == 192 && offsetof(FrameUniforms, flags) == 196 && offsetof(FrameUniforms, topLightCount) == 160 &&
               offsetof(FrameUniforms, instanceCount) == 152 && offsetof(FrameUniforms, topRoot) == 176 &&
               offsetof(FrameUniforms, envLuminance) == 164 && offsetof(FrameUniforms, lightPickUniform) == 172 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
               offsetof(FrameUniforms, cameraRight) == 16 && offsetof(FrameUniforms, aspect) == 28 &&

@@ -18,6 +18,7 @@ struct BenchArgs {
     std::string map;
     std::string device;
     std::string accel = "bvh";
+    bool cullBackfaces = false;
     std::uint32_t width = 1920, height = 1080, bounces = 4;
     int repeats = 20;
     bool json = false;
@@ -129,6 +130,7 @@ void runViewerBenchCommand(const BenchArgs& args) {
     o.view.temporal = !args.noTemporal;
     o.moveSectors = args.moveSectors;
     o.view.shareCameraRays = args.shareCameraRays;
+    o.cullBackfaces = args.cullBackfaces;
     o.view.denoise = args.denoise > 0;
     o.view.denoiseIterations = std::max(args.denoise, 1u);
     o.motion = parseCameraMotion(args.motion);
@@ -177,6 +179,7 @@ void runBench(const BenchArgs& args) {
     settings.maxBounces = args.bounces;
     settings.samplesPerPixel = 1;
     settings.accel = parseAccel(args.accel);
+    settings.cullBackfaces = args.cullBackfaces;
     validateSettings(settings);
     Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env, args.wad);
     auto ctx = openDevice(args.device);
@@ -188,13 +191,13 @@ void runBench(const BenchArgs& args) {
 
     if (args.json) {
         std::printf(
-            "{\n  \"scene\": \"%s\",\n  \"device\": \"%s\",\n  \"accel\": \"%s\",\n  \"width\": %u,\n  \"height\": %u,\n"
+            "{\n  \"scene\": \"%s\",\n  \"device\": \"%s\",\n  \"accel\": \"%s\",\n  \"cull_backfaces\": %s,\n  \"width\": %u,\n  \"height\": %u,\n"
             "  \"bounces\": %u,\n  \"repeats\": %d,\n  \"triangles\": %zu,\n  \"bvh_nodes\": %zu,\n  \"wide_nodes\": %zu,\n  \"bvh_sah_cost\": %.3f,\n"
             "  \"bvh_build_ms\": %.3f,\n  \"bvh_from_cache\": %s,\n  \"primary_mrays_per_s\": %.1f,\n  \"shadow_mrays_per_s\": %.1f,\n"
             "  \"diffuse_mrays_per_s\": %.1f,\n  \"primary_ms\": %.4f,\n  \"shadow_ms\": %.4f,\n  \"diffuse_ms\": %.4f,\n"
             "  \"frame_ms\": %.4f,\n  \"frame_rays\": %llu,\n  \"frame_mrays_per_s\": %.1f,\n",
-            scene.name.c_str(), ctx->info().name.c_str(), accelName(settings.accel), settings.width, settings.height,
-            settings.maxBounces, r.repeats, a.triVerts.size(), a.nodes.size(), a.wideNodes.size(), a.stats.sahCost,
+            scene.name.c_str(), ctx->info().name.c_str(), accelName(settings.accel),
+            settings.cullBackfaces ? "true" : "false", settings.width, settings.height, settings.maxBounces, r.repeats, a.triVerts.size(), a.nodes.size(), a.wideNodes.size(), a.stats.sahCost,
             a.buildMilliseconds, a.bvhFromCache ? "true" : "false", mrays(r.primaryRays, r.primaryMs), mrays(r.shadowRays, r.shadowMs), mrays(r.diffuseRays, r.diffuseMs),
             r.primaryMs, r.shadowMs, r.diffuseMs, r.frameMs, static_cast<unsigned long long>(r.frameRays),
             mrays(r.frameRays, r.frameMs));
@@ -205,11 +208,17 @@ void runBench(const BenchArgs& args) {
                         sep, kind, static_cast<unsigned long long>(w->rays), w->nodesPerRay, w->primitivesPerRay, w->laneUse);
             sep = ",";
         }
-        std::printf("\n  }\n}\n");
+        const auto& fs = r.frameStats;
+        std::printf("\n  },\n  \"frame_statistics\": {\"closest_rays\": %llu, \"closest_hits\": %llu, \"shadow_rays\": %llu, "
+                    "\"shadow_blocked\": %llu, \"primitives_tested\": %llu}\n}\n",
+                    static_cast<unsigned long long>(fs.closestRays), static_cast<unsigned long long>(fs.closestHits),
+                    static_cast<unsigned long long>(fs.shadowRays), static_cast<unsigned long long>(fs.shadowBlocked),
+                    static_cast<unsigned long long>(fs.primitivesTested));
         return;
     }
-    std::printf("%s on %s, %ux%u, accel %s, medians of %d runs\n", scene.name.c_str(), ctx->info().name.c_str(),
-                settings.width, settings.height, accelName(settings.accel), r.repeats);
+    std::printf("%s on %s, %ux%u, accel %s%s, medians of %d runs\n", scene.name.c_str(), ctx->info().name.c_str(),
+                settings.width, settings.height, accelName(settings.accel),
+                settings.cullBackfaces ? " culling back faces" : "", r.repeats);
     std::printf("  bvh build        %10.3f ms  (%zu triangles, %zu nodes, SAH cost %.2f%s)\n", a.buildMilliseconds,
                 a.triVerts.size(), a.nodes.size(), a.stats.sahCost, a.bvhFromCache ? ", read from the cache" : "");
     if (!a.env.alias.empty())
@@ -222,6 +231,11 @@ void runBench(const BenchArgs& args) {
     for (const auto& [kind, w] : rayWork(r))
         std::printf("  %-8s walk: %.1f nodes and %.1f primitives per ray, %.0f%% of warp lanes busy\n", kind, w->nodesPerRay,
                     w->primitivesPerRay, 100.0 * w->laneUse);
+    const auto& fs = r.frameStats;
+    std::printf("  frame statistics: %llu closest-hit rays (%llu hit), %llu shadow rays (%llu blocked), %llu primitives tested\n",
+                static_cast<unsigned long long>(fs.closestRays), static_cast<unsigned long long>(fs.closestHits),
+                static_cast<unsigned long long>(fs.shadowRays), static_cast<unsigned long long>(fs.shadowBlocked),
+                static_cast<unsigned long long>(fs.primitivesTested));
 }
 
 }  // namespace
@@ -236,6 +250,8 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--bounces", args->bounces, "bounces of the timed frame (default 4)");
     cmd->add_option("--repeats", args->repeats, "timed runs per figure; medians are reported (default 20)");
     cmd->add_option("--accel", args->accel, "bvh, wide (compressed 8-wide BVH) or brute");
+    cmd->add_flag("--cull-backfaces", args->cullBackfaces,
+                  "closest-hit walks skip triangles seen from behind (not shadow rays, not glass)");
     cmd->add_flag("--json", args->json, "print one JSON object instead of text");
     cmd->add_flag("--viewer", args->viewer,
                   "time the viewer's whole frame (trace, G-buffer, temporal, denoise, tonemap) instead of ray kernels");

@@ -62,6 +62,11 @@ void addRenderOptions(CLI::App& cmd, RenderArgs& a) {
                    "shadow rays carrying less than this share of their pixel's value so far go through Russian "
                    "roulette (same mean, fewer rays; default 0: every ray, which keeps an image the same bit for bit "
                    "however its passes are split across MPI ranks or checkpoints)");
+    cmd.add_flag_callback("--no-jitter", [&a] { a.settings.pixelJitter = false; },
+                 "camera rays through pixel centres: no anti-aliasing (jaggy edges, as the simplest ray tracers draw)");
+    cmd.add_flag("--cull-backfaces", a.settings.cullBackfaces,
+                 "camera and bounce rays skip triangles seen from behind (not shadow rays, not glass; for closed, "
+                 "consistently wound meshes)");
     cmd.add_option("--exposure", a.exposure, "exposure in stops for PNG output");
     cmd.add_flag("-q,--quiet", a.quiet, "no progress bar or summary");
     cmd.add_option("--time-limit", a.timeLimit,

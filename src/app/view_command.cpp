@@ -69,6 +69,13 @@ void registerView(CLI::App& app, Action& action) {
     cmd->add_flag("--fly", args->options.fly, "start in free flight on Doom levels (F toggles walking)");
     cmd->add_flag("--denoise", args->options.denoise, "start with the a-trous denoiser on");
     addViewSettingOptions(*cmd, args->options.view);
+    cmd->add_flag("--preview", args->options.preview,
+                  "while the view moves, draw a fast preview (albedo times a cosine at the primary hits); path "
+                  "tracing resumes at rest (V toggles it)");
+    cmd->add_flag("--cull-backfaces", args->options.cullBackfaces,
+                  "camera and bounce rays skip triangles seen from behind (not shadow rays, not glass)");
+    cmd->add_flag_callback("--no-jitter", [args] { args->options.antiAliasing = false; },
+                  "start with anti-aliasing off: camera rays through pixel centres (the panel toggles it)");
     cmd->add_option("--debug", args->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles, boxes, leaf-depth, leaf-triangles");
     addDeviceOption(*cmd, args->options.device);
     addBvhCacheOption(*cmd);

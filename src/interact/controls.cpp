@@ -22,6 +22,8 @@ void applyKey(InputState& in, int key, bool pressed) {
         // Space also moves up, in free flight; walking, it is Doom's use key (Enter is the other).
         case GLFW_KEY_SPACE:
         case GLFW_KEY_ENTER: in.use = true; break;
+        case GLFW_KEY_V: in.previewToggled = true; break;
+        case GLFW_KEY_M: in.addModel = true; break;
         default: break;
     }
 }
@@ -61,6 +63,7 @@ void endInputFrame(InputState& in) {
     in.pauseToggled = in.resetCamera = in.screenshot = false;
     in.walkToggled = in.panelToggled = in.escape = false;
     in.nextInstance = in.gridToggled = in.use = false;
+    in.previewToggled = in.addModel = false;
 }
 
 }  // namespace penumbra::viewer

@@ -18,6 +18,8 @@ struct InputState {
     bool walkToggled = false, panelToggled = false, escape = false;
     bool nextInstance = false, gridToggled = false;
     bool use = false;  // Doom's "use" (Space or Enter): opens doors and turns switches while walking
+    bool previewToggled = false;  // V: the fast preview while moving (ViewSettings::preview)
+    bool addModel = false;        // M: add the model named in the panel's Add model field
 };
 
 // What the held keys ask of the selected instance: I/K forward/back, J/L left/right (along the

@@ -27,6 +27,7 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.shadowRouletteShare = settings.shadowRouletteShare;
     f.textureSaturation = settings.textureSaturation;
     f.renderDistance = settings.renderDistance;
+    f.flags = settings.pixelJitter ? 0u : PN_FRAME_NO_JITTER;
     f.lightNodeCount = lightNodeCount;
     f.triCount = triCount;
     f.nodeCount = nodeCount;

@@ -369,12 +369,15 @@ void addTextures(const Scene& scene, SceneArrays& out) {
     }
 }
 
-// Traversal checks alpha only where the flag says so, keeping the common path cheap.
+// Traversal checks alpha only where the flag says so, keeping the common path cheap; likewise a
+// transmissive triangle is flagged to keep its back face under --cull-backfaces.
 void markAlphaTested(SceneArrays& out) {
-    for (std::size_t i = 0; i < out.triVerts.size(); ++i)
-        if (!bvh::isSphere(out.triVerts[i]) && !bvh::isSprite(out.triVerts[i]) &&
-            out.materials[out.triAttribs[i].materialId].flags & PN_MATERIAL_ALPHA_TESTED)
-            out.triVerts[i].flags |= PN_TRI_ALPHA_TESTED;
+    for (std::size_t i = 0; i < out.triVerts.size(); ++i) {
+        if (bvh::isSphere(out.triVerts[i]) || bvh::isSprite(out.triVerts[i])) continue;
+        const shader::Material& m = out.materials[out.triAttribs[i].materialId];
+        if (m.flags & PN_MATERIAL_ALPHA_TESTED) out.triVerts[i].flags |= PN_TRI_ALPHA_TESTED;
+        if (m.transmission > 0) out.triVerts[i].flags |= PN_TRI_KEEP_BACK;
+    }
 }
 
 }  // namespace

@@ -60,7 +60,8 @@ bool changesTheImage(const ViewSettings& a, const ViewSettings& b) {
     auto same = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
     return a.apertureRadius != b.apertureRadius || a.focusDistance != b.focusDistance ||
            a.samplesPerFrame != b.samplesPerFrame || a.maxBounces != b.maxBounces ||
-           a.rouletteStart != b.rouletteStart || a.shareCameraRays != b.shareCameraRays || a.torch != b.torch ||
+           a.rouletteStart != b.rouletteStart || a.shareCameraRays != b.shareCameraRays ||
+           a.antiAliasing != b.antiAliasing || a.torch != b.torch ||
            !same(a.torchColor, b.torchColor) || a.torchIntensity != b.torchIntensity || a.torchRange != b.torchRange;
 }
 
@@ -240,7 +241,23 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
     previousFrame_.reset();
 }
 
-std::uint32_t InteractiveRenderer::sceneKernelFeatures() const { return penumbra::kernelFeatures(arrays_, Accel::Bvh); }
+std::uint32_t InteractiveRenderer::sceneKernelFeatures() const {
+    return penumbra::kernelFeatures(arrays_, Accel::Bvh, cullBackfaces_) |
+           (frameStatistics_ ? PN_FEATURE_FRAME_STATS : 0u);
+}
+
+void InteractiveRenderer::setFrameStatistics(bool on) {
+    if (on == frameStatistics_) return;
+    frameStatistics_ = on;
+    if (trace_) createPasses();  // the image stays the same: history is kept
+}
+
+void InteractiveRenderer::setCullBackfaces(bool on) {
+    if (on == cullBackfaces_) return;
+    cullBackfaces_ = on;
+    if (trace_) createPasses();
+    historyValid_ = false;
+}
 
 void InteractiveRenderer::createPasses() {
     stillGBuffer_[0] = stillGBuffer_[1] = false;  // new buffers, or a new scene in them
@@ -288,6 +305,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
         !arrays_.instances.empty() && std::memcmp(lastFrameInstances_.data(), arrays_.instances.data(),
                                                   arrays_.instances.size() * sizeof(shader::Instance)) != 0;
     const bool moved = previousFrame_ && (!sameCamera(*previousFrame_, f) || animating || instancesMoved);
+    if (s.preview && moved) return recordPreview(cmd, camera, s, f, instancesMoved);
     // A still view whose G-buffers both hold it reuses them (recordGBuffer): the temporal pass is
     // told, so it neither compares them nor writes the denoiser's guide again.
     if (moved) stillGBuffer_[0] = stillGBuffer_[1] = false;
@@ -315,6 +333,39 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     stats_.samplesPerPixel = frameIndex_ * s.samplesPerFrame;
 }
 
+void InteractiveRenderer::recordPreview(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& s,
+                                        shader::FrameUniforms f, bool instancesMoved) {
+    shader::ViewerUniforms v = viewerUniforms(s, f, true);
+    v.debugMode = PN_DEBUG_PREVIEW;
+    v.debugOpacity = 1.0f;
+    v.debugInset = 0u;
+    v.denoise = 0u;
+    std::memcpy(frameUniforms_.mapped(), &f, sizeof(f));
+    std::memcpy(viewerUniforms_.mapped(), &v, sizeof(v));
+    clearRayCounters(counters_);
+    heatFrame_ = false;
+    timer_.reset();
+    recorded_ = 0;
+    timer_.begin(cmd, std::uint32_t(ViewerPass::Frame));
+    recordUploads(cmd, camera, s, instancesMoved, false);
+    const bool toB = historyIn_ == &historyA_;
+    recordGBuffer(cmd, toB, true, false);
+    gpu::computeBarrier(cmd);
+    TonemapPass& tonemap = toB ? *tonemapB_ : *tonemapA_;
+    tonemap.setFiltered(filterB_);
+    timed(cmd, ViewerPass::Tonemap, [&] { tonemap.record(cmd, width_, height_); });
+    gpu::computeBarrier(cmd);
+    timer_.end(cmd, std::uint32_t(ViewerPass::Frame));
+    recorded_ |= 1u << std::uint32_t(ViewerPass::Frame);
+    denoised_ = nullptr;
+    stats_.tonemapInDenoiser = false;
+    previousFrame_ = f;
+    // Nothing was traced: the first still frame starts the path-traced mean afresh.
+    historyValid_ = false;
+    frameIndex_ = 0;
+    stats_.samplesPerPixel = 0;
+}
+
 void InteractiveRenderer::startHistory(const ViewSettings& s) {
     if (previousSettings_ && changesTheImage(*previousSettings_, s)) historyValid_ = false;
     if (!s.temporal) historyValid_ = false;
@@ -331,6 +382,7 @@ shader::FrameUniforms InteractiveRenderer::frameUniforms(const Camera& camera, c
     rs.maxBounces = s.maxBounces;
     rs.rouletteStart = s.rouletteStart;
     rs.shadowRouletteShare = s.shadowRouletteShare;
+    rs.pixelJitter = s.antiAliasing;
     rs.seed = seed_;
     rs.time = s.time;
     rs.textureSaturation = s.textureSaturation;
@@ -455,6 +507,12 @@ void InteractiveRenderer::finishFrame() {
     const RayCounts counts = sumRayCounters(counters_);
     const double traceSeconds = stats_.passMilliseconds[std::size_t(ViewerPass::Trace)] * 1e-3;
     stats_.rays = counts.closestRays + counts.shadowRays;
+    stats_.closestRays = counts.closestRays;
+    stats_.shadowRays = counts.shadowRays;
+    stats_.primitivesTested = counts.primitivesTested;
+    stats_.closestHits = counts.closestHits;
+    stats_.shadowBlocked = counts.shadowBlocked;
+    stats_.frameStatistics = (features_ & PN_FEATURE_FRAME_STATS) != 0;
     stats_.raysPerSecond = traceSeconds > 0 ? double(stats_.rays) / traceSeconds : 0.0;
     if (heatFrame_) {
         const auto* heat = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());

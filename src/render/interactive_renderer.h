@@ -30,6 +30,10 @@ struct ViewerStats {
     double passMilliseconds[std::size_t(ViewerPass::Count)] = {};  // last frame; -1: no timestamps
     double raysPerSecond = 0;           // last frame's rays over its trace time
     std::uint64_t rays = 0;             // last frame's rays: closest hits and shadow rays
+    // Last frame's, with setFrameStatistics(true) (zero otherwise).
+    std::uint64_t closestRays = 0, shadowRays = 0;
+    std::uint64_t primitivesTested = 0, closestHits = 0, shadowBlocked = 0;
+    bool frameStatistics = false;       // whether the last frame counted them
     bool gbufferSkipped = false;        // last frame reused the still view's G-buffer
     bool tonemapInDenoiser = false;     // last frame's denoiser wrote the display (no tonemap pass)
     std::uint32_t heatMaxNodes = 0, heatMaxTriangles = 0;  // last heat-map frame
@@ -63,6 +67,12 @@ public:
     // Off: the G-buffer sees every instance as still (no object motion in the motion vectors); the
     // comparison the ghost test makes. On by default.
     void setObjectMotionVectors(bool on) { objectMotionVectors_ = on; }
+    // Closest-hit walks skip back faces (RenderSettings::cullBackfaces); remakes the kernels and
+    // drops history when it changes. Off by default.
+    void setCullBackfaces(bool on);
+    // The trace kernels also count primitive tests, closest hits and blocked shadow rays into
+    // ViewerStats (PN_FEATURE_FRAME_STATS); remakes the kernels when it changes. Off by default.
+    void setFrameStatistics(bool on);
 
     // Sets the render resolution; a change reallocates the per-pixel buffers and drops history.
     void resize(std::uint32_t width, std::uint32_t height);
@@ -116,6 +126,9 @@ private:
     // Records this frame's G-buffer pass unless both letters already hold this still view (reuse).
     void recordGBuffer(VkCommandBuffer cmd, bool toB, bool moved, bool reuse);
     void recordBoxOverlay(VkCommandBuffer cmd, const ViewSettings& s);
+    // A fast-preview frame (ViewSettings::preview while moving): G-buffer, then the display.
+    void recordPreview(VkCommandBuffer cmd, const Camera& camera, const ViewSettings& s, shader::FrameUniforms f,
+                       bool instancesMoved);
     // Records body between the pass's timestamps and notes that the pass ran this frame.
     template <class Body>
     void timed(VkCommandBuffer cmd, ViewerPass pass, Body&& body) {
@@ -145,6 +158,8 @@ private:
     std::vector<std::uint32_t> pendingMaterials_;  // materials to upload with the next frame  // as the last recorded frame placed them
     bool prevMatchesCurrent_ = true;  // instancesPrev_ holds the current instances
     bool objectMotionVectors_ = true;
+    bool cullBackfaces_ = false;
+    bool frameStatistics_ = false;
     gpu::Buffer* historyIn_ = nullptr;  // last frame's history; the two swap every frame
     gpu::Buffer* historyOut_ = nullptr;
     std::unique_ptr<TracePass> trace_;

@@ -5,10 +5,11 @@
 
 namespace penumbra {
 
-std::uint32_t kernelFeatures(const SceneArrays& a, Accel accel) {
+std::uint32_t kernelFeatures(const SceneArrays& a, Accel accel, bool cullBackfaces) {
+    const std::uint32_t cull = cullBackfaces ? PN_FEATURE_CULL_BACKFACES : 0u;
     const char* generic = std::getenv("PENUMBRA_GENERIC_KERNEL");
-    if (generic && *generic && std::strcmp(generic, "0") != 0) return PN_FEATURE_ALL;
-    std::uint32_t f = 0;
+    if (generic && *generic && std::strcmp(generic, "0") != 0) return PN_FEATURE_ALL | cull;
+    std::uint32_t f = cull;
     if (a.sphereCount > 0) f |= PN_FEATURE_SPHERES;
     for (const shader::TriVerts& t : a.triVerts) {
         if (t.flags & PN_TRI_ALPHA_TESTED) f |= PN_FEATURE_ALPHA_TEST;
@@ -44,7 +45,8 @@ std::string kernelFeatureNames(std::uint32_t features) {
         {PN_FEATURE_SPRITES, "sprites"},         {PN_FEATURE_SKY_PORTALS, "sky-portals"},
         {PN_FEATURE_INSTANCES, "instances"},     {PN_FEATURE_WIDE_BVH, "wide-bvh"},
         {PN_FEATURE_LIGHT_GRID, "light-grid"},   {PN_FEATURE_ONE_TOP_LIGHT, "one-top-light"},
-        {PN_FEATURE_SHADOW_ROULETTE, "shadow-roulette"}, {PN_FEATURE_GLOSSY, "glossy"}};
+        {PN_FEATURE_SHADOW_ROULETTE, "shadow-roulette"}, {PN_FEATURE_GLOSSY, "glossy"},
+        {PN_FEATURE_CULL_BACKFACES, "cull-backfaces"}, {PN_FEATURE_FRAME_STATS, "frame-stats"}};
     std::string out;
     for (auto [bit, name] : kNames) {
         if (!(features & bit)) continue;

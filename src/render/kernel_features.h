@@ -18,7 +18,8 @@ namespace penumbra {
 // traced 1-3% fewer rays and were up to 2% slower, paying for the test on every light sample.
 constexpr std::size_t kShadowRouletteMinLights = 16;
 
-std::uint32_t kernelFeatures(const SceneArrays& arrays, Accel accel);
+// cullBackfaces adds PN_FEATURE_CULL_BACKFACES (--cull-backfaces), generic kernels included.
+std::uint32_t kernelFeatures(const SceneArrays& arrays, Accel accel, bool cullBackfaces = false);
 
 // Names of the features set in `features`, comma-separated ("spheres,textures"), for reports.
 std::string kernelFeatureNames(std::uint32_t features);

@@ -57,7 +57,8 @@ RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repe
     gpu::Buffer results(ctx, pixels * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                         gpu::MemoryKind::DeviceLocal);
     // The timed kernel and its counting twin, over the same points and results.
-    const std::uint32_t features = kernelFeatures(renderer.sceneArrays(), renderer.settings().accel);
+    const std::uint32_t features =
+        kernelFeatures(renderer.sceneArrays(), renderer.settings().accel, renderer.settings().cullBackfaces);
     auto makeBench = [&](const char* shader) {
         auto made = makeScenePipeline(ctx, shader, renderer.gpuScene(), renderer.frameUniforms(),
                                       {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2}, features);
@@ -124,6 +125,16 @@ RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repe
     const RenderStats before = renderer.stats();
     renderer.renderPasses(1, true);
     r.frameRays = (renderer.stats().closestRays - before.closestRays) + (renderer.stats().shadowRays - before.shadowRays);
+
+    // And one with the kernels that count tests, hits and blocked shadow rays (slower, untimed).
+    renderer.setFrameStatistics(true);
+    const RenderStats counted = renderer.stats();
+    renderer.renderPasses(1, true);
+    const RenderStats& after = renderer.stats();
+    r.frameStats = {after.closestRays - counted.closestRays, after.closestHits - counted.closestHits,
+                    after.shadowRays - counted.shadowRays, after.shadowBlocked - counted.shadowBlocked,
+                    after.primitivesTested - counted.primitivesTested};
+    renderer.setFrameStatistics(false);
     return r;
 }
 

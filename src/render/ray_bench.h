@@ -28,6 +28,11 @@ struct RayBenchResult {
     double primaryMs = 0, shadowMs = 0, diffuseMs = 0;  // medians over the repeats
     double frameMs = 0;                                 // median: 1 spp, settings' bounces, NEE
     std::uint64_t frameRays = 0;                        // closest + shadow rays in one frame
+    // One more frame, untimed, with the kernels counting (Renderer::setFrameStatistics): what
+    // the viewer's panel shows as frame statistics.
+    struct FrameStatistics {
+        std::uint64_t closestRays = 0, closestHits = 0, shadowRays = 0, shadowBlocked = 0, primitivesTested = 0;
+    } frameStats;
     TraversalWork primaryWork, shadowWork, diffuseWork;
     int repeats = 0;
 };

@@ -12,6 +12,8 @@ namespace penumbra {
 
 struct RayCounts {
     std::uint64_t closestRays = 0, shadowRays = 0, invalidSamples = 0;
+    // Counted only by kernels made with PN_FEATURE_FRAME_STATS (zero otherwise).
+    std::uint64_t primitivesTested = 0, closestHits = 0, shadowBlocked = 0;
 };
 
 inline constexpr VkDeviceSize kRayCounterBytes = sizeof(shader::RayCounters) * PN_RAY_COUNTER_LANES;
@@ -32,6 +34,9 @@ inline RayCounts sumRayCounters(const gpu::Buffer& counters) {
         sum.closestRays += lanes[i].closestRays;
         sum.shadowRays += lanes[i].shadowRays;
         sum.invalidSamples += lanes[i].invalidSamples;
+        sum.primitivesTested += lanes[i].primitivesTested;
+        sum.closestHits += lanes[i].closestHits;
+        sum.shadowBlocked += lanes[i].shadowBlocked;
     }
     return sum;
 }

@@ -19,6 +19,8 @@ struct RenderStats {
     std::uint64_t closestRays = 0;
     std::uint64_t shadowRays = 0;
     std::uint64_t invalidSamples = 0;   // NaN/inf path samples (dropped); should stay 0
+    // With setFrameStatistics(true) only: primitives tested, closest hits, blocked shadow rays.
+    std::uint64_t primitivesTested = 0, closestHits = 0, shadowBlocked = 0;
     double gpuMilliseconds = 0;         // GPU time of the trace passes, from timestamps
 };
 
@@ -60,9 +62,14 @@ public:
     const GpuScene& gpuScene() const { return *gpuScene_; }
     const RenderSettings& settings() const { return settings_; }
     const gpu::Buffer& frameUniforms() const { return frameUniforms_; }
-    std::uint32_t kernelFeatures() const { return features_; }  // what its kernels were specialised for
+    std::uint32_t kernelFeatures() const { return features_; }
+    // On: later passes also count primitive tests, closest hits and blocked shadow rays
+    // (PN_FEATURE_FRAME_STATS; remakes the trace kernels). Off by default: counting costs.
+    void setFrameStatistics(bool on);  // what its kernels were specialised for
 
 private:
+    void makeTracePass();  // with features_
+
     const gpu::Context& ctx_;
     RenderSettings settings_;
     SceneArrays arrays_;

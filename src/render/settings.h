@@ -45,6 +45,12 @@ struct RenderSettings {
     // which nothing is hit (0: no limit). The viewer's come from ViewSettings.
     float textureSaturation = 1.0f;
     float renderDistance = 0.0f;
+    // Camera rays jittered over their pixel (anti-aliasing); false: through its centre (render
+    // --no-jitter, the viewer's toggle), which shows aliased edges as the seed ray tracers do.
+    bool pixelJitter = true;
+    // Closest-hit walks skip triangles seen from behind (PN_FEATURE_CULL_BACKFACES; --cull-backfaces):
+    // not shadow rays, not transmissive materials (docs/RENDERING.md, "Back-face culling").
+    bool cullBackfaces = false;
     // Paths per trace dispatch (render/passes/trace_tiles.h); 0: the device's default.
     std::uint64_t pathsPerDispatch = 0;
 };

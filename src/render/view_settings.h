@@ -68,6 +68,10 @@ struct ViewSettings {
     // good or better at equal time, but the raw mean can be noisier where textures have detail
     // below a pixel (Freedoom E1M1: +6%), so it is off unless asked for.
     bool shareCameraRays = false;
+    bool antiAliasing = true;  // RenderSettings::pixelJitter
+    // Fast preview: while the view moves, frames show the primary hits' albedo times a cosine (the
+    // G-buffer and the display pass, no path tracing); the first still frame restarts the mean.
+    bool preview = false;
     // RenderSettings::shadowRouletteShare: scaled by the history's mean, so it acts once a pixel's
     // history holds PN_PIXEL_ESTIMATE_MIN_SAMPLES samples.
     float shadowRouletteShare = kDefaultShadowRouletteShare;

@@ -121,6 +121,7 @@ ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bo
                                  const ViewerBenchOptions& o) {
     if (o.frames < 1 || o.frames > 100000) throw UsageError("--frames must be between 1 and 100000");
     InteractiveRenderer renderer(ctx, scene, torchIsLastLight);
+    renderer.setCullBackfaces(o.cullBackfaces);
     renderer.resize(o.width, o.height);
     double scriptTime = 0;
     // Animated instances (the dungeon's phantom, glTF animations) move on the same clock, so the

@@ -51,6 +51,11 @@ void appendScene(Scene& into, Scene part, const Affine& transform) {
     // A sphere stays a sphere: its radius scales by the transform's mean scale factor (exact for
     // uniform scaling; non-uniform scaling of a sphere would make an ellipsoid).
     const float radiusScale = meanScale(transform);
+    const auto sphereBase = static_cast<std::uint32_t>(into.spheres.size());
+    for (SphereGroup& g : part.sphereGroups) {
+        for (std::uint32_t& i : g.spheres) i += sphereBase;
+        into.sphereGroups.push_back(std::move(g));
+    }
     for (Sphere& s : part.spheres) {
         s.center = transform.point(s.center);
         s.radius *= radiusScale;

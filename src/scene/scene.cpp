@@ -129,6 +129,14 @@ void validateSpheres(const Scene& scene) {
         if (s.material >= scene.materials.size())
             throw Error(where + ": material " + std::to_string(s.material) + " does not exist");
     }
+    std::vector<bool> grouped(scene.spheres.size(), false);
+    for (const SphereGroup& g : scene.sphereGroups)
+        for (std::uint32_t i : g.spheres) {
+            const std::string where = "sphere group '" + g.name + "' in scene '" + scene.name + "'";
+            if (i >= scene.spheres.size()) throw Error(where + ": sphere " + std::to_string(i) + " does not exist");
+            if (grouped[i]) throw Error(where + ": sphere " + std::to_string(i) + " is already in a group");
+            grouped[i] = true;
+        }
 }
 
 void validateSprites(const Scene& scene) {

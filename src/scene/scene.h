@@ -163,6 +163,13 @@ struct Sphere {
     std::uint32_t material = 0;
 };
 
+// Spheres that move and turn as one object in the viewer (the caffeine molecule's atoms):
+// indices into Scene::spheres (scene/sphere_groups.h).
+struct SphereGroup {
+    std::string name;
+    std::vector<std::uint32_t> spheres;
+};
+
 // An upright card that turns about the vertical through `position` to face each ray's origin (a
 // billboard: Doom's sprites), alpha tested with its material's base-colour texture. That texture
 // holds `rotations` views side by side (1, or 8 seen from 45-degree steps around the thing); the
@@ -248,6 +255,7 @@ struct Scene {
     // Instances whose transform follows animated nodes (glTF animations; scene/animation.h).
     std::vector<InstanceAnimation> instanceAnimations;
     std::vector<Sphere> spheres;
+    std::vector<SphereGroup> sphereGroups;  // a sphere is in at most one
     std::vector<Sprite> sprites;
     std::vector<Texture> textures;
     std::vector<Light> lights;

@@ -72,6 +72,14 @@ TEST_F(BenchCliTest, RayBenchRunsTheWideBvhAndInfoReportsIt) {
     EXPECT_GT(j.at("primary_ms").get<double>(), 0.0);
     EXPECT_GT(j.at("diffuse_ms").get<double>(), 0.0);
     EXPECT_TRUE(j.contains("primary_mrays_per_s") && j.contains("diffuse_mrays_per_s"));
+    // Frame statistics: one counted frame's rays, what they hit and what they tested.
+    const nlohmann::json& fs = j.at("frame_statistics");
+    EXPECT_GE(fs.at("closest_rays").get<long long>(), 32 * 20) << "a camera ray per pixel, at least";
+    EXPECT_GT(fs.at("closest_hits").get<long long>(), 0);
+    EXPECT_LE(fs.at("closest_hits").get<long long>(), fs.at("closest_rays").get<long long>());
+    EXPECT_LE(fs.at("shadow_blocked").get<long long>(), fs.at("shadow_rays").get<long long>());
+    EXPECT_GT(fs.at("primitives_tested").get<long long>(), 0);
+    EXPECT_FALSE(j.at("cull_backfaces").get<bool>());
     RunResult info = run("info cornell --accel wide");
     ASSERT_EQ(info.exitCode, 0) << info.err;
     EXPECT_NE(info.out.find("wide bvh (--accel wide): "), std::string::npos) << info.out;

@@ -17,8 +17,9 @@ struct GpuHits {
     std::vector<bool> occluded;
 };
 
+// features: the kernel's specialisation (PN_FEATURE_CULL_BACKFACES added to cull back faces).
 inline GpuHits traceOnGpu(const gpu::Context& ctx, const SceneArrays& arrays, const std::vector<shader::RayDesc>& rays,
-                          Accel accel) {
+                          Accel accel, std::uint32_t features = PN_FEATURE_ALL) {
     gpu::Commands commands(ctx);
     // Arrays built for --accel wide keep the binary nodes on the host; the other walks need them
     // uploaded (before the wide ones, which the wide walk then finds after them).
@@ -39,7 +40,8 @@ inline GpuHits traceOnGpu(const gpu::Context& ctx, const SceneArrays& arrays, co
     gpu::Buffer rayBuffer = gpu::uploadStorageBuffer<shader::RayDesc>(ctx, commands, rays);
     gpu::Buffer hitBuffer(ctx, rays.size() * 2 * sizeof(shader::HitRecord),
                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryKind::DeviceLocal);
-    auto pipeline = makeScenePipeline(ctx, "test_ray_query", scene, frameBuffer, {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2});
+    auto pipeline = makeScenePipeline(ctx, "test_ray_query", scene, frameBuffer, {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2},
+                                      features);
     pipeline->bind(PN_BINDING_SCRATCH, rayBuffer);
     pipeline->bind(PN_BINDING_SCRATCH2, hitBuffer);
     shader::PassPush push{0, 0, static_cast<std::uint32_t>(rays.size()), 0};

@@ -112,7 +112,7 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, lightRefCount), offsetof(FrameUniforms, lightPickUniform),
                        offsetof(FrameUniforms, topRoot), offsetof(FrameUniforms, lightGridOffset), offsetof(FrameUniforms, shadowRouletteShare),
                        offsetof(FrameUniforms, textureSaturation), offsetof(FrameUniforms, renderDistance),
-                       offsetof(FrameUniforms, pad4), offsetof(FrameUniforms, pad5), offsetof(FrameUniforms, pad6)});
+                       offsetof(FrameUniforms, flags), offsetof(FrameUniforms, pad5), offsetof(FrameUniforms, pad6)});
         expectMembers(spv, "Instance", {0, offsetof(Instance, worldToObject), offsetof(Instance, rootNode),
                                         offsetof(Instance, firstPrimitive), offsetof(Instance, primitiveCount),
                                         offsetof(Instance, id)});
@@ -132,7 +132,8 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                                         offsetof(PassPush, waveStride), offsetof(PassPush, waveBounce), 40, 44});
         expectMembers(spv, "WaveControl", {0, offsetof(WaveControl, shadowCount), offsetof(WaveControl, shadowLive),
                                            offsetof(WaveControl, extendGroups), offsetof(WaveControl, shadowGroups)});
-        expectMembers(spv, "RayCounters", {0, 4, offsetof(RayCounters, invalidSamples), 12});
+        expectMembers(spv, "RayCounters", {0, 4, offsetof(RayCounters, invalidSamples), offsetof(RayCounters, primitivesTested),
+                                             offsetof(RayCounters, closestHits), offsetof(RayCounters, shadowBlocked), 24});
         expectMembers(spv, "RayDesc", {0, offsetof(RayDesc, tMax), offsetof(RayDesc, direction), 28});
         expectMembers(spv, "HitRecord", {0, offsetof(HitRecord, triangle), 8, offsetof(HitRecord, v)});
         expectMembers(spv, "SurfacePoint", {0, offsetof(SurfacePoint, valid), offsetof(SurfacePoint, normal), 28});

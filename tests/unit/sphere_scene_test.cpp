@@ -10,6 +10,7 @@
 #include "scene/io/scene_json.h"
 #include "scene/merge.h"
 #include "scene/presets/presets.h"
+#include "scene/sphere_groups.h"
 
 namespace penumbra {
 namespace {
@@ -149,6 +150,63 @@ TEST(Caffeine, PresetHasTheMoleculesAtomsAtBondingDistances) {
     EXPECT_GT(s.camera.apertureRadius, 0.0f);
     // The camera is focused on the molecule: the focus distance is the distance to its centre.
     EXPECT_NEAR(s.camera.focusDistance, length(s.camera.lookAt - s.camera.position), 1e-5f);
+}
+
+// The molecule turns as one: every atom's centre rotates rigidly about the group's pivot (the
+// mean of the centres), which stays put; distances between atoms, radii and the lamp (not in the
+// group) are unchanged; and a move shifts every atom by the same offset.
+TEST(Caffeine, TheMoleculeTurnsAndMovesAsOneObject) {
+    Scene s = makePreset("caffeine");
+    ASSERT_EQ(s.sphereGroups.size(), 1u);
+    ASSERT_EQ(s.sphereGroups[0].spheres.size(), 24u);
+    const std::uint32_t lamp = static_cast<std::uint32_t>(s.spheres.size() - 1);
+    EXPECT_FALSE(sphereGroupOf(s, lamp).has_value());
+    for (std::uint32_t i = 0; i < 24; ++i) EXPECT_EQ(sphereGroupOf(s, i), std::optional<std::uint32_t>(0));
+
+    const Scene before = s;
+    const Vec3 pivot = sphereGroupPivot(s, 0);
+    const Affine turn = Affine::eulerDegrees({20, 75, -10});
+    turnSphereGroup(s, 0, turn);
+    EXPECT_LT(length(sphereGroupPivot(s, 0) - pivot), 1e-5f);
+    for (std::uint32_t i = 0; i < 24; ++i) {
+        const Vec3 expected = pivot + turn.vector(before.spheres[i].center - pivot);
+        EXPECT_LT(length(s.spheres[i].center - expected), 1e-5f) << "atom " << i;
+        EXPECT_EQ(s.spheres[i].radius, before.spheres[i].radius);
+        for (std::uint32_t j = 0; j < i; ++j)
+            EXPECT_NEAR(length(s.spheres[i].center - s.spheres[j].center),
+                        length(before.spheres[i].center - before.spheres[j].center), 1e-5f);
+    }
+    EXPECT_EQ(s.spheres[lamp].center, before.spheres[lamp].center);
+    // Some atom really moved (a turn that did nothing would pass the checks above).
+    float moved = 0;
+    for (std::uint32_t i = 0; i < 24; ++i) moved = std::max(moved, length(s.spheres[i].center - before.spheres[i].center));
+    EXPECT_GT(moved, 0.1f);
+
+    const Scene turned = s;
+    moveSphereGroup(s, 0, {0.5f, -0.25f, 1.0f});
+    for (std::uint32_t i = 0; i < 24; ++i)
+        EXPECT_LT(length(s.spheres[i].center - (turned.spheres[i].center + Vec3{0.5f, -0.25f, 1.0f})), 1e-6f);
+    EXPECT_EQ(s.spheres[lamp].center, before.spheres[lamp].center);
+}
+
+TEST(SphereGroups, ValidationRefusesMissingAndSharedSpheres) {
+    Scene s = makePreset("caffeine");
+    s.sphereGroups.push_back({"bad", {999}});
+    EXPECT_THROW(s.validate(), Error);
+    s.sphereGroups.back().spheres = {0};  // already in the molecule
+    EXPECT_THROW(s.validate(), Error);
+    s.sphereGroups.back().spheres = {static_cast<std::uint32_t>(s.spheres.size() - 1)};  // the lamp: free
+    EXPECT_NO_THROW(s.validate());
+}
+
+// appendScene renumbers a part's groups after the spheres already there.
+TEST(SphereGroups, AppendingAScenePlacesItsGroupsAfterTheSpheresBefore) {
+    Scene into = makePreset("caffeine");
+    const std::size_t first = into.spheres.size();
+    appendScene(into, makePreset("caffeine"), Affine::translation({3, 0, 0}));
+    ASSERT_EQ(into.sphereGroups.size(), 2u);
+    EXPECT_EQ(into.sphereGroups[1].spheres.front(), first);
+    EXPECT_NO_THROW(into.validate());
 }
 
 }  // namespace

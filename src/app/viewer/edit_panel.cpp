@@ -6,6 +6,8 @@
 #include <array>
 #include <cstring>
 
+#include "scene/sphere_groups.h"
+
 namespace penumbra::viewer {
 namespace {
 
@@ -40,8 +42,41 @@ void selection(EditState& state, EditRequests& requests) {
     m.emission = Vec3{std::max(m.emission.x, 0.0f), std::max(m.emission.y, 0.0f), std::max(m.emission.z, 0.0f)};
     requests.materialChanged = changed;
     // Moving rebuilds the whole BVH, so it happens when the drag ends, not on every step.
-    ImGui::DragFloat3("position", &state.position.x, 0.01f);
+    ImGui::DragFloat3(state.group == kNoObject ? "position" : "position (pivot)", &state.position.x, 0.01f);
     if (ImGui::IsItemDeactivatedAfterEdit()) requests.moveObject = true;
+    if (state.group != kNoObject) {
+        ImGui::DragFloat3("turn by (deg, x y z)", &state.turnDegrees.x, 0.5f, -180.0f, 180.0f, "%.1f");
+        if (ImGui::IsItemDeactivatedAfterEdit()) requests.turnGroup = true;
+        ImGui::TextDisabled("drag an atom to move the group; Shift+drag turns it");
+    }
+}
+
+// Sliders for one light at a time. Intensity and colour change the light tables (lights are
+// weighed by power) and position and radius the BVH, so an edit applies when the slider is let go.
+void lights(EditState& state, EditRequests& requests) {
+    if (state.lights.empty() || !ImGui::CollapsingHeader("Lights")) return;
+    std::vector<const char*> names;
+    for (const std::string& n : state.lightNames) names.push_back(n.c_str());
+    if (ImGui::Combo("light", &state.lightChoice, names.data(), int(names.size()))) requests.lightChosen = true;
+    LightParams& p = state.light;
+    bool edited = false;
+    auto released = [&] { edited |= ImGui::IsItemDeactivatedAfterEdit(); };
+    if (p.hasPosition) {
+        ImGui::DragFloat3("position (m)", &p.position.x, 0.01f);
+        released();
+    }
+    ImGui::ColorEdit3("light colour", &p.color.x);
+    released();
+    ImGui::SliderFloat("intensity", &p.intensity, 0.0f, 1000.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    released();
+    ImGui::SliderFloat(p.hasPosition ? "radius (m, 0: a point)" : "angular radius (rad)", &p.radius, 0.0f,
+                       p.hasPosition ? 2.0f : 0.785f, "%.4f", ImGuiSliderFlags_Logarithmic);
+    released();
+    if (p.isSpot) {
+        ImGui::SliderFloat("spot angle (deg)", &p.spotDegrees, 0.1f, 90.0f, "%.1f");
+        released();
+    }
+    requests.lightChanged = edited;
 }
 
 void openScene(EditState& state, EditRequests& requests) {
@@ -59,12 +94,40 @@ void openScene(EditState& state, EditRequests& requests) {
     }
 }
 
+void addModel(EditState& state, EditRequests& requests) {
+    if (!ImGui::CollapsingHeader("Add model")) return;
+    std::array<char, 1024> buffer{};
+    std::strncpy(buffer.data(), state.addPath.c_str(), buffer.size() - 1);
+    const bool entered =
+        ImGui::InputText("model path", buffer.data(), buffer.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    state.addPath = buffer.data();
+    ImGui::SameLine();
+    if (ImGui::Button("Add (M)") || entered) requests.addModel = true;
+    ImGui::TextDisabled("placed in front of the camera as an instance: drag it, Shift+drag turns it");
+    if (!state.addMessage.empty()) ImGui::TextWrapped("%s", state.addMessage.c_str());
+}
+
 }  // namespace
 
 void drawEditSections(ViewSettings& settings, EditState& state, EditRequests& requests) {
     depthOfField(settings, state);
     selection(state, requests);
+    lights(state, requests);
+    addModel(state, requests);
     openScene(state, requests);
+}
+
+void loadLights(const Scene& scene, EditState& state) {
+    state.lights = editableLights(scene);
+    state.lightNames.clear();
+    for (const EditableLight& l : state.lights) state.lightNames.push_back(lightName(scene, l));
+    state.lightChoice = 0;
+    if (!state.lights.empty()) state.light = lightParams(scene, state.lights[0]);
+}
+
+Vec3 selectionCentre(const Scene& scene, const EditState& state) {
+    if (state.group < scene.sphereGroups.size()) return sphereGroupPivot(scene, state.group);
+    return objectCentre(scene, state.object);
 }
 
 Vec3 objectCentre(const Scene& scene, std::uint32_t object) {

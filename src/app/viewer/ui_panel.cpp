@@ -157,11 +157,31 @@ void display(ViewSettings& s, const PanelState& state, const ViewerStats& stats)
     }
 }
 
-void statistics(const PanelState& state, const ViewerStats& stats) {
+// The last frame's rays, and with counting on what they cost and found ("Casually Pathtracing with
+// WebGPU" shows triangles hit and shadow rays that hit; render/ray_counters.h).
+void rayStatistics(PanelState& state, const ViewerStats& stats) {
+    ImGui::Checkbox("count tests and hits (slower kernels)", &state.frameStatistics);
+    const auto n = [](std::uint64_t v) { return static_cast<unsigned long long>(v); };
+    if (!stats.frameStatistics) {
+        ImGui::Text("rays: %llu closest-hit, %llu shadow", n(stats.closestRays), n(stats.shadowRays));
+        return;
+    }
+    const double closest = double(std::max<std::uint64_t>(stats.closestRays, 1));
+    const double shadow = double(std::max<std::uint64_t>(stats.shadowRays, 1));
+    ImGui::Text("closest-hit rays %llu, %llu hit (%.1f%%)", n(stats.closestRays), n(stats.closestHits),
+                100.0 * double(stats.closestHits) / closest);
+    ImGui::Text("shadow rays %llu, %llu blocked (%.1f%%)", n(stats.shadowRays), n(stats.shadowBlocked),
+                100.0 * double(stats.shadowBlocked) / shadow);
+    ImGui::Text("primitives tested %llu (%.1f per ray)", n(stats.primitivesTested),
+                double(stats.primitivesTested) / double(std::max<std::uint64_t>(stats.closestRays + stats.shadowRays, 1)));
+}
+
+void statistics(PanelState& state, const ViewerStats& stats) {
     if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::Text("%.1f fps, render %ux%u", state.fps, state.renderWidth, state.renderHeight);
     ImGui::Text("accumulated: %u spp", stats.samplesPerPixel);
     ImGui::Text("%.2f Mrays/s", stats.raysPerSecond * 1e-6);
+    rayStatistics(state, stats);
     for (std::uint32_t p = 0; p < std::uint32_t(ViewerPass::Count); ++p)
         if (stats.passMilliseconds[p] != 0)
             ImGui::Text("  %-9s %7.2f ms", viewerPassName(ViewerPass(p)), stats.passMilliseconds[p]);
@@ -196,6 +216,8 @@ void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& s
         ImGui::SliderFloat("render distance (0: all)", &s.renderDistance, kRenderDistanceRange.min, kRenderDistanceRange.max,
                            "%.0f m");
         ImGui::Checkbox("one camera ray per pixel per frame", &s.shareCameraRays);
+        ImGui::Checkbox("anti-aliasing (jitter camera rays over the pixel)", &s.antiAliasing);
+        ImGui::Checkbox("fast preview while moving (V)", &s.preview);
         ImGui::SliderFloat("shadow-ray roulette below", &s.shadowRouletteShare, 0.0f, 0.5f, "%.2f of the pixel");
         ImGui::Checkbox("temporal accumulation", &s.temporal);
         ImGui::SliderFloat("history clamp (0: off)", &s.clampSigma, 0.0f, 4.0f, "%.2f sigma");

@@ -9,12 +9,15 @@
 #include <cstdio>
 #include <ctime>
 #include <memory>
+#include <limits>
 #include <optional>
+#include <utility>
 
 #include "app/scene_opener.h"
 #include "interact/controls.h"
 #include "app/viewer/edit_panel.h"
 #include "interact/navigation.h"
+#include "interact/group_drag.h"
 #include "interact/object_drag.h"
 #include "interact/play_step.h"
 #include "app/viewer/presenter.h"
@@ -25,7 +28,9 @@
 #include "core/error.h"
 #include "render/interactive_renderer.h"
 #include "render/scene_objects.h"
+#include "scene/add_model.h"
 #include "scene/animation.h"
+#include "scene/sphere_groups.h"
 
 namespace penumbra::viewer {
 namespace {
@@ -40,6 +45,7 @@ struct PointerState {
     double leftDownX = 0, leftDownY = 0;
     // A left press on the selected instance grabs it: it follows the cursor until the release.
     std::optional<ObjectDrag> drag;
+    std::optional<GroupDrag> groupDrag;  // the same for a selected sphere group
 };
 
 struct Click {
@@ -53,11 +59,17 @@ struct LeftButton {
 
 void select(const Scene& scene, std::uint32_t object, EditState& edit) {
     edit.object = object;
+    edit.group = kNoObject;
     if (object == kNoObject) return;
     edit.objectName = objectName(scene, object);
     edit.materialIndex = objectMaterial(scene, object);
     edit.material = scene.materials[edit.materialIndex];
-    edit.position = objectCentre(scene, object);
+    const bool sphere = object >= scene.meshes.size();
+    const std::optional<std::uint32_t> group = sphere ? sphereGroupOf(scene, object - scene.meshes.size()) : std::nullopt;
+    edit.group = group ? *group : kNoObject;
+    if (group) edit.objectName = sphereGroupName(scene, *group) + ", " + edit.objectName;
+    edit.turnDegrees = Vec3{0};
+    edit.position = selectionCentre(scene, edit);
 }
 
 // Applies the panel's edits to the scene and the renderer. Failures go to the panel as one line.
@@ -106,6 +118,7 @@ void setCaptured(GLFWwindow* w, PointerState& pointer, bool on) {
     glfwGetCursorPos(w, &pointer.lastX, &pointer.lastY);  // no jump on the next frame
     pointer.dragging = pointer.leftDown = false;
     pointer.drag.reset();
+    pointer.groupDrag.reset();
 }
 
 // Pointer motion that looks (captured, or dragging with the right button), left presses and clicks.
@@ -128,8 +141,9 @@ LeftButton trackPointer(GLFWwindow* w, PointerState& p, InputState& input, bool 
             left.press = Click{mx, my};
         } else if (!leftHeld && p.leftDown) {
             p.leftDown = false;
-            const bool dragged = p.drag.has_value();
+            const bool dragged = p.drag.has_value() || p.groupDrag.has_value();
             p.drag.reset();
+            p.groupDrag.reset();
             // A press and release in place is a click, unless it grabbed the selection (walking,
             // a click captures the mouse, which would end the user's handling of the object).
             if (std::abs(mx - p.leftDownX) + std::abs(my - p.leftDownY) < 4.0 && !dragged) left.click = Click{mx, my};
@@ -143,7 +157,8 @@ LeftButton trackPointer(GLFWwindow* w, PointerState& p, InputState& input, bool 
 // A left press on the selected instance grabs it (the CPU pick under the cursor, as a click's):
 // to move it, or with Shift held to turn it.
 void grabSelection(GLFWwindow* w, const Click& press, PointerState& pointer, const Scene& scene,
-                   const InteractiveRenderer& renderer, const Camera& camera, std::uint32_t selectedInstance) {
+                   const InteractiveRenderer& renderer, const Camera& camera, std::uint32_t selectedInstance,
+                   std::uint32_t selectedGroup) {
     int ww = 0, wh = 0;
     glfwGetWindowSize(w, &ww, &wh);
     if (ww <= 0 || wh <= 0) return;
@@ -151,6 +166,20 @@ void grabSelection(GLFWwindow* w, const Click& press, PointerState& pointer, con
         glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
     pointer.drag = grabInstance(scene, renderer.sceneArrays(), camera, std::uint32_t(ww), std::uint32_t(wh),
                                 float(press.x), float(press.y), selectedInstance, shift);
+    if (!pointer.drag && selectedGroup != kNoObject)
+        pointer.groupDrag = grabSphereGroup(scene, renderer.sceneArrays(), camera, std::uint32_t(ww), std::uint32_t(wh),
+                                            float(press.x), float(press.y), selectedGroup, shift);
+}
+
+// Moves (or turns) a grabbed sphere group as the cursor moved; true when it moved. Its spheres are
+// world data: the caller rebuilds the scene.
+bool dragGroup(GLFWwindow* w, PointerState& pointer, Scene& scene, const Camera& camera) {
+    if (!pointer.groupDrag) return false;
+    int ww = 0, wh = 0;
+    glfwGetWindowSize(w, &ww, &wh);
+    if (ww <= 0 || wh <= 0) return false;
+    return followCursor(*pointer.groupDrag, scene, camera, std::uint32_t(ww), std::uint32_t(wh), float(pointer.lastX),
+                        float(pointer.lastY));
 }
 
 // Moves (or turns) a grabbed instance as the cursor moved; true when it moved.
@@ -235,6 +264,7 @@ struct LoopState {
     double fpsSmoothed = 0;
     double animationClock = 0;  // seconds played: the moment animated textures show
     bool levelEndedByScript = false;  // --script ended a Doom level: the viewer exits 0
+    bool addModelKey = false;   // M was pressed: add the model named in the panel
 
     LoopState(const Scene& scene, const ViewerOptions& options, const InteractiveRenderer& renderer)
         : nav(scene, options.fly) {
@@ -246,6 +276,7 @@ struct LoopState {
         panel.bvhNodes = renderer.sceneArrays().nodes.size();
         panel.bvhDepth = bvh::treeDepth(renderer.sceneArrays().nodes);
         panel.hasTorch = renderer.hasTorch();
+        loadLights(scene, edit);
     }
     Camera camera() const { return nav.camera(); }
 };
@@ -257,12 +288,16 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     const bool advancing = loop.panel.playing && !automationDone;
     if (loop.script && advancing) loop.script->playFrame(loop.input, step);
     handlePresses(loop.input, w, loop.pointer, loop.nav, scene, loop.panel);
+    if (loop.input.previewToggled) settings.preview = !settings.preview;
+    if (loop.input.addModel) loop.addModelKey = true;
     if (loop.input.nextInstance && !scene.instances.empty()) {
         loop.selectedInstance = loop.selectedInstance + 1 < scene.instances.size() ? loop.selectedInstance + 1 : 0;
         loop.panel.message = instanceName(scene, loop.selectedInstance) + kInstanceControls;
     }
     const LeftButton left = trackPointer(w, loop.pointer, loop.input, ui.wantsMouse());
-    if (left.press) grabSelection(w, *left.press, loop.pointer, scene, renderer, loop.camera(), loop.selectedInstance);
+    if (left.press)
+        grabSelection(w, *left.press, loop.pointer, scene, renderer, loop.camera(), loop.selectedInstance,
+                      loop.edit.group);
     if (left.click)
         handleClick(w, *left.click, loop.pointer, scene, renderer, loop.nav, loop.camera(), settings, loop.edit,
                     loop.selectedInstance, loop.panel);
@@ -288,12 +323,19 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     }
     // A grabbed instance follows the cursor, after the camera and the animations have moved.
     if (!automationDone && dragSelection(w, loop.pointer, scene, loop.camera())) instancesMoved = true;
+    if (!automationDone && dragGroup(w, loop.pointer, scene, loop.camera())) {
+        renderer.rebuildScene(scene, true);
+        loop.edit.position = selectionCentre(scene, loop.edit);
+        loop.shown.valid = false;
+    }
     if (instancesMoved) {
         renderer.setInstanceTransforms(scene);
         loop.shown.valid = false;
     }
     endInputFrame(loop.input);
 }
+
+void addModel(LoopState& loop, Scene& scene, InteractiveRenderer& renderer);
 
 // The panel, and the edits it asks for.
 void drawUi(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, UiLayer& ui, ViewSettings& settings,
@@ -308,12 +350,54 @@ void drawUi(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, UiLaye
     panel.fps = loop.fpsSmoothed;
     EditRequests requests;
     if (panel.visible) ui.drawPanel(settings, panel, renderer.stats(), loop.edit, requests);
+    requests.addModel = requests.addModel || std::exchange(loop.addModelKey, false);
     applyEdits(scene, renderer, settings, loop.edit, requests, loop.nav, panel);
+    if (requests.addModel) addModel(loop, scene, renderer);
+    renderer.setFrameStatistics(panel.frameStatistics);
     if (requests.openScene) {  // nothing selected in the new scene
         loop.selectedInstance = kNoObject;
         loop.pointer.drag.reset();
+        loop.pointer.groupDrag.reset();
     }
-    if (requests.materialChanged || requests.moveObject || requests.openScene) loop.shown.valid = false;
+    if (requests.materialChanged || requests.moveObject || requests.turnGroup || requests.lightChanged ||
+        requests.openScene)
+        loop.shown.valid = false;
+}
+
+// Adds the model named in the panel in front of the camera as a new instance, and selects it so
+// that it can be dragged and turned at once. A failure leaves the scene as it was.
+void addModel(LoopState& loop, Scene& scene, InteractiveRenderer& renderer) {
+    EditState& edit = loop.edit;
+    if (edit.addPath.empty()) {
+        edit.addMessage = "type a model's path (or a built-in scene's name) first";
+        return;
+    }
+    app::OpenedScene opened = app::openSceneFile(edit.addPath);
+    if (!opened.scene) {
+        edit.addMessage = opened.error;
+        std::fprintf(stderr, "penumbra: error: %s\n", opened.error.c_str());
+        return;
+    }
+    try {
+        Scene next = scene;
+        // Half the depth of what the middle of the view shows: a model too large for that room
+        // is scaled down to fit in front of it.
+        const Camera camera = loop.camera();
+        const Pick ahead = pickPixel(renderer.sceneArrays(), camera, 64, 64, 32.0f, 32.0f);
+        const float room = ahead.depth > 0 ? 0.5f * ahead.depth : std::numeric_limits<float>::infinity();
+        const AddedModel added = addModelInFront(next, std::move(*opened.scene), camera, room);
+        renderer.rebuildScene(next, true);
+        scene = std::move(next);
+        loop.selectedInstance = added.instance;
+        loop.panel.message = instanceName(scene, added.instance) + kInstanceControls;
+        edit.addMessage = "added " + instanceName(scene, added.instance);
+        loop.panel.bvhNodes = renderer.sceneArrays().nodes.size();
+        loop.panel.bvhDepth = bvh::treeDepth(renderer.sceneArrays().nodes);
+        loop.shown.valid = false;
+    } catch (const Error& e) {
+        edit.addMessage = e.what();
+        std::fprintf(stderr, "penumbra: error: %s\n", e.what());
+    }
 }
 
 // Once the previous frame has finished, its timings and its display buffer are readable: a
@@ -383,6 +467,8 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     settings.focusDistance = scene.camera.focusDistance;
     settings.samplesPerFrame = options.samplesPerFrame;
     settings.denoise = options.denoise;
+    settings.antiAliasing = options.antiAliasing;
+    settings.preview = options.preview;
     settings.debug = options.debug;
     prepareSceneSettings(scene, settings);
 
@@ -396,6 +482,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     gpu::Context& ctx = *result.context;
 
     InteractiveRenderer renderer(ctx, scene, true);
+    renderer.setCullBackfaces(options.cullBackfaces);
     Presenter presenter(ctx, window, options.vsync);
     UiLayer ui(ctx, window.get(), presenter);
     LoopState loop(scene, options, renderer);
@@ -444,7 +531,7 @@ namespace {
 
 void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& settings, EditState& edit,
                 const EditRequests& requests, Navigation& nav, PanelState& panel) {
-    if (requests.clearSelection) edit.object = kNoObject;
+    if (requests.clearSelection) edit.object = edit.group = kNoObject;
     try {
         if (requests.materialChanged && edit.materialIndex < scene.materials.size()) {
             Material& target = scene.materials[edit.materialIndex];
@@ -456,7 +543,22 @@ void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& setti
             if (emissionChanged) renderer.rebuildScene(scene, true);
             else renderer.setMaterial(edit.materialIndex, target);
         }
-        if (requests.moveObject && isObject(scene, edit.object)) {
+        const bool lightValid = edit.lightChoice >= 0 && std::size_t(edit.lightChoice) < edit.lights.size();
+        if (requests.lightChosen && lightValid) edit.light = lightParams(scene, edit.lights[edit.lightChoice]);
+        if (requests.lightChanged && lightValid) {
+            setLightParams(scene, edit.lights[edit.lightChoice], edit.light);
+            edit.light = lightParams(scene, edit.lights[edit.lightChoice]);  // as clamped
+            renderer.rebuildScene(scene, true);
+        }
+        if (requests.turnGroup && edit.group < scene.sphereGroups.size()) {
+            turnSphereGroup(scene, edit.group, Affine::eulerDegrees(edit.turnDegrees));
+            edit.turnDegrees = Vec3{0};
+            renderer.rebuildScene(scene, true);
+        }
+        if (requests.moveObject && edit.group < scene.sphereGroups.size()) {
+            moveSphereGroup(scene, edit.group, edit.position - sphereGroupPivot(scene, edit.group));
+            renderer.rebuildScene(scene, true);
+        } else if (requests.moveObject && isObject(scene, edit.object)) {
             translateObject(scene, edit.object, edit.position - objectCentre(scene, edit.object));
             renderer.rebuildScene(scene, true);
             panel.bvhNodes = renderer.sceneArrays().nodes.size();
@@ -478,7 +580,8 @@ void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& setti
             settings.apertureRadius = scene.camera.apertureRadius;
             settings.focusDistance = scene.camera.focusDistance;
             nav = Navigation(scene, false);  // the new scene's own movement mode
-            edit.object = kNoObject;
+            edit.object = edit.group = kNoObject;
+            loadLights(scene, edit);
             edit.openMessage.clear();
             panel.sceneName = scene.name;
             panel.triangles = scene.triangleCount();

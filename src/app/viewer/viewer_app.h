@@ -21,6 +21,9 @@ struct ViewerOptions {
     std::string screenshot;
     std::uint32_t samplesPerFrame = 1;
     bool denoise = false;
+    bool antiAliasing = true;  // view --no-jitter turns it off
+    bool cullBackfaces = false;  // view --cull-backfaces
+    bool preview = false;        // view --preview: the fast preview while moving (V toggles it)
     DebugView debug = DebugView::None;
     // Scripted input (--script): played from the first frame, which then starts playing.
     std::optional<std::vector<ScriptEvent>> script;

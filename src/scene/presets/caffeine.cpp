@@ -68,13 +68,18 @@ Scene makeCaffeine() {
     Vec3 mean{0};
     for (const Atom& a : kCaffeine) mean += Vec3{a.x, a.y, a.z};
     mean = mean / float(std::size(kCaffeine));
+    SphereGroup molecule{"caffeine", {}};
     for (const Atom& a : kCaffeine) {
+        molecule.spheres.push_back(static_cast<std::uint32_t>(scene.spheres.size()));
         Vec3 p = Vec3{a.x, a.y, a.z} - mean;
         p = Vec3{p.x, c * p.y - s * p.z, s * p.y + c * p.z};
         const std::uint32_t material = a.element == 'H' ? hydrogen : a.element == 'N' ? nitrogen : a.element == 'O' ? oxygen : carbon;
         scene.spheres.push_back({kMoleculeCentre + p * kMetresPerAngstrom,
                                  vanDerWaalsRadius(a.element) * kRadiusScale * kMetresPerAngstrom, material});
     }
+
+    // The viewer moves and turns the atoms as one object (scene/sphere_groups.h).
+    scene.sphereGroups.push_back(std::move(molecule));
 
     Mesh surface;
     surface.name = "coffee";

@@ -17,7 +17,8 @@ Scene makeCornellBox();
 Scene makeFurnace(float albedo, Vec3 emission);
 
 // The caffeine molecule's 24 atoms as CPK-coloured spheres over a coffee-brown plane, one sphere
-// light, and a thin-lens camera focused on the molecule.
+// light, and a thin-lens camera focused on the molecule. The atoms form one sphere group, which
+// the viewer moves and turns as one object.
 Scene makeCaffeine();
 
 // A room with mirror walls, a glass sphere, a semi-specular floor, a ceiling light and two soft
@@ -34,6 +35,12 @@ Scene makeBvhLesson();
 // A 16 x 16 tile dungeon lit by wall torches and the player's torch, with a phantom patrolling a
 // corridor (an instance with a scene motion) and a tile grid for the viewer's grid movement.
 Scene makeDungeon();
+
+// Suzanne (Debian assimp-testmodels, read at run time) in the Cornell room without its blocks, as
+// "Casually Pathtracing with WebGPU" renders it. Throws Error naming the package when the model
+// is not installed.
+Scene makeSuzanne();
+const char* suzanneModelPath();
 
 std::vector<std::string> presetNames();
 // The names, comma-separated, for messages and help.

@@ -15,7 +15,7 @@ Scene makeDefaultFurnace() { return makeFurnace(0.5f, Vec3{1.0f}); }
 constexpr Preset kPresets[] = {
     {"cornell", makeCornellBox}, {"furnace", makeDefaultFurnace},      {"caffeine", makeCaffeine},
     {"bunny-room", makeBunnyRoom}, {"materials", makeMaterialSpheres}, {"bvh-lesson", makeBvhLesson},
-    {"dungeon", makeDungeon},
+    {"dungeon", makeDungeon}, {"suzanne", makeSuzanne},
 };
 
 }  // namespace
