@@ -1,7 +1,8 @@
 #version 460
 // The G-buffer: what the pixel-centre primary ray hits (normal, linear depth, textured albedo,
-// surface id) and the motion vector to where that point was in the previous frame. A pass of its
-// own, so the path tracer stays untouched and the denoiser's guides are noise-free. Final frames
+// surface id, whether the denoiser leaves it alone) and the motion vector to where that point was
+// in the previous frame. A pass of its own, so the path tracer stays untouched and the denoiser's
+// guides are noise-free. Final frames
 // also trace the 16 cells of a 4x4 grid in each pixel (PN_GBUFFER_SUBPIXEL) to average the albedo
 // over the pixel as the path tracer's jittered samples average the radiance.
 #extension GL_GOOGLE_include_directive : require
@@ -46,7 +47,7 @@ void main() {
     Hit hit = traceClosest(frame.cameraPosition, direction, PN_INFINITY);
     GBufferTexel g;
     g.prevDepth = 0.0;
-    g.pad1 = 0.0;
+    g.flags = 0u;
     if (hit.triangle == PN_NO_HIT) {
         g.normal = vec3(0.0);
         g.depth = 0.0;
@@ -61,6 +62,9 @@ void main() {
         g.depth = hit.t * dot(direction, frame.cameraForward);
         g.albedo = materialBaseColor(m, s.uv).rgb;
         g.surfaceId = s.material + 1u;
+        bool emitter = (m.flags & PN_MATERIAL_EMISSIVE) != 0u;
+        bool sprite = PN_HAS(PN_FEATURE_SPRITES) && (triVerts[hit.triangle].flags & PN_TRI_SPRITE) != 0u;
+        if (emitter || sprite) g.flags |= PN_GBUFFER_UNFILTERED;
         vec3 previous = previousPosition(hit.instance, s.position);
         g.motion = projectPointPrev(previous) - centre;
         g.prevDepth = dot(previous - viewer.prevCameraPosition, viewer.prevCameraForward);

@@ -40,6 +40,10 @@ struct ViewerBenchOptions {
     // Instead of budgetMs: exactly this many frames per trial, so that builds which differ only
     // after the trace (the denoiser) filter the same images.
     int budgetFrameCount = 0;
+    // The camera of the error's frames: still (the default), or moving along a scripted motion
+    // that arrives at the scene's camera on the last frame (frame k of n at time (k - n + 1) *
+    // frameSeconds), so the same reference judges a frame seen in motion.
+    CameraMotion errorMotion = CameraMotion::Static;
 };
 
 struct ViewerBenchResult {
