@@ -17,6 +17,7 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 #include "lib/offset.glsl"
 #include "lib/bvh.glsl"
 #include "lib/surface.glsl"
+#include "lib/material.glsl"
 
 layout(std430, set = 0, binding = PN_BINDING_GBUFFER) writeonly buffer GBufferOut { GBufferTexel gbuffer[]; };
 // The instances as the previous frame placed them (the current ones where nothing moved), so a
@@ -35,6 +36,17 @@ vec3 previousPosition(uint instance, vec3 p) {
     vec4 local = vec4(toInstancePoint(instance, p), 1.0);
     return vec3(dot(before.objectToWorld[0], local), dot(before.objectToWorld[1], local),
                 dot(before.objectToWorld[2], local));
+}
+
+// Does the camera see this surface emit (light_sampler.glsl's emittedRadiance for a camera ray):
+// a lamp or a glowing texel, or a window onto the sky; not Doom's sector light, whose floors and
+// ceilings emit unseen (PN_MATERIAL_HIDDEN_EMISSION) and are lit surfaces like any other.
+bool seenEmitting(Material m, Surface s) {
+    if ((m.flags & PN_MATERIAL_EMISSIVE) == 0u || !s.frontFace) return false;
+    if (PN_HAS(PN_FEATURE_SKY_PORTALS) && (m.flags & PN_MATERIAL_SKY_PORTAL) != 0u) return true;
+    if ((m.flags & PN_MATERIAL_HIDDEN_EMISSION) != 0u) return false;
+    vec3 e = materialEmission(m, s.uv);
+    return max(e.r, max(e.g, e.b)) > 0.0;
 }
 
 void main() {
@@ -62,9 +74,8 @@ void main() {
         g.depth = hit.t * dot(direction, frame.cameraForward);
         g.albedo = materialBaseColor(m, s.uv).rgb;
         g.surfaceId = s.material + 1u;
-        bool emitter = (m.flags & PN_MATERIAL_EMISSIVE) != 0u;
-        bool sprite = PN_HAS(PN_FEATURE_SPRITES) && (triVerts[hit.triangle].flags & PN_TRI_SPRITE) != 0u;
-        if (emitter || sprite) g.flags |= PN_GBUFFER_UNFILTERED;
+        if (seenEmitting(m, s) || (PN_HAS(PN_FEATURE_SPRITES) && (triVerts[hit.triangle].flags & PN_TRI_SPRITE) != 0u))
+            g.flags |= PN_GBUFFER_UNFILTERED;
         vec3 previous = previousPosition(hit.instance, s.position);
         g.motion = projectPointPrev(previous) - centre;
         g.prevDepth = dot(previous - viewer.prevCameraPosition, viewer.prevCameraForward);

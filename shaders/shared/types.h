@@ -528,8 +528,9 @@ PN_STRUCT(FrameUniforms) {
 #define PN_TRACE_PIXEL_ESTIMATES 16u
 #define PN_GBUFFER_SUBPIXEL 1u    // PassPush.mode bit of gbuffer.comp: trace cell passIndex of a 4x4 grid in the pixel
 // GBufferTexel.flags bit: the pixel bypasses the a-trous filter (its raw mean is shown) and is no
-// tap for its neighbours: an emitter (its light is not illumination times albedo, and blurring it
-// spreads its glow), a sprite (a card whose texture's cut-out edges no normal or depth guide sees).
+// tap for its neighbours: a surface the camera sees emit (its light is not illumination times
+// albedo, and blurring it spreads its glow; Doom's unseen sector light does not count), a window
+// onto the sky, a sprite (a card whose texture's cut-out edges no normal or depth guide sees).
 // The sky bypasses too, as any pixel whose primary ray missed.
 #define PN_GBUFFER_UNFILTERED 1u
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
