@@ -4,7 +4,10 @@
 // across luminance differences large compared with the local noise (the variance channel, which
 // each pass filters with the squared weights). It runs on illumination (albedo divided out by
 // temporal.comp); the last pass multiplies the albedo back, so texture detail is never blurred,
-// and may write the display too (PN_ATROUS_DISPLAY).
+// weighs the result against the pixel's own running mean (blendWithMean: as the mean converges
+// the output tends to it, so a still view converges to the image `penumbra render` makes), and
+// may write the display too (PN_ATROUS_DISPLAY). Pixels whose guide depth is not positive (the
+// sky, emitters, sprites: PN_GBUFFER_UNFILTERED) are neither filtered nor taps.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/types.h"
@@ -17,6 +20,8 @@ layout(local_size_x = PN_TRACE_GROUP_X, local_size_y = PN_TRACE_GROUP_Y) in;
 layout(push_constant) uniform PushBlock { PassPush push; };
 layout(std430, set = 0, binding = PN_BINDING_GBUFFER) readonly buffer GBufferIn { GBufferTexel gbuffer[]; };
 layout(std430, set = 0, binding = PN_BINDING_DENOISE_GUIDE) readonly buffer GuideIn { vec4 guide[]; };
+// This frame's history, as temporal.comp wrote it: the running mean and its variance.
+layout(std430, set = 0, binding = PN_BINDING_HISTORY_OUT) readonly buffer HistoryNow { HistoryTexel history[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_IN) readonly buffer FilterIn { vec4 src[]; };
 layout(std430, set = 0, binding = PN_BINDING_FILTER_OUT) writeonly buffer FilterOut { vec4 dst[]; };
 layout(std430, set = 0, binding = PN_BINDING_DISPLAY) writeonly buffer DisplayBuffer { uint display[]; };
@@ -25,8 +30,11 @@ const float kB3[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
 const float kLog2e = 1.4426950409;  // exp(x) = exp2(x * log2(e))
 // The 3x3 Gaussian that smooths the variance estimate: the linear B-spline (1/4, 1/2, 1/4).
 const float kB1[2] = float[2](1.0 / 2.0, 1.0 / 4.0);
+// Frames of history below which the output is the filter's alone (blendWithMean).
+const float kShortHistoryFrames = 4.0;
 
-float depthAt(ivec2 q, float fallback) { return insideImage(q) ? guide[pixelIndex(q)].w : fallback; }
+// A neighbour's depth for the slope (an unfiltered pixel's guide holds it negated).
+float depthAt(ivec2 q, float fallback) { return insideImage(q) ? abs(guide[pixelIndex(q)].w) : fallback; }
 
 // What every tap is compared with: the centre pixel's guide and noise level.
 struct Centre {
@@ -77,6 +85,23 @@ FilterSums filterTaps(Centre c, ivec2 p, vec4 centre, bool nearEdge) {
     return sums;
 }
 
+// The filtered radiance F against the pixel's running mean R of N samples, weighted for the least
+// squared error: R is unbiased with the variance of its mean vR (temporal.comp); F has variance vF
+// (this filter's estimate) and a bias the filter cannot see, estimated as what of (F - R)^2 the
+// noise of R does not explain: b^2 = max((F - R)^2 - vR, 0). F's weight is vR / (vR + vF + b^2),
+// but at least 4 frames' worth of samples over N (A-SVGF and Quake II RTX let the history length
+// set the filter's reach in the same way): while the history is short, one pixel's vR is too
+// noisy to judge by (a firefly passes for bias, and would be kept), and the filter is what helps.
+// At rest vR and 4 / N both fall, so the output converges to the mean, whatever the filter's bias.
+vec3 blendWithMean(vec3 filtered, float filteredVariance, HistoryTexel h) {
+    vec3 d = filtered - h.color;
+    float meanVariance = min(h.meanVariance, 1e30);
+    float bias2 = max(dot(d, d) * (1.0 / 3.0) - meanVariance, 0.0);
+    float weight = meanVariance / (meanVariance + filteredVariance + bias2 + 1e-30);
+    float shortHistory = kShortHistoryFrames * float(viewer.samplesPerFrame) / max(h.samples, 1.0);
+    return h.color + clamp(max(weight, shortHistory), 0.0, 1.0) * d;
+}
+
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (!insideImage(p)) return;
@@ -110,7 +135,18 @@ void main() {
         // The centre tap always has a weight > 0.
         result = vec4(sums.color / sums.weight, sums.variance / (sums.weight * sums.weight));
     }
-    if ((push.mode & PN_ATROUS_LAST) != 0u) result.rgb *= demodulationAlbedo(gbuffer[i]);
+    if ((push.mode & PN_ATROUS_LAST) != 0u) {
+        HistoryTexel h = history[i];
+        if (depth > 0.0) {
+            vec3 albedo = demodulationAlbedo(gbuffer[i]);
+            float albedoLuminance = max(luminance(albedo), 1e-3);
+            result.rgb *= albedo;
+            if ((push.mode & PN_ATROUS_FILTER_ONLY) == 0u)
+                result.rgb = blendWithMean(result.rgb, result.a * albedoLuminance * albedoLuminance, h);
+        } else {
+            result.rgb = h.color;  // exactly the mean, not the mean divided and multiplied by 1
+        }
+    }
     dst[i] = result;
     // What the tonemap pass would make of it, saving that pass a read of the image and a barrier.
     if ((push.mode & PN_ATROUS_DISPLAY) != 0u) display[i] = displayPixel(toneMapped(result.rgb));

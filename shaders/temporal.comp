@@ -115,7 +115,6 @@ void main() {
     }
 
     HistoryTexel o;
-    o.pad0 = 0.0;
     o.pad1 = 0.0;
     if (haveHistory) {
         o.samples = h.samples + spp;
@@ -126,16 +125,19 @@ void main() {
     } else {
         o = HistoryTexel(current, spp, currentM1, currentM2, 0.0, 0.0);
     }
+    // Variance of the mean's luminance; from the neighbourhood while history is short (SVGF). The
+    // denoiser's last pass weighs its output against the mean by it (atrous.comp).
+    float variance = o.samples >= 4.0 * spp ? max(o.moment2 - o.moment1 * o.moment1, 0.0) / o.samples
+                                            : sigma.x * sigma.x;
+    o.meanVariance = variance;
     historyOut[i] = o;
     // The next frame's trace scales its shadow-ray roulette by this (lib/path.glsl).
     pixelEstimates[i] = vec4(pixelEstimateFromMoments(o.color, o.moment2, o.samples), 0.0);
 
-    // Variance of the mean's luminance; from the neighbourhood while history is short (SVGF).
-    float variance = o.samples >= 4.0 * spp ? max(o.moment2 - o.moment1 * o.moment1, 0.0) / o.samples
-                                            : sigma.x * sigma.x;
     vec3 albedo = demodulationAlbedo(g);
     float albedoLuminance = max(luminance(albedo), 1e-3);
     filterIn[i] = vec4(o.color / albedo, variance / (albedoLuminance * albedoLuminance));
     // A reused G-buffer's guide is the one last frame wrote.
-    if (viewer.gbufferReused == 0u) guide[i] = denoiseGuide(g.normal, g.surfaceId != 0u ? g.depth : 0.0);
+    if (viewer.gbufferReused == 0u)
+        guide[i] = denoiseGuide(g.normal, g.surfaceId != 0u ? g.depth : 0.0, (g.flags & PN_GBUFFER_UNFILTERED) == 0u);
 }

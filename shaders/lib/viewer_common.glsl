@@ -37,9 +37,12 @@ vec2 projectDirectionPrev(vec3 d) {
 }
 vec2 projectPointPrev(vec3 p) { return projectDirectionPrev(p - viewer.prevCameraPosition); }
 
-// The a-trous passes' guide (PN_DENOISE_GUIDE_BYTES): the normal, zero where nothing was hit.
-vec4 denoiseGuide(vec3 normal, float depth) {
-    return vec4(depth > 0.0 ? normal : vec3(0.0), depth);
+// The a-trous passes' guide (PN_DENOISE_GUIDE_BYTES): the normal, zero where nothing was hit, and
+// the depth, negated where the pixel bypasses the filter (PN_GBUFFER_UNFILTERED): such a pixel
+// is neither filtered nor a tap (both need w > 0), but its |w| still shapes the depth slope of its
+// neighbours. A miss has w = 0.
+vec4 denoiseGuide(vec3 normal, float depth, bool filtered) {
+    return vec4(depth > 0.0 ? normal : vec3(0.0), filtered ? depth : -depth);
 }
 
 // The albedo the denoiser divides out: 1 where the primary ray missed or the surface is black.

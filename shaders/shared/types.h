@@ -548,8 +548,17 @@ PN_STRUCT(FrameUniforms) {
 // estimates from its sums, and one that replaces them has no estimate (lib/trace_outputs.glsl).
 #define PN_TRACE_PIXEL_ESTIMATES 16u
 #define PN_GBUFFER_SUBPIXEL 1u    // PassPush.mode bit of gbuffer.comp: trace cell passIndex of a 4x4 grid in the pixel
+// GBufferTexel.flags bit: the pixel bypasses the a-trous filter (its raw mean is shown) and is no
+// tap for its neighbours: a surface the camera sees emit (its light is not illumination times
+// albedo, and blurring it spreads its glow; Doom's unseen sector light does not count), a window
+// onto the sky, a sprite (a card whose texture's cut-out edges no normal or depth guide sees).
+// The sky bypasses too, as any pixel whose primary ray missed.
+#define PN_GBUFFER_UNFILTERED 1u
 #define PN_ATROUS_LAST 1u        // PassPush.mode bit: the last a-trous pass multiplies the albedo back
 #define PN_ATROUS_DISPLAY 2u     // PassPush.mode bit: ... and tone-maps it into the display (no debug view over it)
+// PassPush.mode bit: ... and shows the filter alone, not weighed against the running mean (atrous.comp's
+// blendWithMean), which never converges at rest: for measurements and tests of what the blend keeps.
+#define PN_ATROUS_FILTER_ONLY 4u
 // The denoiser's per-pixel guide, written by temporal.comp: xyz = the shading normal, w = the
 // linear depth (0: the primary ray missed). 16 bytes instead of a 48-byte GBufferTexel per tap
 // keeps the 25-tap filter in cache; plain floats rather than an 8-byte octahedral normal, because
@@ -564,7 +573,7 @@ PN_STRUCT(GBufferTexel) {
     uint surfaceId;  // material + 1 (0: miss); a change at a pixel means a different surface
     vec2 motion;     // pixels from here to where the same point was in the previous frame (camera and object motion)
     float prevDepth; // the point's linear depth in the previous frame's camera, where it was then (0: miss)
-    float pad1;
+    uint flags;      // PN_GBUFFER_* bits
 };
 
 // Push constants of the box overlay (boxes.comp), 16 bytes.
@@ -581,7 +590,7 @@ PN_STRUCT(HistoryTexel) {
     float samples;  // N of the running mean (capped while the camera moves)
     float moment1;  // running mean of per-sample luminance
     float moment2;  // running mean of per-sample squared luminance (variance = m2 - m1^2)
-    float pad0;
+    float meanVariance;  // variance of `color`'s luminance as an estimate (written for the denoiser; never read back)
     float pad1;
 };
 
@@ -789,9 +798,10 @@ static_assert(sizeof(SurfacePoint) == 32 && offsetof(SurfacePoint, valid) == 12 
               offsetof(SurfacePoint, normal) == 16);
 static_assert(sizeof(GBufferTexel) == 48 && offsetof(GBufferTexel, depth) == 12 &&
               offsetof(GBufferTexel, albedo) == 16 && offsetof(GBufferTexel, surfaceId) == 28 &&
-              offsetof(GBufferTexel, motion) == 32);
+              offsetof(GBufferTexel, motion) == 32 && offsetof(GBufferTexel, flags) == 44);
 static_assert(sizeof(HistoryTexel) == 32 && offsetof(HistoryTexel, samples) == 12 &&
-              offsetof(HistoryTexel, moment1) == 16 && offsetof(HistoryTexel, moment2) == 20);
+              offsetof(HistoryTexel, moment1) == 16 && offsetof(HistoryTexel, moment2) == 20 &&
+              offsetof(HistoryTexel, meanVariance) == 24);
 static_assert(sizeof(BoxOverlayPush) == 16 && offsetof(BoxOverlayPush, lineWidth) == 4);
 static_assert(sizeof(ViewerUniforms) == 128 && offsetof(ViewerUniforms, prevTanHalfFovY) == 12 &&
               offsetof(ViewerUniforms, prevCameraRight) == 16 && offsetof(ViewerUniforms, prevAspect) == 28 &&

@@ -41,6 +41,8 @@ struct BenchArgs {
     double budgetMs = 100;
     int errorTrials = 1;
     int budgetFrames = 0;
+    std::string errorMotion = "static";
+    bool denoiseFilterOnly = false;
 };
 
 double mrays(std::uint64_t rays, double ms) { return ms > 0 ? double(rays) / (ms * 1e3) : 0.0; }
@@ -80,11 +82,12 @@ void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Conte
                      const ViewerBenchResult& r) {
     std::printf("{\n  \"scene\": \"%s\",\n  \"device\": \"%s\",\n  \"width\": %u,\n  \"height\": %u,\n"
                 "  \"spp\": %u,\n  \"bounces\": %u,\n  \"roulette_start\": %u,\n  \"temporal\": %s,\n"
-                "  \"denoise_passes\": %u,\n  \"shared_camera_rays\": %s,\n  \"shadow_roulette\": %.3g,\n  \"camera_motion\": \"%s\",\n  \"move_sectors\": %s,\n  \"frames\": %d,\n  \"viewer_frame_ms\": %.4f,\n  \"passes\": {",
+                "  \"denoise_passes\": %u,\n  \"denoise_filter_only\": %s,\n  \"shared_camera_rays\": %s,\n  \"shadow_roulette\": %.3g,\n  \"camera_motion\": \"%s\",\n  \"move_sectors\": %s,\n  \"frames\": %d,\n  \"viewer_frame_ms\": %.4f,\n  \"passes\": {",
                 jsonEscape(scene.name).c_str(), jsonEscape(ctx.info().name).c_str(), o.width, o.height, o.view.samplesPerFrame,
                 o.view.maxBounces, o.view.rouletteStart, o.view.temporal ? "true" : "false",
-                o.view.denoise ? o.view.denoiseIterations : 0, o.view.shareCameraRays ? "true" : "false", o.view.shadowRouletteShare,
-                cameraMotionName(o.motion), o.moveSectors ? "true" : "false", r.frames, r.frameMs);
+                o.view.denoise ? o.view.denoiseIterations : 0, o.view.denoiseConverges ? "false" : "true",
+                o.view.shareCameraRays ? "true" : "false", o.view.shadowRouletteShare, cameraMotionName(o.motion),
+                o.moveSectors ? "true" : "false", r.frames, r.frameMs);
     const char* sep = "";
     for (const auto& [name, ms] : r.passMs) {
         std::printf("%s\n    \"%s\": %.4f", sep, name.c_str(), ms);
@@ -96,8 +99,8 @@ void printViewerJson(const BenchArgs& args, const Scene& scene, const gpu::Conte
     printStatisticsJson("trace_pipeline", r.traceStatistics);
     printStatisticsJson("image_pipeline", r.imageStatistics);
     if (r.relMseRaw)
-        std::printf(",\n  \"budget_ms\": %.2f,\n  \"budget_frames\": %d,\n  \"error_trials\": %d,\n  \"rel_mse_raw\": %.6g",
-                    args.budgetMs, r.budgetFrames, o.errorTrials, *r.relMseRaw);
+        std::printf(",\n  \"budget_ms\": %.2f,\n  \"budget_frames\": %d,\n  \"error_trials\": %d,\n  \"error_camera_motion\": \"%s\",\n  \"rel_mse_raw\": %.6g",
+                    args.budgetMs, r.budgetFrames, o.errorTrials, cameraMotionName(o.errorMotion), *r.relMseRaw);
     if (r.relMseDenoised) std::printf(",\n  \"rel_mse_denoised\": %.6g", *r.relMseDenoised);
     std::printf("\n}\n");
 }
@@ -116,7 +119,8 @@ void printViewerText(const Scene& scene, const gpu::Context& ctx, const ViewerBe
     printStatisticsText("trace", r.traceStatistics);
     printStatisticsText("image", r.imageStatistics);
     if (r.relMseRaw)
-        std::printf("  equal-time error over %d frames: relMSE raw %.5g", r.budgetFrames, *r.relMseRaw);
+        std::printf("  error over %d frames (camera %s): relMSE raw %.5g", r.budgetFrames, cameraMotionName(o.errorMotion),
+                    *r.relMseRaw);
     if (r.relMseDenoised) std::printf(", denoised %.5g", *r.relMseDenoised);
     if (r.relMseRaw) std::printf("\n");
 }
@@ -133,6 +137,7 @@ void runViewerBenchCommand(const BenchArgs& args) {
     o.cullBackfaces = args.cullBackfaces;
     o.view.denoise = args.denoise > 0;
     o.view.denoiseIterations = std::max(args.denoise, 1u);
+    o.view.denoiseConverges = !args.denoiseFilterOnly;
     o.motion = parseCameraMotion(args.motion);
     o.frames = args.frames;
     o.warmupSeconds = args.warmupSeconds;
@@ -151,6 +156,7 @@ void runViewerBenchCommand(const BenchArgs& args) {
         o.errorTrials = args.errorTrials;
         if (args.budgetFrames < 0 || args.budgetFrames > 1000000) throw UsageError("--budget-frames must be within [0, 1000000]");
         o.budgetFrameCount = args.budgetFrames;
+        o.errorMotion = parseCameraMotion(args.errorMotion);
     }
     Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env, args.wad);
     const bool torch = scene.torch.enabled && scene.torch.intensity > 0;
@@ -276,6 +282,12 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--budget-frames", args->budgetFrames,
                     "--viewer: measure the error after exactly this many frames instead of --budget-ms (same images "
                     "for builds that differ only after the trace)");
+    cmd->add_flag("--denoise-filter-only", args->denoiseFilterOnly,
+                  "--viewer: the a-trous filter's output alone, not weighed against the running mean (which a still "
+                  "view then never converges to; for comparisons)");
+    cmd->add_option("--error-camera-motion", args->errorMotion,
+                    "--viewer: the error's frames are still (default) or move (walk, orbit) to end on the reference's "
+                    "view; needs --budget-frames");
     cmd->add_option("--error-trials", args->errorTrials,
                     "--viewer: repeat the equal-time error this many times, each from a fresh history with new random "
                     "numbers, and report the means (default 1)");

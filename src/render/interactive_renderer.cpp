@@ -279,12 +279,13 @@ void InteractiveRenderer::createPasses() {
     };
     temporalAB_ = temporal(historyA_, gbufferA_, historyB_, gbufferB_);
     temporalBA_ = temporal(historyB_, gbufferB_, historyA_, gbufferA_);
-    auto denoise = [&](const gpu::Buffer& gbuffer) {
-        return std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer, guide_, filterA_, filterB_,
-                                             &display_);
+    // A frame that writes history and G-buffer B (temporalAB_) denoises with B's.
+    auto denoise = [&](const gpu::Buffer& gbuffer, const gpu::Buffer& history) {
+        return std::make_unique<DenoisePass>(ctx_, frameUniforms_, viewerUniforms_, gbuffer, guide_, history, filterA_,
+                                             filterB_, &display_);
     };
-    denoiseA_ = denoise(gbufferA_);
-    denoiseB_ = denoise(gbufferB_);
+    denoiseA_ = denoise(gbufferA_, historyA_);
+    denoiseB_ = denoise(gbufferB_, historyB_);
     tonemapA_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyA_, filterB_, gbufferA_, display_);
     tonemapB_ = std::make_unique<TonemapPass>(ctx_, frameUniforms_, viewerUniforms_, historyB_, filterB_, gbufferB_, display_);
     heatmap_ = std::make_unique<HeatmapPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, filterB_, heatCounters_);
@@ -473,7 +474,7 @@ void InteractiveRenderer::recordPasses(VkCommandBuffer cmd, const ViewSettings& 
     if (denoise) {
         const DenoisePass& filter = toB ? *denoiseB_ : *denoiseA_;
         timed(cmd, ViewerPass::Denoise,
-              [&] { filter.record(cmd, width_, height_, s.denoiseIterations, denoiserDisplays); });
+              [&] { filter.record(cmd, width_, height_, s.denoiseIterations, denoiserDisplays, !s.denoiseConverges); });
         denoised_ = &filter.output(s.denoiseIterations);
         tonemap.setFiltered(*denoised_);
     } else {

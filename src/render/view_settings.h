@@ -79,6 +79,10 @@ struct ViewSettings {
     bool temporal = true;
     bool denoise = false;
     std::uint32_t denoiseIterations = 5;
+    // Off: the a-trous filter's output alone, which keeps a bias at rest that no number of frames
+    // removes; on (the default): weighed against the running mean, to which a still view converges
+    // (shaders/atrous.comp, blendWithMean). Off is for measurements (`bench --denoise-filter-only`).
+    bool denoiseConverges = true;
     float sigmaLuminance = 4.0f;
     float sigmaNormal = 128.0f;
     float sigmaDepth = 1.0f;

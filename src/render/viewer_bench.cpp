@@ -44,8 +44,9 @@ ImageRgb imageFromVec4(const gpu::Context& ctx, InteractiveRenderer& r, const gp
     return image;
 }
 
-// Frames from a fresh history with a still camera until their GPU time reaches the budget, then
-// the raw running mean and the denoised image against the reference; means over the trials.
+// Frames from a fresh history until their GPU time reaches the budget (or their count is
+// reached), then the raw running mean and the denoised image against the reference; means over
+// the trials. The camera is still, or moves along o.errorMotion to arrive at `camera` last.
 void measureEqualTimeError(const gpu::Context& ctx, InteractiveRenderer& renderer, const Camera& camera,
                            const ViewerBenchOptions& o, ViewerBenchResult& result) {
     if (!o.reference->sameSize(ImageRgb(int(o.width), int(o.height))))
@@ -59,7 +60,8 @@ void measureEqualTimeError(const gpu::Context& ctx, InteractiveRenderer& rendere
         double spent = 0;
         int n = 0;
         while (o.budgetFrameCount > 0 ? n < o.budgetFrameCount : spent < o.budgetMs || n == 0) {
-            renderFrame(renderer, camera, o.view);
+            const double t = o.budgetFrameCount > 0 ? (n - o.budgetFrameCount + 1) * o.frameSeconds : 0.0;
+            renderFrame(renderer, cameraInMotion(camera, o.errorMotion, t), o.view);
             spent += renderer.stats().passMilliseconds[std::size_t(ViewerPass::Frame)];
             ++n;
             if (n > 1000000) break;  // a device without timestamps reports -1 ms
@@ -120,6 +122,8 @@ double relativeMse(const ImageRgb& image, const ImageRgb& reference) {
 ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight,
                                  const ViewerBenchOptions& o) {
     if (o.frames < 1 || o.frames > 100000) throw UsageError("--frames must be between 1 and 100000");
+    if (o.errorMotion != CameraMotion::Static && o.budgetFrameCount < 1)
+        throw UsageError("--error-camera-motion needs --budget-frames (the motion ends on the reference's view)");
     InteractiveRenderer renderer(ctx, scene, torchIsLastLight);
     renderer.setCullBackfaces(o.cullBackfaces);
     renderer.resize(o.width, o.height);

@@ -44,6 +44,10 @@ struct ViewerBenchOptions {
     // A Doom level: every door, lift, floor and crusher moves on the script's clock (fired again
     // once all have stopped), so the frames include the moving sectors' top-level uploads.
     bool moveSectors = false;
+    // The camera of the error's frames: still (the default), or moving along a scripted motion
+    // that arrives at the scene's camera on the last frame (frame k of n at time (k - n + 1) *
+    // frameSeconds), so the same reference judges a frame seen in motion.
+    CameraMotion errorMotion = CameraMotion::Static;
 };
 
 struct ViewerBenchResult {

@@ -30,7 +30,7 @@ protected:
         }
         TemporalPass temporal(*ctx, TemporalBuffers{&frame, &viewer, &accum, &gbuffer, &gbufferPrev, &history, &historyOut, &a, &guide,
                                                     &estimates});
-        DenoisePass pass(*ctx, frame, viewer, gbuffer, guide, a, b, display);
+        DenoisePass pass(*ctx, frame, viewer, gbuffer, guide, historyOut, a, b, display);
         const gpu::Buffer* result = nullptr;
         submit([&](VkCommandBuffer cmd) {
             temporal.record(cmd, width, height);

@@ -171,9 +171,9 @@ TEST(Layout, ViewerStructsMatchInTheViewerShaders) {
         Offsets spv = readMemberOffsets(gpu::shaderCode(shaderName));
         expectMembers(spv, "GBufferTexel", {0, offsetof(GBufferTexel, depth), offsetof(GBufferTexel, albedo),
                                             offsetof(GBufferTexel, surfaceId), offsetof(GBufferTexel, motion),
-                                            offsetof(GBufferTexel, prevDepth), offsetof(GBufferTexel, pad1)});
+                                            offsetof(GBufferTexel, prevDepth), offsetof(GBufferTexel, flags)});
         expectMembers(spv, "HistoryTexel", {0, offsetof(HistoryTexel, samples), offsetof(HistoryTexel, moment1),
-                                            offsetof(HistoryTexel, moment2), offsetof(HistoryTexel, pad0),
+                                            offsetof(HistoryTexel, moment2), offsetof(HistoryTexel, meanVariance),
                                             offsetof(HistoryTexel, pad1)});
         expectMembers(spv, "ViewerUniforms",
                       {0, offsetof(ViewerUniforms, prevTanHalfFovY), offsetof(ViewerUniforms, prevCameraRight),
