@@ -166,6 +166,8 @@ prepare_host() {
   export PENUMBRA_TEST_DATA="$root/tests/data"
   export PENUMBRA_BINARY="$root/.gpu/bin/penumbra"
   unset PENUMBRA_DEVICE PENUMBRA_INSTANCE_PER_CONTEXT
+  # A GPU draws the long viewer soak in seconds: run it, not its opt-in skip.
+  export PENUMBRA_SOAK_FRAMES=${PENUMBRA_SOAK_FRAMES:-3000}
   log_dir=${1:-.gpu/logs}
   mkdir -p "$log_dir"
   work=$(mktemp -d)

@@ -1,9 +1,12 @@
 // The wavefront trace pass (render/passes/wavefront_pass.h) against the megakernel (trace.comp):
 // every path draws the same random numbers in the same order and adds its vertices' light in the
-// same order, so the two must give the same sums, bit for bit, and trace the same rays. Scenes
+// same order, so the two must give the same sums (bit for bit on lavapipe, to float rounding on a
+// GPU: differingPixels) and trace the same rays. Scenes
 // cover what the kernels specialise on: spheres, glass and absorption, textures, punctual lights,
 // instances; and the pass's own paths: tiles, masked (adaptive) passes, more samples per pass, and
 // the tail kernel taking over the last paths (never, part way, from the camera rays on).
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -40,6 +43,27 @@ Traced renderWith(const gpu::Context& ctx, const std::string& kernel, const Scen
     return {renderer.accumulation(), renderer.stats()};
 }
 
+// Pixels whose sums differ. lavapipe compiles both kernels through the same LLVM passes, and they
+// agree bit for bit. A GPU's compiler may fuse a multiply and an add in one kernel and not in the
+// other (an H100 at a7ba3c3: up to 121 of 384 pixels differed in their last bits while every ray
+// count agreed), so there a pixel differs when a sum is off by more than float rounding over a
+// path's few dozen operations: a path that went another way differs by far more.
+std::size_t differingPixels(const gpu::Context& ctx, const std::vector<Vec4>& a, const std::vector<Vec4>& b) {
+    const bool bitExact = ctx.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (bitExact) {
+            differing += std::memcmp(&a[i], &b[i], sizeof(Vec4)) != 0;
+            continue;
+        }
+        const float pa[4] = {a[i].x, a[i].y, a[i].z, a[i].w}, pb[4] = {b[i].x, b[i].y, b[i].z, b[i].w};
+        bool same = true;
+        for (int c = 0; c < 4; ++c) same = same && std::fabs(pa[c] - pb[c]) <= 1e-4f * std::max(std::fabs(pa[c]), 1e-3f);
+        differing += !same;
+    }
+    return differing;
+}
+
 void expectSameImage(const gpu::Context& ctx, const Scene& scene, const RenderSettings& settings,
                      const std::vector<std::uint32_t>* mask = nullptr) {
     const Traced mega = renderWith(ctx, "mega", scene, settings, mask);
@@ -49,10 +73,7 @@ void expectSameImage(const gpu::Context& ctx, const Scene& scene, const RenderSe
         SCOPED_TRACE("PENUMBRA_WAVE_TAIL_PATHS=" + tailPaths);
         const Traced wave = renderWith(ctx, "wavefront", scene, settings, mask, tailPaths);
         ASSERT_EQ(mega.sums.size(), wave.sums.size());
-        std::size_t differing = 0;
-        for (std::size_t i = 0; i < mega.sums.size(); ++i)
-            differing += std::memcmp(&mega.sums[i], &wave.sums[i], sizeof(Vec4)) != 0;
-        EXPECT_EQ(differing, 0u) << "pixels whose sums differ between the kernels";
+        EXPECT_EQ(differingPixels(ctx, mega.sums, wave.sums), 0u) << "pixels whose sums differ between the kernels";
         if (!settings.shareCameraRays) {
             EXPECT_EQ(mega.stats.closestRays, wave.stats.closestRays);
         } else if (settings.pathsPerDispatch == 0 && !mask) {
@@ -100,7 +121,7 @@ TEST_F(WavefrontTest, TilesSeveralSamplesPerPassAndMaskedPassesMatchTheMegakerne
     expectSameImage(*ctx, makeCornellBox(), testSettings(20, 12, 2, 4), &mask);
 }
 
-// A pixel's samples in a pass sharing their camera ray: both kernels still agree bit for bit (the
+// A pixel's samples in a pass sharing their camera ray: both kernels still agree (the
 // wavefront tracing that ray once per pixel, over tiles too); at one sample per pass the bit
 // changes nothing, and at more it changes the image (the samples' rays are no longer their own).
 TEST_F(WavefrontTest, SharedCameraRaysMatchTheMegakernel) {

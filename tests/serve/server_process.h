@@ -16,6 +16,8 @@
 #include <thread>
 #include <vector>
 
+#include "../gpu/binary_path.h"
+
 namespace penumbra::test {
 
 class ServerProcess {
@@ -34,7 +36,7 @@ public:
             const char* device = std::getenv("PENUMBRA_TEST_DEVICE");
             setenv("PENUMBRA_DEVICE", device && *device ? device : "llvmpipe", 1);
             setenv("PENUMBRA_VALIDATION", "1", 1);
-            std::vector<std::string> all{PENUMBRA_BINARY_PATH, "serve"};
+            std::vector<std::string> all{penumbraBinary(), "serve"};  // PENUMBRA_BINARY on the GPU host
             all.insert(all.end(), args.begin(), args.end());
             std::vector<char*> argv;
             for (std::string& a : all) argv.push_back(a.data());
