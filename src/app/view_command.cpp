@@ -39,6 +39,9 @@ void runView(ViewArgs args) {
     if (args.fixedDt && !(*args.fixedDt > 0 && *args.fixedDt <= 1))
         throw UsageError("--fixed-dt must be a time step in seconds, above 0 and at most 1");
     args.options.fixedDt = args.fixedDt;
+    if (args.options.stepsPerFrame < 1 || args.options.stepsPerFrame > 1000)
+        throw UsageError("--steps-per-frame must be between 1 and 1000");
+    if (args.options.stepsPerFrame > 1 && !args.fixedDt) throw UsageError("--steps-per-frame needs --fixed-dt");
     // Read before any window opens, so a bad script is one line and exit code 1.
     if (!args.script.empty()) args.options.script = viewer::loadInputScript(args.script);
     checkViewSettingRanges(args.options.view);
@@ -64,6 +67,8 @@ void registerView(CLI::App& app, Action& action) {
     cmd->add_option("--script", args->script,
                     "automation: play timed key and mouse events from this file (see docs/VIEWER.md); starts playing");
     cmd->add_option("--fixed-dt", args->fixedDt, "each frame advances time by this many seconds (reproducible runs)");
+    cmd->add_option("--steps-per-frame", args->options.stepsPerFrame,
+                    "automation: each drawn frame plays N steps of --fixed-dt (the same play in fewer frames)");
     cmd->add_flag("--print-camera", args->options.printCamera,
                   "on exit, print 'camera X,Y,Z direction DX,DY,DZ' (scene units)");
     cmd->add_flag("--fly", args->options.fly, "start in free flight on Doom levels (F toggles walking)");

@@ -42,7 +42,7 @@ void expectWalkVideo(const DecodedVideo& video, std::size_t frames, int width, i
     for (std::size_t i = 0; i < frames; ++i) EXPECT_GT(meanValue(video.frames[i]), 4.0) << "frame " << i << " is black";
     // Walking forward, then turning: every frame differs from the one before by more than codec
     // noise, but the last, which plays the release of W and so stands where the one before stood
-    // (the final-quality test checks it repeats that frame; the viewer's frames differ by noise).
+    // (the final-quality test checks it differs from that frame by noise only).
     EXPECT_GT(meanAbsDifference(video.frames.front(), video.frames.back()), 8.0);
     for (std::size_t i = 1; i + 1 < frames; ++i)
         EXPECT_GT(meanAbsDifference(video.frames[i - 1], video.frames[i]), 0.5) << "frames " << i - 1 << ", " << i;
@@ -67,11 +67,13 @@ TEST_F(WalkVideoTest, AWalkBecomesAnH264VideoOfItsCameraPath) {
     EXPECT_NE(r.err.find("9 frames 64x48 at 8 fps (final quality, 2 spp a frame)"), std::string::npos) << r.err;
     expectWalkVideo(decodeVideo(dir / "e1m1.mp4"), 9, 64, 48);
     {
-        // The last frame plays the release of W: the camera stands, and a final frame (the same
-        // samples for the same view) repeats the one before, up to the codec.
+        // The last frame plays the release of W: the camera stands. E1M1's flickering sectors go
+        // on changing their light (the level's tics run), so the frame is not the one before bit
+        // for bit, but it differs by noise, far less than a step of the walk moves the picture
+        // (measured at 2 spp: 4.7 standing against 20 walking).
         const DecodedVideo v = decodeVideo(dir / "e1m1.mp4");
         ASSERT_EQ(v.frames.size(), 9u);
-        EXPECT_LT(meanAbsDifference(v.frames[7], v.frames[8]), 0.5);
+        EXPECT_LT(meanAbsDifference(v.frames[7], v.frames[8]), 0.5 * meanAbsDifference(v.frames[6], v.frames[7]));
     }
     EXPECT_EQ(filesIn(dir).size(), 2u);  // walk.txt and the video: no temporary file left
 

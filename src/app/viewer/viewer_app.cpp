@@ -264,11 +264,13 @@ struct LoopState {
     double fpsSmoothed = 0;
     double animationClock = 0;  // seconds played: the moment animated textures show
     bool levelEndedByScript = false;  // --script ended a Doom level: the viewer exits 0
+    std::uint32_t stepsPerFrame = 1;  // --steps-per-frame: steps of play a drawn frame
     bool addModelKey = false;   // M was pressed: add the model named in the panel
 
     LoopState(const Scene& scene, const ViewerOptions& options, const InteractiveRenderer& renderer)
         : nav(scene, options.fly) {
         if (options.script) script.emplace(*options.script);
+        stepsPerFrame = options.stepsPerFrame;
         panel.sceneName = scene.name;
         panel.vsync = options.vsync;
         panel.playing = options.frames.has_value() || script.has_value();  // automation plays from the start
@@ -280,6 +282,21 @@ struct LoopState {
     }
     Camera camera() const { return nav.camera(); }
 };
+
+// One step of play (the camera, then the world): true when instances moved.
+bool playOneStep(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, GLFWwindow* w, float step) {
+    const WorldChange change = playStep(scene, loop.nav, loop.input, loop.animationClock, step);
+    for (std::uint32_t m : change.lightsChanged) renderer.setUnsampledEmission(m, scene.materials[m].emission);
+    if (change.levelCompleted) {
+        std::printf("%s\n", change.levelCompleted->c_str());
+        std::fflush(stdout);
+        loop.panel.message = *change.levelCompleted;
+        glfwSetWindowTitle(w, ("penumbra - " + scene.name + " - " + *change.levelCompleted).c_str());
+        loop.levelEndedByScript = loop.script.has_value();  // a script that ends the level is done
+    }
+    if (change.geometryChanged) renderer.rebuildScene(scene, true);
+    return change.instancesMoved;
+}
 
 // This frame's input (keys, pointer, script) moves the camera, the selected instance and the
 // animation clock.
@@ -308,18 +325,15 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
     // Paused, the camera stays where the shown frame was taken, and animated textures hold
     // their frame; playing, they run at the game's rate in simulated time (--fixed-dt too).
     if (advancing) {
-        const WorldChange change = playStep(scene, loop.nav, loop.input, loop.animationClock, step);
-        for (std::uint32_t m : change.lightsChanged) renderer.setUnsampledEmission(m, scene.materials[m].emission);
-        if (change.levelCompleted) {
-            std::printf("%s\n", change.levelCompleted->c_str());
-            std::fflush(stdout);
-            loop.panel.message = *change.levelCompleted;
-            glfwSetWindowTitle(w, ("penumbra - " + scene.name + " - " + *change.levelCompleted).c_str());
-            loop.levelEndedByScript = loop.script.has_value();  // a script that ends the level is done
+        for (std::uint32_t k = 0; k < loop.stepsPerFrame && !loop.levelEndedByScript; ++k) {
+            if (k > 0) {  // the next step's events and presses, as a frame of its own would see them
+                endInputFrame(loop.input);
+                if (loop.script) loop.script->playFrame(loop.input, step);
+                handlePresses(loop.input, w, loop.pointer, loop.nav, scene, loop.panel);
+            }
+            if (playOneStep(loop, scene, renderer, w, step)) instancesMoved = true;
         }
         settings.time = float(loop.animationClock);
-        if (change.geometryChanged) renderer.rebuildScene(scene, true);
-        else if (change.instancesMoved) instancesMoved = true;
     }
     // A grabbed instance follows the cursor, after the camera and the animations have moved.
     if (!automationDone && dragSelection(w, loop.pointer, scene, loop.camera())) instancesMoved = true;

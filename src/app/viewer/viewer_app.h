@@ -28,6 +28,9 @@ struct ViewerOptions {
     // Scripted input (--script): played from the first frame, which then starts playing.
     std::optional<std::vector<ScriptEvent>> script;
     std::optional<double> fixedDt;  // seconds each frame advances time by, instead of the clock
+    // Automation (--steps-per-frame): each drawn frame plays this many --fixed-dt steps, the script's
+    // events and the world exactly as that many frames would, so a long walk draws fewer frames.
+    std::uint32_t stepsPerFrame = 1;
     bool printCamera = false;       // print the final camera on exit
     bool fly = false;               // start in free flight on levels one can walk
     ViewSettings view;              // the settings the flags set (addViewSettingOptions)
