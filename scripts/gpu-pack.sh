@@ -28,6 +28,35 @@ for f in .gpu/bin/*; do
     esac
   done
 done
+# GPU_PACK_NO_VIDEO=1: for benchmark packs that never write a video. FFmpeg's libraries and
+# everything only they load (x265, AV1, codec2, ICU data...) are about 45 MB compressed, too much
+# to travel beside the WebGPU peer; they are replaced by empty libraries of the same names and
+# symbol versions. penumbra binds them lazily (no BIND_NOW, function calls only), so it starts,
+# and only writing a video would fail (unresolved symbol).
+if [ "${GPU_PACK_NO_VIDEO:-0}" = 1 ]; then
+  video_libs=(libavcodec.so.59:LIBAVCODEC_59 libavformat.so.59:LIBAVFORMAT_59 libavutil.so.57:LIBAVUTIL_57
+              libswscale.so.6:LIBSWSCALE_6)
+  keep=$(mktemp)
+  for f in .gpu/bin/*; do
+    case "$(file -bL "$f")" in ELF*) ;; *) continue ;; esac
+    for need in $(readelf -d "$f" | sed -n 's/.*Shared library: \[\(.*\)\]/\1/p'); do
+      case " ${video_libs[*]} " in *" $need:"*) continue ;; esac
+      echo "$need" >> "$keep"
+      path=$(ldd "$f" | awk -v n="$need" '$1 == n {print $3}')
+      [ -n "$path" ] && ldd "$path" | awk '/=> \//{print $1}' >> "$keep"
+    done
+  done
+  for lib in .gpu/lib/*; do grep -qx "$(basename "$lib")" "$keep" || rm -f "$lib"; done
+  rm -f "$keep"
+  stub_dir=$(mktemp -d)
+  echo 'void penumbra_video_stub(void) {}' > "$stub_dir/stub.c"
+  for entry in "${video_libs[@]}"; do
+    name=${entry%%:*} version=${entry#*:}
+    echo "$version { global: penumbra_video_stub; local: *; };" > "$stub_dir/$version.map"
+    cc -shared -fPIC -o ".gpu/lib/$name" -Wl,-soname,"$name" -Wl,--version-script="$stub_dir/$version.map" "$stub_dir/stub.c"
+  done
+  rm -rf "$stub_dir"
+fi
 if ! ls .gpu/debs/libvulkan1_*.deb >/dev/null 2>&1; then
   lists=/tmp/gpu-pack-apt-lists; mkdir -p "$lists/partial"
   o="-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 -oDir::State::Lists=$lists"
