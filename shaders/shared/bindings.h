@@ -23,7 +23,6 @@
 #define PN_BINDING_TEXTURES 10  // TextureInfo per texture
 #define PN_BINDING_TEXELS 11    // every texture's RGBA8 texels, one uint each
 #define PN_BINDING_PUNCTUAL 12  // PunctualLight per point, spot or directional light
-#define PN_BINDING_SPHERES 13        // reserved; spheres live in the triangle arrays (PN_TRI_SPHERE)
 #define PN_BINDING_SPHERE_LIGHTS 14  // SphereLight per emissive sphere or spot light with a radius
 #define PN_BINDING_ENV_TABLE 15      // EnvAlias per environment texel (importance sampling)
 // Bindings 16-23 are for the viewer's passes (G-buffer, history, denoiser, debug views).

@@ -46,10 +46,9 @@ PN_STRUCT(FrameUniforms) {
     uint samplesPerPass;
     vec3 background;     // radiance of rays that leave the scene
     uint punctualCount;  // entries in the punctual light buffer
-    // Thin-lens camera (0 radius: pinhole) and analytic primitives.
+    // Thin-lens camera (0 radius: pinhole) and sphere lights.
     float lensRadius;      // metres
     float focusDistance;   // metres along cameraForward
-    uint sphereCount;      // entries in the sphere buffer
     uint sphereLightCount; // entries in the emissive-sphere table
     // Environment light: an equirectangular map (envWidth x envHeight texels at
     // PN_BINDING_ENV_TEXELS), or the constant background when envWidth is 0.
@@ -58,7 +57,6 @@ PN_STRUCT(FrameUniforms) {
     float envRotation;     // radians about +y (world direction = rotation * map direction)
     uint envHeight;
     uint misMode;          // PN_MIS_*: which estimators the integrator combines (tests compare them)
-    uint debugMode;        // viewer debug views; 0: the image
     uint instanceCount;    // 0: one flat BVH rooted at node 0 (no instancing); else the Instance entries
     float time;            // seconds: the moment animated textures show
     // The unified light sampler.
@@ -67,28 +65,27 @@ PN_STRUCT(FrameUniforms) {
     uint lightRefCount;    // LightRef entries in all
     uint lightPickUniform; // nonzero: pick every light with the same probability (a test oracle)
     uint topRoot;          // with instanceCount > 0: the top-level BVH's root node
-    uint lightGridOffset;  // word of the light grid in the light tree's buffer (0: none, walk the tree)
+    uint lightGridOffset;  // word of the light grid (its LightGridHeader) in the light tree's buffer (0: none, walk the tree)
     float shadowRouletteShare;  // shadow-ray roulette below this share of the pixel's estimate (lib/path.glsl); 0: off
     float textureSaturation;    // of base-colour textures (shared/view_limits.h); 1: as they are
     float renderDistance;       // metres across the floor from the camera; nothing beyond is hit; 0: no limit
     uint flags;                 // PN_FRAME_*
-    uint pad5;
-    uint pad6;
 };
 #ifdef __cplusplus
-static_assert(sizeof(FrameUniforms) == 208 && offsetof(FrameUniforms, textureSaturation) == 188 &&
-              offsetof(FrameUniforms, renderDistance) == 192 && offsetof(FrameUniforms, flags) == 196 && offsetof(FrameUniforms, topLightCount) == 160 &&
-              offsetof(FrameUniforms, instanceCount) == 152 && offsetof(FrameUniforms, topRoot) == 176 &&
-              offsetof(FrameUniforms, envLuminance) == 164 && offsetof(FrameUniforms, lightPickUniform) == 172 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
+static_assert(sizeof(FrameUniforms) == 192 && offsetof(FrameUniforms, tanHalfFovY) == 12 &&
               offsetof(FrameUniforms, cameraRight) == 16 && offsetof(FrameUniforms, aspect) == 28 &&
               offsetof(FrameUniforms, cameraUp) == 32 && offsetof(FrameUniforms, width) == 44 &&
               offsetof(FrameUniforms, cameraForward) == 48 && offsetof(FrameUniforms, height) == 60 &&
               offsetof(FrameUniforms, maxBounces) == 64 && offsetof(FrameUniforms, samplesPerPass) == 92 &&
               offsetof(FrameUniforms, background) == 96 && offsetof(FrameUniforms, punctualCount) == 108 &&
-              offsetof(FrameUniforms, lensRadius) == 112 && offsetof(FrameUniforms, sphereLightCount) == 124 &&
-              offsetof(FrameUniforms, envWidth) == 128 && offsetof(FrameUniforms, envHeight) == 140 &&
-              offsetof(FrameUniforms, misMode) == 144 && offsetof(FrameUniforms, debugMode) == 148 &&
-              offsetof(FrameUniforms, time) == 156);
+              offsetof(FrameUniforms, lensRadius) == 112 && offsetof(FrameUniforms, sphereLightCount) == 120 &&
+              offsetof(FrameUniforms, envWidth) == 124 && offsetof(FrameUniforms, envHeight) == 136 &&
+              offsetof(FrameUniforms, misMode) == 140 && offsetof(FrameUniforms, instanceCount) == 144 &&
+              offsetof(FrameUniforms, time) == 148 && offsetof(FrameUniforms, topLightCount) == 152 &&
+              offsetof(FrameUniforms, envLuminance) == 156 && offsetof(FrameUniforms, lightPickUniform) == 164 &&
+              offsetof(FrameUniforms, topRoot) == 168 && offsetof(FrameUniforms, lightGridOffset) == 172 &&
+              offsetof(FrameUniforms, textureSaturation) == 180 && offsetof(FrameUniforms, renderDistance) == 184 &&
+              offsetof(FrameUniforms, flags) == 188);
 #endif
 // FrameUniforms.flags. NO_JITTER: camera rays go through pixel centres (no anti-aliasing; the
 // random draws are made all the same, so the rest of each path's numbers do not change).
@@ -107,7 +104,7 @@ static_assert(sizeof(FrameUniforms) == 208 && offsetof(FrameUniforms, textureSat
 // estimates from its sums, and one that replaces them has no estimate (lib/trace_outputs.glsl).
 #define PN_TRACE_PIXEL_ESTIMATES 16u
 
-// Per-dispatch constants, 32 bytes.
+// Per-dispatch constants, 48 bytes.
 PN_STRUCT(PassPush) {
     uint passIndex;      // which progressive pass this is; with seed it decorrelates samples
     uint mode;           // pass-specific (raybench mode, test kernel mode)

@@ -28,22 +28,40 @@ namespace penumbra::shader {
 // The light grid (render/light_grid.h): for every cell of a grid over the scene and every bin of
 // shading normals, a table that picks among the light tree's clusters (its nodes on one level L,
 // and leaves above it) by their importance bound over the whole cell and bin, in place of the
-// walk's importance levels. Words after the tree's records in its buffer, from
-// FrameUniforms.lightGridOffset: origin (3 floats), inverse cell size, cells along x, y and z,
-// the clusters' count, L, the first table's word, the first mass's word; at PN_LIGHT_GRID_PREFIXES
-// the cluster of every trail prefix of L bits (2^L words), then each cluster's words (node word,
-// level, first light entry, lights); then per cluster an alias table over its lights by power
-// (what the walk below it would choose), one entry per light: (threshold | alias << 17, LightRef);
-// then per LightRef its mass in its cluster's table; then per cell (x fastest) and bin, the tree
-// root's bound over the cell and bin (a float: the tree's weight against the top-level lights);
-// then per cell and bin, one alias entry per cluster: (threshold | alias << 17, mass). Every word
+// walk's importance levels. It is a run of words after the tree's records in the same buffer, from
+// FrameUniforms.lightGridOffset: a LightGridHeader; at PN_LIGHT_GRID_PREFIXES the cluster of every
+// trail prefix of L bits (2^L words), then each cluster's PN_LIGHT_GRID_CLUSTER_WORDS words and
+// the clusters' light entries; the header names where the later sections start. Every word
 // offset is from the grid's first word.
-#define PN_LIGHT_GRID_COUNT 7u             // header word: the clusters
-#define PN_LIGHT_GRID_LEVELS 8u            // header word: L
-#define PN_LIGHT_GRID_FIRST_TABLE 9u       // header word: where the tables start
-#define PN_LIGHT_GRID_FIRST_MASS 10u       // header word: where the lights' masses start (one per LightRef)
-#define PN_LIGHT_GRID_FIRST_TREE 11u       // header word: where the tree's weights start (one per table)
-#define PN_LIGHT_GRID_PREFIXES 16u         // word of the prefix -> cluster map
+//   clusters' words:  node word, level, first light entry, lights (0: walk below the cluster)
+//   light entries:    per cluster an alias table over its lights by power (what the walk below
+//                     it would choose), one entry per light: (threshold | alias << 17, LightRef)
+//   firstMass:        per LightRef its mass in its cluster's table
+//   firstTree:        per cell (x fastest) and bin, the tree root's bound over the cell and bin
+//                     (a float: the tree's weight against the top-level lights)
+//   firstTable:       per cell and bin, one alias entry per cluster: (threshold | alias << 17, mass)
+// The header, 64 bytes. lightGridOffset is a multiple of its 16 words, so that GLSL reads it as an
+// element of a LightGridHeader array over the same buffer (lib/light_sampler.glsl).
+PN_STRUCT(LightGridHeader) {
+    vec3 origin;            // the grid's lower corner
+    float inverseCellSize;  // 1 / the edge of its cubic cells
+    uint cellsX;            // cells along x, y and z
+    uint cellsY;
+    uint cellsZ;
+    uint clusterCount;      // clusters the tables pick among
+    uint levels;            // L, the tree level of the clusters
+    uint firstTable;        // word of the first cell and bin's alias table
+    uint firstMass;         // word of the first LightRef's mass
+    uint firstTree;         // word of the first cell and bin's tree weight
+    uint pad[4];
+};
+#ifdef __cplusplus
+static_assert(sizeof(LightGridHeader) == 64 && offsetof(LightGridHeader, inverseCellSize) == 12 &&
+              offsetof(LightGridHeader, cellsX) == 16 && offsetof(LightGridHeader, clusterCount) == 28 &&
+              offsetof(LightGridHeader, levels) == 32 && offsetof(LightGridHeader, firstTable) == 36 &&
+              offsetof(LightGridHeader, firstMass) == 40 && offsetof(LightGridHeader, firstTree) == 44);
+#endif
+#define PN_LIGHT_GRID_PREFIXES 16u         // word of the prefix -> cluster map: right after the header
 #define PN_LIGHT_GRID_CLUSTER_WORDS 4u     // per cluster: node word, level, first light entry, lights (0: walk below)
 #define PN_LIGHT_GRID_MAX_LEVELS 8u        // at most 256 clusters
 #define PN_LIGHT_GRID_BINS 6u              // shading normals by their largest component: +x, -x, +y, -y, +z, -z
@@ -51,8 +69,8 @@ namespace penumbra::shader {
 #define PN_LIGHT_GRID_ALIAS_SHIFT 17u      // an alias entry's word: threshold (0 to 2^16, 17 bits) | alias << 17
 #define PN_LIGHT_GRID_THRESHOLD_MASK 0x1ffffu
 #ifdef __cplusplus
-static_assert(PN_LIGHT_GRID_FIRST_TABLE < PN_LIGHT_GRID_PREFIXES && PN_LIGHT_GRID_MAX_LEVELS < 15,
-              "the light grid's header words come before its prefixes; an alias fits in 15 bits");
+static_assert(sizeof(LightGridHeader) == 4 * PN_LIGHT_GRID_PREFIXES && PN_LIGHT_GRID_MAX_LEVELS < 15,
+              "the light grid's prefixes follow its header; an alias fits in 15 bits");
 static_assert(PN_LIGHT_GRID_ALIAS_SHIFT == PN_LIGHT_GRID_MASS_BITS + 1 &&
                   PN_LIGHT_GRID_THRESHOLD_MASK == (1u << PN_LIGHT_GRID_ALIAS_SHIFT) - 1u,
               "an alias entry's threshold (up to a whole 2^16) fits below its alias");
