@@ -92,8 +92,14 @@ struct LightPick {
     float pmf;  // probability of this pick at p
 };
 
-// The light grid (render/light_grid.h): the words after the tree's records in its buffer.
+// The light grid (render/light_grid.h): the words after the tree's records in its buffer, and
+// its header, element frame.lightGridOffset / PN_LIGHT_GRID_PREFIXES of the same buffer seen as
+// headers (shared/lights.h).
 layout(std430, set = 0, binding = PN_BINDING_LIGHT_TREE) readonly buffer LightGridBuffer { uint lightGrid[]; };
+layout(std430, set = 0, binding = PN_BINDING_LIGHT_TREE) readonly buffer LightGridHeaderBuffer {
+    LightGridHeader lightGridHeaders[];
+};
+#define PN_LIGHT_GRID_HEADER lightGridHeaders[frame.lightGridOffset / PN_LIGHT_GRID_PREFIXES]
 
 // The grid's table for the cell that holds p and the bin of normal n (cell * PN_LIGHT_GRID_BINS +
 // bin); PN_NO_HIT where the walk weighs the tree's first levels itself: no grid, no surface, or p
@@ -101,15 +107,14 @@ layout(std430, set = 0, binding = PN_BINDING_LIGHT_TREE) readonly buffer LightGr
 uint lightGridTable(vec3 p, vec3 n) {
     uint base = frame.lightGridOffset;
     if (!PN_HAS(PN_FEATURE_LIGHT_GRID) || base == 0u) return PN_NO_HIT;
-    vec3 origin = uintBitsToFloat(uvec3(lightGrid[base], lightGrid[base + 1u], lightGrid[base + 2u]));
-    return lightGridTableIndex((p - origin) * uintBitsToFloat(lightGrid[base + 3u]), lightGrid[base + 4u],
-                               lightGrid[base + 5u], lightGrid[base + 6u], n);
+    return lightGridTableIndex((p - PN_LIGHT_GRID_HEADER.origin) * PN_LIGHT_GRID_HEADER.inverseCellSize,
+                               PN_LIGHT_GRID_HEADER.cellsX, PN_LIGHT_GRID_HEADER.cellsY, PN_LIGHT_GRID_HEADER.cellsZ, n);
 }
 
 // The first word of a grid table's alias entries.
 uint lightGridTableWord(uint table) {
     uint base = frame.lightGridOffset;
-    return base + lightGrid[base + PN_LIGHT_GRID_FIRST_TABLE] + table * 2u * lightGrid[base + PN_LIGHT_GRID_COUNT];
+    return base + PN_LIGHT_GRID_HEADER.firstTable + table * 2u * PN_LIGHT_GRID_HEADER.clusterCount;
 }
 
 // The light tree's weight at p against the top-level lights, and its root's childOrLight; 0 when
@@ -122,7 +127,7 @@ float lightTreeWeight(vec3 p, vec3 n, uint table, out uint root) {
     if (table != PN_NO_HIT) {
         uint base = frame.lightGridOffset;
         root = lightTree[0].childOrLight;
-        return uintBitsToFloat(lightGrid[base + lightGrid[base + PN_LIGHT_GRID_FIRST_TREE] + table]);
+        return uintBitsToFloat(lightGrid[base + PN_LIGHT_GRID_HEADER.firstTree + table]);
     }
     LightTreeNode node = lightTree[0];
     root = node.childOrLight;
@@ -144,7 +149,7 @@ uint aliasDraw(uint entries, uint count, inout uint rng) {
 
 // A cluster drawn from a grid table; pmf is multiplied by its probability.
 uint pickGridCluster(uint table, inout float pmf, inout uint rng) {
-    uint clusters = lightGrid[frame.lightGridOffset + PN_LIGHT_GRID_COUNT];
+    uint clusters = PN_LIGHT_GRID_HEADER.clusterCount;
     uint cluster = aliasDraw(table, clusters, rng);
     pmf *= lightGridProbability(lightGrid[table + 2u * cluster + 1u], clusters);
     return cluster;
@@ -154,14 +159,14 @@ uint pickGridCluster(uint table, inout float pmf, inout uint rng) {
 // light entry and its lights (0: walk below it).
 uvec4 lightGridCluster(uint cluster) {
     uint base = frame.lightGridOffset;
-    uint at = base + PN_LIGHT_GRID_PREFIXES + (1u << lightGrid[base + PN_LIGHT_GRID_LEVELS]) + PN_LIGHT_GRID_CLUSTER_WORDS * cluster;
+    uint at = base + PN_LIGHT_GRID_PREFIXES + (1u << PN_LIGHT_GRID_HEADER.levels) + PN_LIGHT_GRID_CLUSTER_WORDS * cluster;
     return uvec4(lightGrid[at], lightGrid[at + 1u], lightGrid[at + 2u], lightGrid[at + 3u]);
 }
 
 // A light's probability within its grid cluster (lights > 0): its mass over the cluster's.
 float lightInClusterProbability(uint ref, uint lights) {
     uint base = frame.lightGridOffset;
-    return lightGridProbability(lightGrid[base + lightGrid[base + PN_LIGHT_GRID_FIRST_MASS] + ref], lights);
+    return lightGridProbability(lightGrid[base + PN_LIGHT_GRID_HEADER.firstMass + ref], lights);
 }
 
 // A light of a grid cluster drawn by power from the cluster's alias table: the choice the walk
@@ -259,9 +264,9 @@ float lightPickPmf(uint ref, vec3 p, vec3 n) {
     uint depth = 0u;
     if (table != PN_NO_HIT) {
         uint base = frame.lightGridOffset;
-        uint prefixMask = (1u << lightGrid[base + PN_LIGHT_GRID_LEVELS]) - 1u;
+        uint prefixMask = (1u << PN_LIGHT_GRID_HEADER.levels) - 1u;
         uint index = lightGrid[base + PN_LIGHT_GRID_PREFIXES + (r.trailLo & prefixMask)];
-        pmf *= lightGridProbability(lightGrid[lightGridTableWord(table) + 2u * index + 1u], lightGrid[base + PN_LIGHT_GRID_COUNT]);
+        pmf *= lightGridProbability(lightGrid[lightGridTableWord(table) + 2u * index + 1u], PN_LIGHT_GRID_HEADER.clusterCount);
         uvec4 cluster = lightGridCluster(index);
         if (cluster.w != 0u) return pmf * lightInClusterProbability(ref, cluster.w);
         node = cluster.x;

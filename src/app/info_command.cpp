@@ -9,8 +9,9 @@
 #include "app/common_options.h"
 #include "app/info_ranks.h"
 #include "app/render_ranks.h"
-#include "render/light_tree.h"
 #include "render/gpu_scene.h"
+#include "render/light_grid.h"
+#include "render/light_tree.h"
 #include "scene/instances.h"
 
 namespace penumbra::app {
@@ -41,10 +42,11 @@ void printScene(const std::string& name, const std::string& map, const Environme
                 "of %zu nodes, leaves at depth %.1f on average, %u at most, root 1), loaded in %.0f ms\n",
                 scene.name.c_str(), tris, scene.materials.size(), arrays.lightRefs.size(), arrays.topLightCount,
                 arrays.lightTree.size(), lightDepth.mean, lightDepth.max, loadMs);
-    if (!arrays.lightGrid.empty())
-        std::printf("  light grid: %u clusters picked from %ux%ux%u cells x %u normal bins, %.1f MB\n", arrays.lightGrid[PN_LIGHT_GRID_COUNT],
-                    arrays.lightGrid[4], arrays.lightGrid[5], arrays.lightGrid[6], PN_LIGHT_GRID_BINS,
-                    double(arrays.lightGrid.size()) * 4.0 / 1e6);
+    if (!arrays.lightGrid.empty()) {
+        const shader::LightGridHeader grid = lightGridHeader(arrays.lightGrid);
+        std::printf("  light grid: %u clusters picked from %ux%ux%u cells x %u normal bins, %.1f MB\n", grid.clusterCount,
+                    grid.cellsX, grid.cellsY, grid.cellsZ, PN_LIGHT_GRID_BINS, double(arrays.lightGrid.size()) * 4.0 / 1e6);
+    }
     std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, %s in %.2f ms\n", s.nodes,
                 s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.bvhFromCache ? "read from the cache" : "built",
                 arrays.buildMilliseconds);

@@ -1,7 +1,7 @@
 #include "interact/group_drag.h"
 
 #include "interact/object_drag.h"
-#include "render/scene_objects.h"
+#include "render/picking.h"
 #include "scene/sphere_groups.h"
 
 namespace penumbra::viewer {

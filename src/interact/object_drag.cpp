@@ -1,7 +1,7 @@
 #include "interact/object_drag.h"
 
 #include "core/aabb.h"
-#include "render/scene_objects.h"
+#include "render/picking.h"
 #include "scene/objects.h"
 
 namespace penumbra::viewer {

@@ -58,7 +58,6 @@ shader::FrameUniforms makeSceneFrameUniforms(const Camera& camera, Vec3 backgrou
     f.envLuminance = scene.envLuminance;
     f.lightRefCount = scene.lightRefCount;
     f.punctualCount = scene.punctualCount;
-    f.sphereCount = scene.sphereCount;
     f.sphereLightCount = scene.sphereLightCount;
     f.instanceCount = scene.instanceCount;
     f.topRoot = scene.topRoot;

@@ -180,10 +180,20 @@ void addLightGrid(SceneArrays& out) {
     out.lightGrid = buildLightGrid(out.lightTree, bounds, options);
 }
 
+// The light grid's first word in the light tree's buffer (0: no grid): after the tree's records,
+// rounded up to a whole LightGridHeader so that the shaders read the header as one
+// (shared/lights.h).
+std::uint32_t lightGridWord(const SceneArrays& a) {
+    if (a.lightGrid.empty()) return 0;
+    const std::size_t treeWords = a.lightTree.size() * (sizeof(shader::LightTreeNode) / 4);
+    return static_cast<std::uint32_t>((treeWords + PN_LIGHT_GRID_PREFIXES - 1) / PN_LIGHT_GRID_PREFIXES * PN_LIGHT_GRID_PREFIXES);
+}
+
 // The light tree's buffer: its records, then the light grid's words.
 std::vector<std::uint32_t> lightTreeBufferContents(const SceneArrays& a) {
     std::vector<std::uint32_t> words(a.lightTree.size() * (sizeof(shader::LightTreeNode) / 4));
     if (!a.lightTree.empty()) std::memcpy(words.data(), a.lightTree.data(), a.lightTree.size() * sizeof(shader::LightTreeNode));
+    if (!a.lightGrid.empty()) words.resize(lightGridWord(a), 0u);
     words.insert(words.end(), a.lightGrid.begin(), a.lightGrid.end());
     return words;
 }
@@ -447,7 +457,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       wideNodeCount(static_cast<std::uint32_t>(a.wideNodes.size())),
       triCount(static_cast<std::uint32_t>(a.triVerts.size())),
       lightNodeCount(static_cast<std::uint32_t>(a.lightTree.size())),
-      lightGridOffset(a.lightGrid.empty() ? 0u : static_cast<std::uint32_t>(a.lightTree.size() * (sizeof(shader::LightTreeNode) / 4))),
+      lightGridOffset(lightGridWord(a)),
       topLightCount(a.topLightCount),
       lightRefCount(static_cast<std::uint32_t>(a.lightRefs.size())),
       punctualCount(static_cast<std::uint32_t>(a.punctual.size())),

@@ -394,7 +394,6 @@ shader::FrameUniforms InteractiveRenderer::frameUniforms(const Camera& camera, c
     shader::FrameUniforms f = makeSceneFrameUniforms(lens, background_, environment_, rs, *gpuScene_);
     // The torch is the last punctual light, so switching it off is leaving it out of the count.
     if (torchLight_ && !s.torch) --f.punctualCount;
-    f.debugMode = std::uint32_t(shownDebugView(s));
     return f;
 }
 

@@ -138,14 +138,16 @@ double lightGridRealisedProbability(std::span<const std::uint32_t> table, std::u
 
 std::uint32_t lightGridTableAt(std::span<const std::uint32_t> grid, Vec3 p, Vec3 n) {
     if (grid.size() <= PN_LIGHT_GRID_PREFIXES) return PN_NO_HIT;
-    Vec3 origin;
-    float inverseSize;
-    std::memcpy(&origin.x, &grid[0], 4);
-    std::memcpy(&origin.y, &grid[1], 4);
-    std::memcpy(&origin.z, &grid[2], 4);
-    std::memcpy(&inverseSize, &grid[3], 4);
-    const std::uint32_t table = shader::lightGridTableIndex((p - origin) * inverseSize, grid[4], grid[5], grid[6], n);
-    return table == PN_NO_HIT ? PN_NO_HIT : grid[PN_LIGHT_GRID_FIRST_TABLE] + table * 2 * grid[PN_LIGHT_GRID_COUNT];
+    const shader::LightGridHeader h = lightGridHeader(grid);
+    const std::uint32_t table = shader::lightGridTableIndex((p - h.origin) * h.inverseCellSize, h.cellsX, h.cellsY, h.cellsZ, n);
+    return table == PN_NO_HIT ? PN_NO_HIT : h.firstTable + table * 2 * h.clusterCount;
+}
+
+shader::LightGridHeader lightGridHeader(std::span<const std::uint32_t> grid) {
+    if (grid.size() < PN_LIGHT_GRID_PREFIXES) throw Error("light grid: " + std::to_string(grid.size()) + " words hold no header");
+    shader::LightGridHeader header{};
+    std::memcpy(static_cast<void*>(&header), grid.data(), sizeof(header));  // plain words (its vec3 has initialisers)
+    return header;
 }
 
 namespace {
@@ -199,15 +201,18 @@ struct GridLayout {
 
 void writeHeader(std::vector<std::uint32_t>& words, const GridShape& g, const std::vector<Cluster>& clusters,
                  std::uint32_t levels, const ClusterPicks& picks, const GridLayout& at) {
-    auto putFloat = [&](std::size_t word, float v) { std::memcpy(&words[word], &v, 4); };
-    for (int k = 0; k < 3; ++k) putFloat(std::size_t(k), g.origin[k]);
-    putFloat(3, 1.0f / g.cellSize);
-    for (int k = 0; k < 3; ++k) words[4 + std::size_t(k)] = g.dims[k];
-    words[PN_LIGHT_GRID_COUNT] = std::uint32_t(clusters.size());
-    words[PN_LIGHT_GRID_LEVELS] = levels;
-    words[PN_LIGHT_GRID_FIRST_TABLE] = at.firstTable;
-    words[PN_LIGHT_GRID_FIRST_MASS] = at.firstMass;
-    words[PN_LIGHT_GRID_FIRST_TREE] = at.firstTree;
+    shader::LightGridHeader header{};
+    header.origin = g.origin;
+    header.inverseCellSize = 1.0f / g.cellSize;
+    header.cellsX = g.dims[0];
+    header.cellsY = g.dims[1];
+    header.cellsZ = g.dims[2];
+    header.clusterCount = std::uint32_t(clusters.size());
+    header.levels = levels;
+    header.firstTable = at.firstTable;
+    header.firstMass = at.firstMass;
+    header.firstTree = at.firstTree;
+    std::memcpy(words.data(), &header, sizeof(header));
     const std::uint32_t clusterWords = PN_LIGHT_GRID_PREFIXES + (1u << levels);
     for (std::uint32_t i = 0; i < clusters.size(); ++i) {
         const Cluster& c = clusters[i];

@@ -6,8 +6,8 @@
 // and bin (shared/light_importance.h). The bound is widened, not sampled, so a cluster that could
 // light any point of the cell keeps a non-zero probability and the estimator stays unbiased; the
 // walk goes on below the cluster by power, as before. Masses are integers, so the probability the
-// table realises is exactly the one the shaders read back for MIS. Layout: shared/types.h,
-// PN_LIGHT_GRID_*.
+// table realises is exactly the one the shaders read back for MIS. Layout: shared/lights.h,
+// LightGridHeader and PN_LIGHT_GRID_*.
 #pragma once
 
 #include <cstdint>
@@ -15,7 +15,8 @@
 #include <vector>
 
 #include "core/aabb.h"
-#include "shared/types.h"
+#include "shared/geometry.h"  // PN_NO_HIT
+#include "shared/lights.h"
 
 namespace penumbra {
 
@@ -40,6 +41,9 @@ std::vector<std::uint32_t> buildLightGrid(std::span<const shader::LightTreeNode>
 // The first word of the table the shaders read for a point p with shading normal n (as
 // lib/light_sampler.glsl lightGridTable does), or PN_NO_HIT off the grid.
 std::uint32_t lightGridTableAt(std::span<const std::uint32_t> grid, Vec3 p, Vec3 n);
+
+// The header at the start of a grid's words (a grid of fewer words than a header: Error).
+shader::LightGridHeader lightGridHeader(std::span<const std::uint32_t> grid);
 
 // One table's alias entries for non-negative weights (its masses sum to 2^PN_LIGHT_GRID_MASS_BITS
 // times the count; a positive weight gets a positive mass; all zero: every mass zero).

@@ -54,7 +54,7 @@ struct SceneArrays {
     std::uint32_t uniqueMeshes = 0;     // bottom levels built for prototypes
     bvh::TopLevelScratch topLevelScratch;  // host only: reused by every top-level rebuild
     // Host only (never uploaded, so traversal stays lean): for each primitive in leaf order, the
-    // scene object it came from, numbered as sceneObjectOf/objectPrimitive in scene_objects.h.
+    // scene object it came from, numbered as sceneObjectOf/objectPrimitive in picking.h.
     std::vector<std::uint32_t> primitiveObject;
     EnvTable env;  // empty without an environment map
     bvh::BvhStats stats{};

@@ -1,6 +1,6 @@
 // The objects a viewer user can pick and edit: each mesh, then each of the scene's own spheres
 // (the spheres made for sphere lights are lights, not objects). Scene data only; picking them in
-// an image is render/scene_objects.h.
+// an image is render/picking.h.
 #pragma once
 
 #include <cstdint>

@@ -10,7 +10,7 @@
 #include "interact/object_drag.h"
 #include "interact/play_step.h"
 #include "render/interactive_renderer.h"
-#include "render/scene_objects.h"
+#include "render/picking.h"
 #include "scene/animation.h"
 #include "scene/objects.h"
 #include "serve/browser_input.h"

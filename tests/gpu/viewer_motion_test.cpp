@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "render/interactive_renderer.h"
-#include "render/scene_objects.h"
+#include "render/picking.h"
 #include "gpu_fixture.h"
 #include "shared/constants.h"
 

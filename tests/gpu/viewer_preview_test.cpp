@@ -10,7 +10,7 @@
 
 #include "gpu_fixture.h"
 #include "render/interactive_renderer.h"
-#include "render/scene_objects.h"
+#include "render/picking.h"
 #include "scene/presets/mesh_builder.h"
 #include "shared/color.h"
 

@@ -7,7 +7,7 @@
 
 #include "core/error.h"
 #include "render/gpu_scene.h"
-#include "render/scene_objects.h"
+#include "render/picking.h"
 #include "scene/add_model.h"
 #include "scene/objects.h"
 #include "scene/presets/mesh_builder.h"

@@ -6,7 +6,7 @@
 #include "interact/group_drag.h"
 #include "interact/object_drag.h"
 #include "render/gpu_scene.h"
-#include "render/scene_objects.h"
+#include "render/picking.h"
 #include "scene/presets/presets.h"
 #include "scene/sphere_groups.h"
 

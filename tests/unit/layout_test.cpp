@@ -95,6 +95,11 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                                              offsetof(LightTreeNode, phi), offsetof(LightTreeNode, cosThetaO),
                                              offsetof(LightTreeNode, sinThetaO), offsetof(LightTreeNode, cosThetaE),
                                              offsetof(LightTreeNode, childOrLight)});
+        expectMembers(spv, "LightGridHeader", {0, offsetof(LightGridHeader, inverseCellSize), offsetof(LightGridHeader, cellsX),
+                                               offsetof(LightGridHeader, cellsY), offsetof(LightGridHeader, cellsZ),
+                                               offsetof(LightGridHeader, clusterCount), offsetof(LightGridHeader, levels),
+                                               offsetof(LightGridHeader, firstTable), offsetof(LightGridHeader, firstMass),
+                                               offsetof(LightGridHeader, firstTree), offsetof(LightGridHeader, pad)});
         expectMembers(spv, "FrameUniforms",
                       {0, offsetof(FrameUniforms, tanHalfFovY), offsetof(FrameUniforms, cameraRight), offsetof(FrameUniforms, aspect),
                        offsetof(FrameUniforms, cameraUp), offsetof(FrameUniforms, width), offsetof(FrameUniforms, cameraForward),
@@ -103,16 +108,16 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
                        offsetof(FrameUniforms, accel), offsetof(FrameUniforms, seed), offsetof(FrameUniforms, samplesPerPass),
                        offsetof(FrameUniforms, background), offsetof(FrameUniforms, punctualCount),
                        offsetof(FrameUniforms, lensRadius), offsetof(FrameUniforms, focusDistance),
-                       offsetof(FrameUniforms, sphereCount), offsetof(FrameUniforms, sphereLightCount),
+                       offsetof(FrameUniforms, sphereLightCount),
                        offsetof(FrameUniforms, envWidth), offsetof(FrameUniforms, envIntensity),
                        offsetof(FrameUniforms, envRotation), offsetof(FrameUniforms, envHeight),
-                       offsetof(FrameUniforms, misMode), offsetof(FrameUniforms, debugMode),
+                       offsetof(FrameUniforms, misMode),
                        offsetof(FrameUniforms, instanceCount), offsetof(FrameUniforms, time),
                        offsetof(FrameUniforms, topLightCount), offsetof(FrameUniforms, envLuminance),
                        offsetof(FrameUniforms, lightRefCount), offsetof(FrameUniforms, lightPickUniform),
                        offsetof(FrameUniforms, topRoot), offsetof(FrameUniforms, lightGridOffset), offsetof(FrameUniforms, shadowRouletteShare),
                        offsetof(FrameUniforms, textureSaturation), offsetof(FrameUniforms, renderDistance),
-                       offsetof(FrameUniforms, flags), offsetof(FrameUniforms, pad5), offsetof(FrameUniforms, pad6)});
+                       offsetof(FrameUniforms, flags)});
         expectMembers(spv, "Instance", {0, offsetof(Instance, worldToObject), offsetof(Instance, rootNode),
                                         offsetof(Instance, firstPrimitive), offsetof(Instance, primitiveCount),
                                         offsetof(Instance, id)});
@@ -147,6 +152,7 @@ TEST(Layout, GlslOffsetsMatchCppOffsetsInEveryEmbeddedShader) {
     // The reflection must actually have found the structs, or this test proves nothing.
     EXPECT_GE(structsChecked, 12);
     EXPECT_EQ(readMemberOffsets(gpu::shaderCode("trace")).count("SphereLight"), 1u);
+    EXPECT_EQ(readMemberOffsets(gpu::shaderCode("trace")).count("LightGridHeader"), 1u);
     EXPECT_GE(envStructsChecked, 2);  // the tracer and the environment test kernel
 }
 
@@ -156,7 +162,9 @@ TEST(Layout, TriangleArraysHaveTheCppStride) {
     using namespace shader;
     const std::map<std::string, std::uint32_t> strides = readArrayStrides(gpu::shaderCode("trace"));
     const std::pair<const char*, std::size_t> expected[] = {
-        {"TriVerts", sizeof(TriVerts)}, {"TriAttribs", sizeof(TriAttribs)}, {"TriUvs", sizeof(TriUvs)}};
+        {"TriVerts", sizeof(TriVerts)}, {"TriAttribs", sizeof(TriAttribs)}, {"TriUvs", sizeof(TriUvs)},
+        // The header is read as element lightGridOffset / PN_LIGHT_GRID_PREFIXES of an array.
+        {"LightGridHeader", 4 * PN_LIGHT_GRID_PREFIXES}};
     for (auto [name, size] : expected) {
         auto it = strides.find(name);
         ASSERT_NE(it, strides.end()) << name << " has no runtime array in the trace kernel";

@@ -8,6 +8,7 @@
 #include <map>
 #include <random>
 
+#include "core/error.h"
 #include "render/light_grid.h"
 #include "render/light_tree.h"
 #include "shared/light_importance.h"
@@ -84,8 +85,9 @@ std::uint32_t recordAt(std::span<const shader::LightTreeNode> tree, std::uint32_
 // power over the cluster's power that the walk below it would give (to the masses' rounding), and
 // the mass MIS reads back for a light is the one its table realises.
 void expectClusterPicksFollowPower(std::span<const std::uint32_t> grid, std::span<const shader::LightTreeNode> tree) {
-    const std::uint32_t clusters = grid[PN_LIGHT_GRID_COUNT];
-    const std::uint32_t* clusterWords = &grid[PN_LIGHT_GRID_PREFIXES + (1u << grid[PN_LIGHT_GRID_LEVELS])];
+    const shader::LightGridHeader header = lightGridHeader(grid);
+    const std::uint32_t clusters = header.clusterCount;
+    const std::uint32_t* clusterWords = &grid[PN_LIGHT_GRID_PREFIXES + (1u << header.levels)];
     int aliased = 0;
     for (std::uint32_t c = 0; c < clusters; ++c) {
         const std::uint32_t* w = &clusterWords[PN_LIGHT_GRID_CLUSTER_WORDS * c];
@@ -117,7 +119,7 @@ void expectClusterPicksFollowPower(std::span<const std::uint32_t> grid, std::spa
             const std::uint32_t ref = grid[w[2] + 2 * j + 1];
             ASSERT_EQ(below.count(ref), 1u) << "cluster " << c << " entry " << j;
             table.push_back(grid[w[2] + 2 * j]);
-            table.push_back(grid[grid[PN_LIGHT_GRID_FIRST_MASS] + ref]);
+            table.push_back(grid[header.firstMass + ref]);
         }
         for (std::uint32_t j = 0; j < w[3]; ++j) {
             const std::uint32_t ref = grid[w[2] + 2 * j + 1];
@@ -144,8 +146,9 @@ TEST_P(LightGridLevels, CellTablesKeepEveryClusterThatCouldLightAPointOfTheCell)
     options.levels = levels;
     const std::vector<std::uint32_t> grid = buildLightGrid(tree, bounds, options);
     ASSERT_GT(grid.size(), std::size_t(PN_LIGHT_GRID_PREFIXES));
-    ASSERT_EQ(grid[PN_LIGHT_GRID_LEVELS], levels);
-    const std::uint32_t clusters = grid[PN_LIGHT_GRID_COUNT], prefixes = 1u << levels;
+    const shader::LightGridHeader header = lightGridHeader(grid);
+    ASSERT_EQ(header.levels, levels);
+    const std::uint32_t clusters = header.clusterCount, prefixes = 1u << levels;
     ASSERT_GT(clusters, prefixes / 2);
     ASSERT_LE(clusters, prefixes);
     const std::uint32_t* clusterWords = &grid[PN_LIGHT_GRID_PREFIXES + prefixes];
@@ -164,9 +167,9 @@ TEST_P(LightGridLevels, CellTablesKeepEveryClusterThatCouldLightAPointOfTheCell)
         const std::uint32_t table = lightGridTableAt(grid, p, n);
         ASSERT_NE(table, PN_NO_HIT);
         // The tree's weight against the top-level lights: the root's bound over the cell and bin.
-        const std::uint32_t index = (table - grid[PN_LIGHT_GRID_FIRST_TABLE]) / (2 * clusters);
+        const std::uint32_t index = (table - header.firstTable) / (2 * clusters);
         float treeWeight;
-        std::memcpy(&treeWeight, &grid[grid[PN_LIGHT_GRID_FIRST_TREE] + index], 4);
+        std::memcpy(&treeWeight, &grid[header.firstTree + index], 4);
         const shader::LightTreeNode& root = tree[0];
         const shader::LightCluster rootBounds{root.center,    root.radius,    root.axis,      root.phi,
                                               root.cosThetaO, root.sinThetaO, root.cosThetaE, (root.childOrLight & PN_LIGHT_NODE_TWO_SIDED) != 0};
@@ -201,6 +204,12 @@ TEST(LightGrid, ShallowTreesKeepTheWalk) {
     EXPECT_TRUE(buildLightGrid({}, bounds).empty());
 }
 
+// Fewer words than a header is no grid: reading one is an error, not a read past the end.
+TEST(LightGrid, ShortWordsHoldNoHeader) {
+    const std::vector<std::uint32_t> words(PN_LIGHT_GRID_PREFIXES - 1, 0u);
+    EXPECT_THROW(lightGridHeader(words), Error);
+}
+
 TEST(LightGrid, BoundsBeyondFloatsKeepTheWalk) {
     std::mt19937 rng(8);
     const std::vector<shader::LightTreeNode> tree = compactLightTree(buildLightTree(randomLights(rng, 400), 0, 0));
@@ -212,7 +221,8 @@ TEST(LightGrid, BoundsBeyondFloatsKeepTheWalk) {
     point.grow(Vec3{1, 2, 3});  // no extent at all: one cell
     const std::vector<std::uint32_t> grid = buildLightGrid(tree, point);
     ASSERT_FALSE(grid.empty());
-    EXPECT_EQ(grid[4] * grid[5] * grid[6], 1u);
+    const shader::LightGridHeader header = lightGridHeader(grid);
+    EXPECT_EQ(header.cellsX * header.cellsY * header.cellsZ, 1u);
 }
 
 }  // namespace

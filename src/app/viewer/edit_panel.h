@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "render/scene_objects.h"
+#include "render/picking.h"
 #include "render/view_settings.h"
 #include "scene/light_edit.h"
 #include "scene/scene.h"

@@ -27,7 +27,7 @@
 #include "bvh/depth_boxes.h"
 #include "core/error.h"
 #include "render/interactive_renderer.h"
-#include "render/scene_objects.h"
+#include "render/picking.h"
 #include "scene/add_model.h"
 #include "scene/animation.h"
 #include "scene/sphere_groups.h"

@@ -1,4 +1,4 @@
-#include "render/scene_objects.h"
+#include "render/picking.h"
 
 #include <cmath>
 
