@@ -12,6 +12,7 @@
 #include "render/light_tree.h"
 #include "render/gpu_scene.h"
 #include "scene/instances.h"
+#include "render/walks.h"
 
 namespace penumbra::app {
 namespace {
@@ -126,7 +127,7 @@ void registerInfo(CLI::App& app, Action& action) {
     cmd->add_option("scene", args->scene, "built-in scene or scene file");
     cmd->add_option("--map", args->map, "level of a .wad file");
     addDeviceOption(*cmd, args->device);
-    cmd->add_option("--accel", args->accel, "the walk whose GPU memory to report: bvh, wide (builds the wide BVH) or brute");
+    cmd->add_option("--accel", args->accel, "the walk whose GPU memory to report (builds its records): " + walkNameList());
     cmd->add_flag("--mpi", args->mpi, "list every rank's host and device (implied when started by mpirun)");
     addBvhCacheOption(*cmd);
     addEnvironmentOptions(*cmd, args->env);
