@@ -62,11 +62,12 @@ std::size_t expectWalksAgreeWithTheBvh(const gpu::Context& ctx, const SceneArray
         for (std::size_t i = 0; i < rays.size(); ++i) {
             const shader::HitRecord& b = bvh.closest[i];
             const shader::HitRecord& o = other.closest[i];
-            ASSERT_EQ(o.triangle != PN_NO_HIT, b.triangle != PN_NO_HIT) << "ray " << i;
+            EXPECT_EQ(o.triangle != PN_NO_HIT, b.triangle != PN_NO_HIT) << "ray " << i;
             EXPECT_EQ(other.occluded[i], bvh.occluded[i]) << "any-hit, ray " << i;
+            if (::testing::Test::HasFailure()) return hits;
             if (b.triangle == PN_NO_HIT) continue;
             const float tol = 1e-5f * std::max(1.0f, b.t);
-            ASSERT_NEAR(o.t, b.t, tol) << "ray " << i;
+            EXPECT_NEAR(o.t, b.t, tol) << "ray " << i;
             if (o.triangle != b.triangle)
                 EXPECT_TRUE(tiesAt(arrays, o.triangle, rays[i], b.t))
                     << "ray " << i << ": primitive " << o.triangle << ", the BVH's " << b.triangle;
@@ -84,7 +85,9 @@ TEST_F(GpuTest, StacklessAndObjectsAgreeWithTheBvhOnSoupsOfMeshes) {
         const SceneArrays arrays = buildSceneArrays(scene);
         const auto rays = boxRays(scene.bounds(), 1500, seed + 10);
         const std::size_t hits = expectWalksAgreeWithTheBvh(*ctx, arrays, rays, {Accel::Stackless, Accel::Objects});
-        if (seed > 1) EXPECT_GT(hits, rays.size() / 10) << "too few rays hit for the test to mean much";
+        if (seed > 1) {
+            EXPECT_GT(hits, rays.size() / 10) << "too few rays hit for the test to mean much";
+        }
     }
 }
 
@@ -137,13 +140,16 @@ TEST_F(GpuTest, StacklessAndObjectsAgreeWithTheBvhOnAWadMap) {
     EXPECT_GT(hits, rays.size() / 3) << "too few rays hit the map for the test to mean much";
 }
 
+// The stackless walk only: the bunny is one mesh, so objects is brute force over 69,666
+// triangles, which lavapipe gets wrong from 32,768 primitives per ray up, as it does brute force
+// (docs/RELIABILITY.md; soups of 32,000 triangles in 2 or 8 meshes agree, of 70,000 in 1 or 4 do not).
 TEST_F(GpuTest, StacklessAgreesWithTheBvhOnTheBunny) {
     const std::filesystem::path bunny = "/usr/share/glmark2/models/bunny.obj";
     PENUMBRA_REQUIRE_ASSET(bunny);
     const Scene scene = loadSceneFile(bunny, LoadOptions{});
     const SceneArrays arrays = buildSceneArrays(scene);
     const auto rays = boxRays(scene.bounds(), 1000, 51);
-    const std::size_t hits = expectWalksAgreeWithTheBvh(*ctx, arrays, rays, {Accel::Stackless, Accel::Objects});
+    const std::size_t hits = expectWalksAgreeWithTheBvh(*ctx, arrays, rays, {Accel::Stackless});
     EXPECT_GT(hits, rays.size() / 4) << "too few rays hit the bunny for the test to mean much";
 }
 
