@@ -55,6 +55,14 @@ void printScene(const std::string& name, const std::string& map, const Environme
                     arrays.wideNodes.size(), sizeof(shader::WideNode), arrays.wideDepth,
                     tris ? double(arrays.wideNodes.size() * sizeof(shader::WideNode)) / double(tris) : 0.0,
                     arrays.wideMilliseconds);
+    if (!arrays.stacklessNodes.empty())
+        std::printf("  stackless (--accel stackless): %zu threaded nodes of %zu bytes, %.1f bytes per primitive (the "
+                    "binary walk's records stay uploaded beside them)\n",
+                    arrays.stacklessNodes.size(), sizeof(shader::StacklessNode),
+                    tris ? double(arrays.stacklessNodes.size() * sizeof(shader::StacklessNode)) / double(tris) : 0.0);
+    if (!arrays.objectBoxes.empty())
+        std::printf("  objects (--accel objects): %zu boxes of %zu bytes%s\n", arrays.objectBoxes.size(),
+                    sizeof(shader::ObjectBox), arrays.instances.empty() ? ", one per scene object" : ", one per instance");
     std::printf("  %zu textures, %zu punctual lights, %u spheres and %zu sprites (in the triangle count), %zu sphere lights\n",
                 scene.textures.size(), arrays.punctual.size(), arrays.sphereCount, scene.sprites.size(),
                 arrays.sphereLights.size());
