@@ -15,13 +15,13 @@ Hit traverseObjects(vec3 o, vec3 d, float tMax, bool anyHit) {
         ObjectBox box = objectBoxes[k];
         PN_COUNT_NODE();
         if (slabEntry(box.boundsMin, box.boundsMax, o, invD, hit.t) == PN_INFINITY) continue;
-        if (box.instance == PN_NO_HIT) {
+        if (box.listed != 0u) {
             for (uint e = box.first; e < box.first + box.count; ++e) {
                 uint i = objectPrims[e];
                 PN_COUNT_TRIANGLE();
                 float t, u, v;
                 if (hitPrimitive(i, o, d, hit.t, anyHit, t, u, v)) {
-                    hit = Hit(t, i, u, v, PN_NO_HIT);
+                    hit = Hit(t, i, u, v, box.instance);
                     if (anyHit) return hit;
                 }
             }

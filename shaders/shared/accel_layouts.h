@@ -43,24 +43,27 @@ PN_STRUCT(StacklessNode) {
 
 // One object's box for --accel objects (the step before a BVH in "Casually Pathtracing with
 // WebGPU"), 48 bytes, world space.
-//   instance == PN_NO_HIT: a flat scene's object; its primitive slots are objectPrims[first, first + count)
-//   otherwise: an instance of a two-level scene; slots [first, first + count) tested in its space
+//   listed != 0: a scene object (a mesh, a sphere) of a flat scene or of an identity instance;
+//                its primitive slots are objectPrims[first, first + count), tested with the world ray
+//   listed == 0: a moved instance of a two-level scene; slots [first, first + count) tested in its space
+// instance: what a hit reports as Hit.instance (PN_NO_HIT in flat scenes).
 PN_STRUCT(ObjectBox) {
     vec3 boundsMin;  // 12
     uint first;      //  4
     vec3 boundsMax;  // 12
     uint count;      //  4
     uint instance;   //  4
-    uint pad0;       // 12: padding to 16-byte alignment
+    uint listed;     //  4
+    uint pad0;       //  8: padding to 16-byte alignment
     uint pad1;
-    uint pad2;
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(StacklessNode) == 32 && offsetof(StacklessNode, escape) == 12 &&
               offsetof(StacklessNode, boundsMax) == 16 && offsetof(StacklessNode, leaf) == 28);
 static_assert(sizeof(ObjectBox) == 48 && offsetof(ObjectBox, first) == 12 && offsetof(ObjectBox, boundsMax) == 16 &&
-              offsetof(ObjectBox, count) == 28 && offsetof(ObjectBox, instance) == 32);
+              offsetof(ObjectBox, count) == 28 && offsetof(ObjectBox, instance) == 32 &&
+              offsetof(ObjectBox, listed) == 36);
 static_assert(PN_STACKLESS_COUNT_MASK == (1u << PN_STACKLESS_COUNT_BITS) - 1u);
 static_assert(PN_ACCEL_OBJECTS != PN_ACCEL_BVH && PN_ACCEL_OBJECTS != PN_ACCEL_BRUTE && PN_ACCEL_OBJECTS != PN_ACCEL_WIDE &&
               PN_ACCEL_STACKLESS > PN_ACCEL_OBJECTS);

@@ -62,7 +62,8 @@ void printScene(const std::string& name, const std::string& map, const Environme
                     tris ? double(arrays.stacklessNodes.size() * sizeof(shader::StacklessNode)) / double(tris) : 0.0);
     if (!arrays.objectBoxes.empty())
         std::printf("  objects (--accel objects): %zu boxes of %zu bytes%s\n", arrays.objectBoxes.size(),
-                    sizeof(shader::ObjectBox), arrays.instances.empty() ? ", one per scene object" : ", one per instance");
+                    sizeof(shader::ObjectBox), arrays.instances.empty() ? ", one per scene object"
+                                                                : ", one per scene object of the world, one per moved instance");
     std::printf("  %zu textures, %zu punctual lights, %u spheres and %zu sprites (in the triangle count), %zu sphere lights\n",
                 scene.textures.size(), arrays.punctual.size(), arrays.sphereCount, scene.sprites.size(),
                 arrays.sphereLights.size());

@@ -100,6 +100,7 @@ TEST_F(GpuTest, ObjectsGetOneBoxPerMeshHoldingItsPrimitives) {
     for (const shader::ObjectBox& box : arrays.objectBoxes) {
         EXPECT_EQ(box.count, 100u);
         EXPECT_EQ(box.instance, PN_NO_HIT);
+        EXPECT_EQ(box.listed, 1u);
         for (std::uint32_t e = box.first; e < box.first + box.count; ++e) {
             const shader::TriVerts& t = arrays.triVerts[arrays.objectPrims[e]];
             for (Vec3 p : {t.v0, t.v0 + t.e1, t.v0 + t.e2})
@@ -112,12 +113,21 @@ TEST_F(GpuTest, ObjectsGetOneBoxPerMeshHoldingItsPrimitives) {
     EXPECT_EQ(arrays.walk, PN_ACCEL_OBJECTS);
 }
 
-// Two levels: the stackless walk enters instances from the top level and resumes it; objects are
-// the instances' boxes.
+// Two levels: the stackless walk enters instances from the top level and resumes it; objects
+// split the world's identity instance by object and give each moved instance one box.
 TEST_F(GpuTest, StacklessAndObjectsAgreeWithTheBvhOverInstances) {
     const Scene scene = instancedRoom();
     const SceneArrays arrays = buildSceneArrays(scene);
     ASSERT_FALSE(arrays.instances.empty());
+    SceneArrays withBoxes = arrays;
+    buildWalkRecords(withBoxes, Accel::Objects);
+    std::size_t moved = 0, worldBoxes = 0;
+    for (const shader::ObjectBox& b : withBoxes.objectBoxes) {
+        moved += b.listed == 0;
+        worldBoxes += b.listed != 0 && b.instance == 0;
+    }
+    EXPECT_EQ(moved + 1, arrays.instances.size()) << "one box per moved instance";
+    EXPECT_GT(worldBoxes, 1u) << "the world's meshes get a box each";
     const auto rays = boxRays(scene.bounds(), 2000, 31);
     const GpuHits bvh = traceOnGpu(*ctx, arrays, rays, Accel::Bvh);
     const std::size_t hits = expectWalksAgreeWithTheBvh(*ctx, arrays, rays, {Accel::Stackless, Accel::Objects});

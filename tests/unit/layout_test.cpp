@@ -178,8 +178,8 @@ TEST(Layout, WalkRecordsMatchInTheKernelsThatWalkThem) {
         expectMembers(spv, "StacklessNode", {0, offsetof(StacklessNode, escape), offsetof(StacklessNode, boundsMax),
                                              offsetof(StacklessNode, leaf)});
         expectMembers(spv, "ObjectBox", {0, offsetof(ObjectBox, first), offsetof(ObjectBox, boundsMax), offsetof(ObjectBox, count),
-                                         offsetof(ObjectBox, instance), offsetof(ObjectBox, pad0), offsetof(ObjectBox, pad1),
-                                         offsetof(ObjectBox, pad2)});
+                                         offsetof(ObjectBox, instance), offsetof(ObjectBox, listed), offsetof(ObjectBox, pad0),
+                                         offsetof(ObjectBox, pad1)});
         const std::map<std::string, std::uint32_t> strides = readArrayStrides(code);
         EXPECT_EQ(strides.at("StacklessNode"), sizeof(StacklessNode));
         EXPECT_EQ(strides.at("ObjectBox"), sizeof(ObjectBox));
