@@ -1,5 +1,6 @@
 // Scene traversal: the BVH (explicit stack, near child first) and brute force, which is the
-// oracle for tests and shows what the BVH buys. Include after scene_bindings.glsl.
+// oracle for tests and shows what the BVH buys; the wide, stackless and per-object walks are in
+// their own files, included below. Include after scene_bindings.glsl.
 #ifndef PN_BVH_GLSL
 #define PN_BVH_GLSL
 
@@ -191,6 +192,8 @@ Hit traverseBrute(vec3 o, vec3 d, float tMax, bool anyHit) {
 }
 
 #include "lib/wide_bvh.glsl"
+#include "lib/stackless_bvh.glsl"
+#include "lib/object_boxes.glsl"
 
 // One ray through the chosen acceleration structure; anyHit for shadow rays.
 Hit traceRay(vec3 o, vec3 d, float tMax, bool anyHit) {
@@ -198,9 +201,11 @@ Hit traceRay(vec3 o, vec3 d, float tMax, bool anyHit) {
     if (frame.renderDistance > 0.0)
         tMax = min(tMax, renderDistanceExit(o.x - frame.cameraPosition.x, o.z - frame.cameraPosition.z, d.x, d.z,
                                             frame.renderDistance));
-    if (PN_HAS(PN_FEATURE_WIDE_BVH) && frame.accel == PN_ACCEL_WIDE) return traverseWide(o, d, tMax, anyHit);
-    return PN_HAS(PN_FEATURE_BRUTE_FORCE) && frame.accel == PN_ACCEL_BRUTE ? traverseBrute(o, d, tMax, anyHit)
-                                                                           : traverseBvh(o, d, tMax, anyHit);
+    if (PN_HAS(PN_FEATURE_WIDE_BVH) && PN_WALK_IS(PN_ACCEL_WIDE)) return traverseWide(o, d, tMax, anyHit);
+    if (PN_HAS(PN_FEATURE_BRUTE_FORCE) && PN_WALK_IS(PN_ACCEL_BRUTE)) return traverseBrute(o, d, tMax, anyHit);
+    if (PN_WALK_IS(PN_ACCEL_STACKLESS)) return traverseStackless(o, d, tMax, anyHit);
+    if (PN_WALK_IS(PN_ACCEL_OBJECTS)) return traverseObjects(o, d, tMax, anyHit);
+    return traverseBvh(o, d, tMax, anyHit);
 }
 
 Hit traceClosest(vec3 o, vec3 d, float tMax) {

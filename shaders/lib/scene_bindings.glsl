@@ -2,6 +2,8 @@
 #ifndef PN_SCENE_BINDINGS_GLSL
 #define PN_SCENE_BINDINGS_GLSL
 
+#include "shared/accel_layouts.h"
+
 layout(std430, set = 0, binding = PN_BINDING_NODES) readonly buffer NodeBuffer { BvhPair nodes[]; };
 layout(std430, set = 0, binding = PN_BINDING_TRI_VERTS) readonly buffer TriVertBuffer { TriVerts triVerts[]; };
 layout(std430, set = 0, binding = PN_BINDING_TRI_ATTRIBS) readonly buffer TriAttribBuffer { TriAttribs triAttribs[]; };
@@ -16,11 +18,19 @@ layout(std430, set = 0, binding = PN_BINDING_TEXELS) readonly buffer TexelBuffer
 layout(std430, set = 0, binding = PN_BINDING_PUNCTUAL) readonly buffer PunctualBuffer { PunctualLight punctualLights[]; };
 layout(std430, set = 0, binding = PN_BINDING_SPHERE_LIGHTS) readonly buffer SphereLightBuffer { SphereLight sphereLights[]; };
 layout(std430, set = 0, binding = PN_BINDING_INSTANCES) readonly buffer InstanceBuffer { Instance instances[]; };
+layout(std430, set = 0, binding = PN_BINDING_STACKLESS_NODES) readonly buffer StacklessBuffer { StacklessNode stacklessNodes[]; };
+layout(std430, set = 0, binding = PN_BINDING_OBJECT_BOXES) readonly buffer ObjectBoxBuffer { ObjectBox objectBoxes[]; };
+layout(std430, set = 0, binding = PN_BINDING_OBJECT_PRIMS) readonly buffer ObjectPrimBuffer { uint objectPrims[]; };
 layout(push_constant) uniform PushBlock { PassPush push; };
 
 // What this pipeline was specialised for (PN_FEATURE_*); branches on it vanish at pipeline
 // creation. PN_HAS must stay a macro: a function argument would not be a constant.
 layout(constant_id = 0) const uint pnFeatures = PN_FEATURE_ALL;
 #define PN_HAS(feature) ((pnFeatures & (feature)) != 0u)
+// The walk this pipeline was made for (PN_ACCEL_*; render/walks.h), a choice apart from the
+// capability bits above (issue 38): specialised, the other walks' code vanishes; PN_WALK_ANY (the
+// default) keeps them all and reads frame.accel for each ray.
+layout(constant_id = 1) const uint pnWalk = PN_WALK_ANY;
+#define PN_WALK_IS(walk) (pnWalk == PN_WALK_ANY ? frame.accel == (walk) : pnWalk == (walk))
 
 #endif

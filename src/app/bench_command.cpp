@@ -9,6 +9,7 @@
 #include "image/write.h"
 #include "render/ray_bench.h"
 #include "render/viewer_bench.h"
+#include "render/walks.h"
 
 namespace penumbra::app {
 namespace {
@@ -255,7 +256,7 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--height", args->height, "frame height (default 1080)");
     cmd->add_option("--bounces", args->bounces, "bounces of the timed frame (default 4)");
     cmd->add_option("--repeats", args->repeats, "timed runs per figure; medians are reported (default 20)");
-    cmd->add_option("--accel", args->accel, "bvh, wide (compressed 8-wide BVH) or brute");
+    cmd->add_option("--accel", args->accel, accelHelp());
     cmd->add_flag("--cull-backfaces", args->cullBackfaces,
                   "closest-hit walks skip triangles seen from behind (not shadow rays, not glass)");
     cmd->add_flag("--json", args->json, "print one JSON object instead of text");

@@ -13,6 +13,7 @@
 #include "render/light_grid.h"
 #include "render/light_tree.h"
 #include "scene/instances.h"
+#include "render/walks.h"
 
 namespace penumbra::app {
 namespace {
@@ -56,6 +57,15 @@ void printScene(const std::string& name, const std::string& map, const Environme
                     arrays.wideNodes.size(), sizeof(shader::WideNode), arrays.wideDepth,
                     tris ? double(arrays.wideNodes.size() * sizeof(shader::WideNode)) / double(tris) : 0.0,
                     arrays.wideMilliseconds);
+    if (!arrays.stacklessNodes.empty())
+        std::printf("  stackless (--accel stackless): %zu threaded nodes of %zu bytes, %.1f bytes per primitive (the "
+                    "binary walk's records stay uploaded beside them)\n",
+                    arrays.stacklessNodes.size(), sizeof(shader::StacklessNode),
+                    tris ? double(arrays.stacklessNodes.size() * sizeof(shader::StacklessNode)) / double(tris) : 0.0);
+    if (!arrays.objectBoxes.empty())
+        std::printf("  objects (--accel objects): %zu boxes of %zu bytes%s\n", arrays.objectBoxes.size(),
+                    sizeof(shader::ObjectBox), arrays.instances.empty() ? ", one per scene object"
+                                                                : ", one per scene object of the world, one per moved instance");
     std::printf("  %zu textures, %zu punctual lights, %u spheres and %zu sprites (in the triangle count), %zu sphere lights\n",
                 scene.textures.size(), arrays.punctual.size(), arrays.sphereCount, scene.sprites.size(),
                 arrays.sphereLights.size());
@@ -128,7 +138,7 @@ void registerInfo(CLI::App& app, Action& action) {
     cmd->add_option("scene", args->scene, "built-in scene or scene file");
     cmd->add_option("--map", args->map, "level of a .wad file");
     addDeviceOption(*cmd, args->device);
-    cmd->add_option("--accel", args->accel, "the walk whose GPU memory to report: bvh, wide (builds the wide BVH) or brute");
+    cmd->add_option("--accel", args->accel, "the walk whose GPU memory to report (builds its records): " + walkNameList());
     cmd->add_flag("--mpi", args->mpi, "list every rank's host and device (implied when started by mpirun)");
     addBvhCacheOption(*cmd);
     addEnvironmentOptions(*cmd, args->env);

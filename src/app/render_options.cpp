@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "core/error.h"
+#include "render/walks.h"
 
 namespace penumbra::app {
 
@@ -55,7 +56,7 @@ void addRenderOptions(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--width", a.settings.width, "image width in pixels");
     cmd.add_option("--height", a.settings.height, "image height in pixels");
     cmd.add_option("--seed", a.settings.seed, "random seed (same seed, same device: same image)");
-    cmd.add_option("--accel", a.accel, "bvh, wide (the compressed 8-wide BVH; scenes with instances keep bvh), or brute (every triangle per ray: the oracle)");
+    cmd.add_option("--accel", a.accel, accelHelp());
     cmd.add_option("--mis", a.mis,
                    "direct light estimators: both (MIS, default), light (light sampling only) or bsdf (BSDF sampling only)");
     cmd.add_option("--shadow-roulette", a.settings.shadowRouletteShare,

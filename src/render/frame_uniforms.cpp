@@ -1,4 +1,5 @@
 #include "render/frame_uniforms.h"
+#include "render/walks.h"
 #include "shared/constants.h"
 
 #include <cmath>
@@ -31,7 +32,7 @@ shader::FrameUniforms makeFrameUniforms(const Camera& camera, Vec3 background, c
     f.lightNodeCount = lightNodeCount;
     f.triCount = triCount;
     f.nodeCount = nodeCount;
-    f.accel = settings.accel == Accel::Brute ? PN_ACCEL_BRUTE : (settings.accel == Accel::Wide ? PN_ACCEL_WIDE : PN_ACCEL_BVH);
+    f.accel = walkInfo(settings.accel).shaderId;
     f.seed = settings.seed;
     f.samplesPerPass = settings.samplesPerPass;
     f.background = background;

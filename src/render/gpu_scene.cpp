@@ -24,6 +24,7 @@
 #include "render/light_list.h"
 #include "render/scene_limits.h"
 #include "render/sphere_lights.h"
+#include "render/walks.h"
 #include "scene/environment.h"
 #include "scene/objects.h"
 #include "scene/instances.h"
@@ -422,6 +423,7 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
             if (i.id != PN_NO_HIT) i.id = keptFrom.at(i.id);
     markAlphaTested(out);
     addLightGrid(out);
+    buildWalkRecords(out, accel);
     return out;
 }
 
@@ -431,7 +433,8 @@ std::size_t deviceBytes(const SceneArrays& a) {
     auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
     return binaryWalkBytes(a) + bytes(a.wideNodes) + bytes(a.triVerts) + bytes(a.triAttribs) + bytes(a.triUvs) + bytes(a.materials) + bytes(a.lightRefs) +
            bytes(a.lightNodes) + bytes(a.lightTree) + bytes(a.lightGrid) + bytes(a.textures) + bytes(a.texels) + bytes(a.punctual) + bytes(a.sphereLights) +
-           bytes(a.env.alias) + bytes(a.env.radiance) + bytes(a.instances);
+           bytes(a.env.alias) + bytes(a.env.radiance) + bytes(a.instances) + bytes(a.stacklessNodes) + bytes(a.objectBoxes) +
+           bytes(a.objectPrims);
 }
 
 GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& a)
@@ -451,6 +454,10 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
       envTable(gpu::uploadStorageBuffer<shader::EnvAlias>(ctx, commands, a.env.alias)),
       envTexels(gpu::uploadStorageBuffer<Vec4>(ctx, commands, a.env.radiance)),
       instances(gpu::uploadStorageBuffer<shader::Instance>(ctx, commands, a.instances)),
+      stacklessNodes(gpu::uploadStorageBuffer<shader::StacklessNode>(ctx, commands, a.stacklessNodes)),
+      objectBoxes(gpu::uploadStorageBuffer<shader::ObjectBox>(ctx, commands, a.objectBoxes)),
+      objectPrims(gpu::uploadStorageBuffer<std::uint32_t>(ctx, commands, a.objectPrims)),
+      walk(a.walk),
       instanceCount(static_cast<std::uint32_t>(a.instances.size())),
       topRoot(a.topRoot),
       nodeCount(static_cast<std::uint32_t>(binaryNodesUploaded(a))),
@@ -470,7 +477,7 @@ GpuScene::GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const Scene
 std::size_t GpuScene::deviceBytes() const {
     return nodes.size() + triVerts.size() + triAttribs.size() + triUvs.size() + materials.size() + lightRefs.size() + lightNodes.size() +
            lightTree.size() + textures.size() + texels.size() + punctual.size() + sphereLights.size() + envTable.size() + envTexels.size() +
-           instances.size();
+           instances.size() + stacklessNodes.size() + objectBoxes.size() + objectPrims.size();
 }
 
 }  // namespace penumbra

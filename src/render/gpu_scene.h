@@ -37,7 +37,10 @@ public:
     GpuScene(const gpu::Context& ctx, gpu::Commands& commands, const SceneArrays& arrays);
 
     gpu::Buffer nodes, triVerts, triAttribs, triUvs, materials, lightRefs, lightNodes, lightTree, textures, texels, punctual, sphereLights,
-        envTable, envTexels, instances;
+        envTable, envTexels, instances, stacklessNodes, objectBoxes, objectPrims;
+    // The walk the scene's kernels are specialised for (SceneArrays::walk); a test may set it to
+    // PN_WALK_ANY to pick the walk per ray with FrameUniforms.accel.
+    std::uint32_t walk = PN_WALK_ANY;
     std::uint32_t instanceCount = 0, topRoot = 0;  // 0 instances: one flat BVH (FrameUniforms.instanceCount)
     std::uint32_t nodeCount = 0, wideNodeCount = 0, triCount = 0, lightNodeCount = 0, lightGridOffset = 0, topLightCount = 0, lightRefCount = 0, punctualCount = 0,
                   sphereCount = 0, sphereLightCount = 0, envWidth = 0, envHeight = 0;

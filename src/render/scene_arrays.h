@@ -11,6 +11,7 @@
 #include "core/aabb.h"
 #include "render/env_table.h"
 #include "shared/types.h"
+#include "shared/accel_layouts.h"
 
 namespace penumbra {
 
@@ -23,6 +24,14 @@ struct SceneArrays {
     // Whether `nodes` go to the GPU. The node buffer holds them (if so), then the wide nodes: with
     // the wide tree only its walk runs, so the binary nodes stay on the host (a third of the memory).
     bool binaryNodesOnGpu = true;
+    // The other walks' records (render/walks.h buildWalkRecords), each only for its own --accel:
+    // the binary nodes threaded with escape indices (stackless), and a box per object (objects).
+    std::vector<shader::StacklessNode> stacklessNodes;
+    std::vector<shader::ObjectBox> objectBoxes;
+    std::vector<std::uint32_t> objectPrims;  // the flat scenes' objects' primitive slots
+    // The walk these arrays were built for, which the kernels are specialised for (PN_ACCEL_*;
+    // PN_WALK_ANY: every walk, chosen per ray by FrameUniforms.accel).
+    std::uint32_t walk = PN_WALK_ANY;
     std::uint32_t wideDepth = 0;
     double wideMilliseconds = 0;  // collapsing the binary tree
     std::vector<shader::TriVerts> triVerts;      // leaf order; triangles and spheres (PN_TRI_SPHERE)

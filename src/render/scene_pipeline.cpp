@@ -1,6 +1,7 @@
 #include "render/scene_pipeline.h"
 
 #include "shared/types.h"
+#include "shared/accel_layouts.h"
 
 namespace penumbra {
 
@@ -16,9 +17,11 @@ std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx,
         {PN_BINDING_TEXTURES, storage},  {PN_BINDING_TEXELS, storage},
         {PN_BINDING_PUNCTUAL, storage},  {PN_BINDING_SPHERE_LIGHTS, storage}, {PN_BINDING_ENV_TABLE, storage},
         {PN_BINDING_ENV_TEXELS, storage}, {PN_BINDING_LIGHT_NODES, storage}, {PN_BINDING_LIGHT_TREE, storage},
-        {PN_BINDING_INSTANCES, storage}};
+        {PN_BINDING_INSTANCES, storage}, {PN_BINDING_STACKLESS_NODES, storage}, {PN_BINDING_OBJECT_BOXES, storage},
+        {PN_BINDING_OBJECT_PRIMS, storage}};
     for (std::uint32_t b : extraStorageBindings) bindings.push_back({b, storage});
-    const std::uint32_t specialization[] = {features};
+    // Constant 0: the capability bits; constant 1: the walk (shaders/lib/scene_bindings.glsl).
+    const std::uint32_t specialization[] = {features, scene.walk};
     auto pipeline = std::make_unique<gpu::ComputePipeline>(ctx, shader, bindings, sizeof(shader::PassPush), specialization);
     pipeline->bind(PN_BINDING_NODES, scene.nodes);
     pipeline->bind(PN_BINDING_TRI_VERTS, scene.triVerts);
@@ -36,6 +39,9 @@ std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx,
     pipeline->bind(PN_BINDING_ENV_TABLE, scene.envTable);
     pipeline->bind(PN_BINDING_ENV_TEXELS, scene.envTexels);
     pipeline->bind(PN_BINDING_INSTANCES, scene.instances);
+    pipeline->bind(PN_BINDING_STACKLESS_NODES, scene.stacklessNodes);
+    pipeline->bind(PN_BINDING_OBJECT_BOXES, scene.objectBoxes);
+    pipeline->bind(PN_BINDING_OBJECT_PRIMS, scene.objectPrims);
     return pipeline;
 }
 

@@ -27,17 +27,6 @@ void validateShadowRouletteShare(float share) {
     if (!(share >= 0 && share <= 1)) throw UsageError("--shadow-roulette must be a share between 0 (off) and 1");
 }
 
-Accel parseAccel(const std::string& name) {
-    if (name == "bvh") return Accel::Bvh;
-    if (name == "brute") return Accel::Brute;
-    if (name == "wide") return Accel::Wide;
-    throw UsageError("unknown --accel '" + name + "'; use bvh, wide or brute");
-}
-
-const char* accelName(Accel accel) {
-    return accel == Accel::Bvh ? "bvh" : (accel == Accel::Wide ? "wide" : "brute");
-}
-
 MisMode parseMisMode(const std::string& name) {
     if (name == "both") return MisMode::Both;
     if (name == "light") return MisMode::LightOnly;

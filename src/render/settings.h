@@ -6,7 +6,10 @@
 
 namespace penumbra {
 
-enum class Accel { Bvh, Brute, Wide };  // Wide: the compressed 8-wide BVH (flat scenes)
+// The ray walks (render/walks.h names and describes each). Wide: the compressed 8-wide BVH (flat
+// scenes); Objects: a box per object; Stackless: the binary BVH through escape indices. New ones
+// go last: checkpoints store the number.
+enum class Accel { Bvh, Brute, Wide, Objects, Stackless };
 
 // Which estimators of direct light the integrator combines (shaders/lib/mis.glsl): both with the
 // power heuristic, light sampling only, or BSDF sampling only. All converge to the same image.
@@ -73,7 +76,7 @@ void validateSettings(const RenderSettings& settings);
 // The part of it the viewer's settings share (bench --viewer checks it alone).
 void validateShadowRouletteShare(float share);
 
-Accel parseAccel(const std::string& name);  // "bvh" | "brute" | "wide"; UsageError otherwise
+Accel parseAccel(const std::string& name);  // a name in render/walks.h; UsageError otherwise
 const char* accelName(Accel accel);
 
 MisMode parseMisMode(const std::string& name);  // "both" | "light" | "bsdf"; UsageError otherwise

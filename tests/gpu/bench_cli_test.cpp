@@ -2,6 +2,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <map>
 
 #include "cli_fixture.h"
 
@@ -91,6 +92,29 @@ TEST_F(BenchCliTest, RayBenchRunsTheWideBvhAndInfoReportsIt) {
     EXPECT_EQ(binary.out.find("wide bvh"), std::string::npos) << binary.out;
     EXPECT_NE(binary.out.find("wide nodes 0.0, "), std::string::npos) << binary.out;
     expectOneLineError(run("info cornell --accel narrow"), 2, "--accel");
+}
+
+// The stackless walk and per-object boxes through the CLI: bench names the walk, its counts show
+// the BVH's pruning against the boxes' (the Cornell box's 8 objects: one box test per object per
+// ray), and info reports each walk's records.
+TEST_F(BenchCliTest, BenchAndInfoTakeTheStacklessAndObjectsWalks) {
+    std::map<std::string, nlohmann::json> byWalk;
+    for (const char* accel : {"stackless", "objects"}) {
+        RunResult r = run(std::string("bench cornell --width 32 --height 20 --repeats 1 --json --accel ") + accel);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        byWalk[accel] = nlohmann::json::parse(r.out);
+        EXPECT_EQ(byWalk[accel].at("accel").get<std::string>(), accel);
+        EXPECT_GT(byWalk[accel].at("frame_statistics").at("closest_hits").get<long long>(), 0) << accel;
+    }
+    const nlohmann::json& objects = byWalk["objects"].at("traversal").at("primary");
+    EXPECT_DOUBLE_EQ(objects.at("nodes_per_ray").get<double>(), 8.0) << "every object's box, once per ray";
+    EXPECT_GT(byWalk["stackless"].at("traversal").at("primary").at("nodes_per_ray").get<double>(), 1.0);
+    RunResult info = run("info cornell --accel stackless");
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    EXPECT_NE(info.out.find("stackless (--accel stackless): 33 threaded nodes"), std::string::npos) << info.out;
+    info = run("info cornell --accel objects");
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    EXPECT_NE(info.out.find("objects (--accel objects): 8 boxes"), std::string::npos) << info.out;
 }
 
 // The walk's work per ray, counted for the rays the bench times: under brute force a closest-hit

@@ -9,6 +9,7 @@
 #include "gpu/commands.h"
 #include "render/frame_uniforms.h"
 #include "render/scene_pipeline.h"
+#include "render/walks.h"
 
 namespace penumbra::test {
 
@@ -28,7 +29,16 @@ inline GpuHits traceOnGpu(const gpu::Context& ctx, const SceneArrays& arrays, co
         withBinary = arrays;
         withBinary->binaryNodesOnGpu = true;
     }
+    // The stackless and per-object walks need their records, built only for their --accel.
+    const bool needsRecords = (accel == Accel::Stackless && arrays.stacklessNodes.empty() && !arrays.nodes.empty()) ||
+                              (accel == Accel::Objects && arrays.objectBoxes.empty() && !arrays.triVerts.empty());
+    if (needsRecords) {
+        if (!withBinary) withBinary = arrays;
+        buildWalkRecords(*withBinary, accel);
+    }
     GpuScene scene(ctx, commands, withBinary ? *withBinary : arrays);
+    // The kernel specialised for this walk, as a render made with it would be.
+    scene.walk = accel == Accel::Wide && scene.wideNodeCount == 0 ? PN_ACCEL_BVH : walkInfo(accel).shaderId;
     RenderSettings settings;
     settings.accel = accel;
     shader::FrameUniforms frame = makeFrameUniforms(Camera{}, Vec3{0}, settings, scene.lightNodeCount, scene.triCount, scene.nodeCount);

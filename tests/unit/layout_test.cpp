@@ -11,6 +11,7 @@
 
 #include "gpu/shaders.h"
 #include "shared/types.h"
+#include "shared/accel_layouts.h"
 
 namespace penumbra {
 namespace {
@@ -169,6 +170,27 @@ TEST(Layout, TriangleArraysHaveTheCppStride) {
         auto it = strides.find(name);
         ASSERT_NE(it, strides.end()) << name << " has no runtime array in the trace kernel";
         EXPECT_EQ(it->second, size) << name;
+    }
+}
+
+// The stackless walk's and --accel objects' records (shared/accel_layouts.h), in the test kernel,
+// which carries every walk (PN_WALK_ANY), and in the trace kernel: offsets and array strides.
+TEST(Layout, WalkRecordsMatchInTheKernelsThatWalkThem) {
+    using namespace shader;
+    for (const char* shaderName : {"test_ray_query", "trace"}) {
+        SCOPED_TRACE(shaderName);
+        const std::span<const std::uint32_t> code = gpu::shaderCode(shaderName);
+        const Offsets spv = readMemberOffsets(code);
+        ASSERT_EQ(spv.count("StacklessNode"), 1u);
+        ASSERT_EQ(spv.count("ObjectBox"), 1u);
+        expectMembers(spv, "StacklessNode", {0, offsetof(StacklessNode, escape), offsetof(StacklessNode, boundsMax),
+                                             offsetof(StacklessNode, leaf)});
+        expectMembers(spv, "ObjectBox", {0, offsetof(ObjectBox, first), offsetof(ObjectBox, boundsMax), offsetof(ObjectBox, count),
+                                         offsetof(ObjectBox, instance), offsetof(ObjectBox, listed), offsetof(ObjectBox, pad0),
+                                         offsetof(ObjectBox, pad1)});
+        const std::map<std::string, std::uint32_t> strides = readArrayStrides(code);
+        EXPECT_EQ(strides.at("StacklessNode"), sizeof(StacklessNode));
+        EXPECT_EQ(strides.at("ObjectBox"), sizeof(ObjectBox));
     }
 }
 
