@@ -20,7 +20,8 @@ TraceKernel traceKernel() {
     if (name.empty() || name == "auto") return TraceKernel::Auto;
     if (name == "mega") return TraceKernel::Megakernel;
     if (name == "wavefront") return TraceKernel::Wavefront;
-    throw UsageError("PENUMBRA_TRACE_KERNEL must be 'auto', 'mega' or 'wavefront' (got '" + std::string(name) + "')");
+    throw UsageError("PENUMBRA_TRACE_KERNEL must be 'auto', 'mega' or 'wavefront' (got '" +
+                     std::string(name) + "')");
 }
 
 }  // namespace
@@ -28,7 +29,8 @@ TraceKernel traceKernel() {
 RenderTuning renderTuningFromEnvironment() {
     RenderTuning t;
     t.traceKernel = traceKernel();
-    t.waveTailPaths = std::uint32_t(environmentSetting("PENUMBRA_WAVE_TAIL_PATHS", t.waveTailPaths, 0, UINT32_MAX));
+    t.waveTailPaths = std::uint32_t(
+        environmentSetting("PENUMBRA_WAVE_TAIL_PATHS", t.waveTailPaths, 0, UINT32_MAX));
     // Switches as they always were read: exactly "1" for these two, anything but "0" for generic.
     t.waveStageTimes = text("PENUMBRA_WAVE_STAGE_TIMES") == "1";
     t.forceInstances = text("PENUMBRA_FORCE_INSTANCES") == "1";
@@ -37,14 +39,17 @@ RenderTuning renderTuningFromEnvironment() {
     t.lightGrid = environmentSetting("PENUMBRA_LIGHT_GRID", 1, 0, 1) != 0;
     LightGridOptions& grid = t.lightGridOptions;
     grid.drawInClusters = environmentSetting("PENUMBRA_LIGHT_GRID_DRAW", 1, 0, 1) != 0;
-    grid.levels = std::uint32_t(environmentSetting("PENUMBRA_LIGHT_GRID_LEVELS", grid.levels, 1, PN_LIGHT_GRID_MAX_LEVELS));
-    grid.maxWords = environmentSetting("PENUMBRA_LIGHT_GRID_MB", grid.maxWords * 4 >> 20, 1, 1024) << 18;  // 2^18 words a MiB
+    grid.levels = std::uint32_t(
+        environmentSetting("PENUMBRA_LIGHT_GRID_LEVELS", grid.levels, 1, PN_LIGHT_GRID_MAX_LEVELS));
+    grid.maxWords = environmentSetting("PENUMBRA_LIGHT_GRID_MB", grid.maxWords * 4 >> 20, 1, 1024)
+                    << 18;  // 2^18 words a MiB
     return t;
 }
 
 std::filesystem::path bvhCacheDirectoryFromEnvironment() {
     if (const std::string_view dir = text("PENUMBRA_CACHE_DIR"); !dir.empty()) return dir;
-    if (const std::string_view xdg = text("XDG_CACHE_HOME"); !xdg.empty()) return std::filesystem::path(xdg) / "penumbra";
+    if (const std::string_view xdg = text("XDG_CACHE_HOME"); !xdg.empty())
+        return std::filesystem::path(xdg) / "penumbra";
     if (const std::string_view home = text("HOME"); !home.empty())
         return std::filesystem::path(home) / ".cache" / "penumbra";
     return {};

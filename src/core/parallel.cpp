@@ -54,7 +54,8 @@ std::size_t parallelChunks(std::size_t count, std::size_t chunkSize,
     chunkSize = std::max<std::size_t>(1, chunkSize);
     const std::size_t chunks = (count + chunkSize - 1) / chunkSize;
     parallelFor(chunks, 1, [&](std::size_t lo, std::size_t hi) {
-        for (std::size_t c = lo; c < hi; ++c) body(c, c * chunkSize, std::min(count, (c + 1) * chunkSize));
+        for (std::size_t c = lo; c < hi; ++c)
+            body(c, c * chunkSize, std::min(count, (c + 1) * chunkSize));
     });
     return chunks;
 }

@@ -24,9 +24,11 @@ constexpr std::uint32_t kDefaultWaveTailPaths = 16384;
 struct RenderTuning {
     TraceKernel traceKernel = TraceKernel::Auto;          // PENUMBRA_TRACE_KERNEL
     std::uint32_t waveTailPaths = kDefaultWaveTailPaths;  // PENUMBRA_WAVE_TAIL_PATHS; 0: never
-    bool waveStageTimes = false;  // PENUMBRA_WAVE_STAGE_TIMES: time each wavefront step (adds barriers)
-    bool genericKernel = false;   // PENUMBRA_GENERIC_KERNEL: kernels with every feature (PN_FEATURE_ALL)
-    bool lightGrid = true;        // PENUMBRA_LIGHT_GRID=0: no grid, the plain light-tree walk
+    // PENUMBRA_WAVE_STAGE_TIMES: time each wavefront step (adds barriers).
+    bool waveStageTimes = false;
+    // PENUMBRA_GENERIC_KERNEL: kernels with every feature (PN_FEATURE_ALL).
+    bool genericKernel = false;
+    bool lightGrid = true;              // PENUMBRA_LIGHT_GRID=0: no grid, the plain light-tree walk
     LightGridOptions lightGridOptions;  // PENUMBRA_LIGHT_GRID_LEVELS, _MB, _DRAW
     bool forceInstances = false;  // PENUMBRA_FORCE_INSTANCES: the world's meshes as one instance
 };

@@ -20,10 +20,14 @@ public:
     // "mega", "wavefront" or "auto", as tests name their parameters.
     ScopedTuning& kernel(const std::string& name) {
         return edit([&](RenderTuning& t) {
-            if (name == "mega") t.traceKernel = TraceKernel::Megakernel;
-            else if (name == "wavefront") t.traceKernel = TraceKernel::Wavefront;
-            else if (name == "auto") t.traceKernel = TraceKernel::Auto;
-            else throw std::invalid_argument("no trace kernel named " + name);
+            if (name == "mega")
+                t.traceKernel = TraceKernel::Megakernel;
+            else if (name == "wavefront")
+                t.traceKernel = TraceKernel::Wavefront;
+            else if (name == "auto")
+                t.traceKernel = TraceKernel::Auto;
+            else
+                throw std::invalid_argument("no trace kernel named " + name);
         });
     }
     ScopedTuning& tailPaths(std::uint32_t paths) {

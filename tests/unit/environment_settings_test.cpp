@@ -1,6 +1,8 @@
 // app/environment_settings: every PENUMBRA_* switch the program reads at start lands in the
 // setting it names, unset ones keep the shipped defaults, and a malformed value is one usage
 // error naming its variable.
+#include "app/environment_settings.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -8,16 +10,16 @@
 #include <utility>
 #include <vector>
 
-#include "app/environment_settings.h"
 #include "core/error.h"
 
 namespace penumbra::app {
 namespace {
 
 constexpr const char* kVariables[] = {
-    "PENUMBRA_TRACE_KERNEL", "PENUMBRA_WAVE_TAIL_PATHS",   "PENUMBRA_WAVE_STAGE_TIMES", "PENUMBRA_GENERIC_KERNEL",
-    "PENUMBRA_LIGHT_GRID",   "PENUMBRA_LIGHT_GRID_LEVELS", "PENUMBRA_LIGHT_GRID_MB",    "PENUMBRA_LIGHT_GRID_DRAW",
-    "PENUMBRA_FORCE_INSTANCES", "PENUMBRA_CACHE_DIR",      "XDG_CACHE_HOME",            "HOME"};
+    "PENUMBRA_TRACE_KERNEL",   "PENUMBRA_WAVE_TAIL_PATHS", "PENUMBRA_WAVE_STAGE_TIMES",
+    "PENUMBRA_GENERIC_KERNEL", "PENUMBRA_LIGHT_GRID",      "PENUMBRA_LIGHT_GRID_LEVELS",
+    "PENUMBRA_LIGHT_GRID_MB",  "PENUMBRA_LIGHT_GRID_DRAW", "PENUMBRA_FORCE_INSTANCES",
+    "PENUMBRA_CACHE_DIR",      "XDG_CACHE_HOME",           "HOME"};
 
 class EnvironmentSettingsTest : public ::testing::Test {
 protected:
@@ -87,13 +89,11 @@ TEST_F(EnvironmentSettingsTest, SwitchesReadAsBefore) {
 }
 
 TEST_F(EnvironmentSettingsTest, MalformedValuesAreOneUsageErrorNamingTheVariable) {
-    const std::pair<const char*, const char*> bad[] = {{"PENUMBRA_TRACE_KERNEL", "megakernel"},
-                                                       {"PENUMBRA_WAVE_TAIL_PATHS", "-1"},
-                                                       {"PENUMBRA_WAVE_TAIL_PATHS", "4294967296"},
-                                                       {"PENUMBRA_LIGHT_GRID", "2"},
-                                                       {"PENUMBRA_LIGHT_GRID_LEVELS", "0"},
-                                                       {"PENUMBRA_LIGHT_GRID_MB", "1025"},
-                                                       {"PENUMBRA_LIGHT_GRID_DRAW", "off"}};
+    const std::pair<const char*, const char*> bad[] = {
+        {"PENUMBRA_TRACE_KERNEL", "megakernel"},    {"PENUMBRA_WAVE_TAIL_PATHS", "-1"},
+        {"PENUMBRA_WAVE_TAIL_PATHS", "4294967296"}, {"PENUMBRA_LIGHT_GRID", "2"},
+        {"PENUMBRA_LIGHT_GRID_LEVELS", "0"},        {"PENUMBRA_LIGHT_GRID_MB", "1025"},
+        {"PENUMBRA_LIGHT_GRID_DRAW", "off"}};
     for (const auto& [name, value] : bad) {
         set(name, value);
         try {
