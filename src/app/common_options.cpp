@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "app/environment_settings.h"
 #include "bvh/cache.h"
 #include "core/error.h"
 #include "scene/io/load.h"
@@ -31,7 +32,7 @@ void addBvhCacheOption(CLI::App& cmd) {
 
 void configureBvhCache() {
     bvh::CacheSettings settings;
-    settings.directory = bvh::defaultCacheDirectory();
+    settings.directory = bvhCacheDirectoryFromEnvironment();
     settings.enabled = !noBvhCache && !settings.directory.empty();
     bvh::setCacheSettings(settings);
 }

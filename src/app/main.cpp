@@ -6,6 +6,7 @@
 
 #include "app/commands.h"
 #include "app/common_options.h"
+#include "app/environment_settings.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "distributed/launch.h"
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
     }
     penumbra::setVerbose(verbose);
     try {
+        penumbra::app::applyEnvironmentSettings();
         penumbra::app::configureBvhCache();
         action();
         return 0;

@@ -208,15 +208,6 @@ void prune(const fs::path& dir, std::uint64_t maxBytes, const fs::path& keep) {
 
 }  // namespace
 
-fs::path defaultCacheDirectory() {
-    if (const char* dir = std::getenv("PENUMBRA_CACHE_DIR"); dir && *dir) return fs::path(dir);
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-        return fs::path(xdg) / "penumbra";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return fs::path(home) / ".cache" / "penumbra";
-    return {};
-}
-
 void setCacheSettings(const CacheSettings& settings) { settingsStore() = settings; }
 const CacheSettings& cacheSettings() { return settingsStore(); }
 

@@ -26,10 +26,6 @@ struct CacheSettings {
     std::size_t minPrimitives = 50000;  // smaller scenes build faster than a cache could answer
 };
 
-// $PENUMBRA_CACHE_DIR, else $XDG_CACHE_HOME/penumbra, else $HOME/.cache/penumbra; empty when
-// none of them is set.
-std::filesystem::path defaultCacheDirectory();
-
 // Process-wide, off until the command line turns it on, so tests and tools never touch the
 // disk unless they ask to. Set it before any build starts.
 void setCacheSettings(const CacheSettings& settings);

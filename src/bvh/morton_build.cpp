@@ -7,13 +7,8 @@
 #include <limits>
 #include <utility>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
-#include <tbb/parallel_reduce.h>
-#include <tbb/task_arena.h>
-
 #include "core/error.h"
+#include "core/parallel.h"
 
 namespace penumbra::bvh {
 namespace {
@@ -62,27 +57,27 @@ void radixSortSerial(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t
 void radixSortParallel(std::vector<std::uint64_t>& keys, MortonScratch& scratch) {
     constexpr std::uint32_t kMask = kRadix - 1;
     const std::size_t n = keys.size();
-    const std::size_t workers = std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()));
-    const std::size_t chunks = std::min((n + kParallelGrain - 1) / kParallelGrain, workers);
+    const std::size_t workers = hardwareThreads();
+    std::size_t chunks = std::min((n + kParallelGrain - 1) / kParallelGrain, workers);
     const std::size_t chunkSize = (n + chunks - 1) / chunks;
+    chunks = (n + chunkSize - 1) / chunkSize;  // rounding up the size may leave fewer
     std::vector<std::uint64_t>& tmp = scratch.keysTmp;
     std::vector<std::uint32_t>& start = scratch.chunkStarts;  // [chunk][digit]
     tmp.resize(n);
     start.resize(chunks * kRadix);
     for (int p = 0; p < kPasses; ++p) {
         const int shift = p * kRadixBits;
-        tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
+        parallelChunks(n, chunkSize, [&](std::size_t c, std::size_t first, std::size_t last) {
             std::uint32_t* h = &start[c * kRadix];
             std::fill(h, h + kRadix, 0u);
-            for (std::size_t i = c * chunkSize, end = std::min(n, i + chunkSize); i < end; ++i)
-                ++h[(codeOf(keys[i]) >> shift) & kMask];
+            for (std::size_t i = first; i < last; ++i) ++h[(codeOf(keys[i]) >> shift) & kMask];
         });
         std::uint32_t sum = 0;
         for (std::uint32_t d = 0; d < kRadix; ++d)
             for (std::size_t c = 0; c < chunks; ++c) sum += std::exchange(start[c * kRadix + d], sum);
-        tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
+        parallelChunks(n, chunkSize, [&](std::size_t c, std::size_t first, std::size_t last) {
             std::uint32_t* h = &start[c * kRadix];
-            for (std::size_t i = c * chunkSize, end = std::min(n, i + chunkSize); i < end; ++i) {
+            for (std::size_t i = first; i < last; ++i) {
                 const std::uint64_t k = keys[i];
                 tmp[h[(codeOf(k) >> shift) & kMask]++] = k;
             }
@@ -114,15 +109,11 @@ void computeKeys(std::span<const Aabb> primBounds, MortonScratch& scratch, bool 
     scratch.boxes.resize(n);
     CentreBounds centres;
     if (parallel) {
-        centres = tbb::parallel_reduce(
-            tbb::blocked_range<std::size_t>(0, n, kParallelGrain), CentreBounds{},
-            [&](const tbb::blocked_range<std::size_t>& r, CentreBounds b) {
-                sanitizeRange(primBounds, scratch.boxes, r.begin(), r.end(), b);
-                return b;
-            },
-            [](const CentreBounds& a, const CentreBounds& b) {
-                return CentreBounds{min(a.lo, b.lo), max(a.hi, b.hi)};
-            });
+        std::vector<CentreBounds> perChunk((n + kParallelGrain - 1) / kParallelGrain);
+        parallelChunks(n, kParallelGrain, [&](std::size_t c, std::size_t first, std::size_t last) {
+            sanitizeRange(primBounds, scratch.boxes, first, last, perChunk[c]);
+        });
+        for (const CentreBounds& b : perChunk) centres = {min(centres.lo, b.lo), max(centres.hi, b.hi)};
     } else {
         sanitizeRange(primBounds, scratch.boxes, 0, n, centres);
     }
@@ -144,8 +135,7 @@ void computeKeys(std::span<const Aabb> primBounds, MortonScratch& scratch, bool 
         }
     };
     if (parallel)
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kParallelGrain),
-                          [&](const tbb::blocked_range<std::size_t>& r) { codeRange(r.begin(), r.end()); });
+        parallelFor(n, kParallelGrain, codeRange);
     else
         codeRange(0, n);
 }
@@ -188,7 +178,7 @@ struct Builder {
         auto emitLeft = [&] { mid - first == 1 ? leaf(first, left) : emit(first, mid, depth + 1, left); };
         auto emitRight = [&] { last - mid == 1 ? leaf(mid, right) : emit(mid, last, depth + 1, right); };
         if (parallel && std::min(mid - first, last - mid) >= kParallelGrain) {
-            tbb::parallel_invoke(emitLeft, emitRight);
+            parallelInvoke(emitLeft, emitRight);
         } else {
             emitLeft();
             emitRight();

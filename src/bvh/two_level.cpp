@@ -1,9 +1,7 @@
 #include "bvh/two_level.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "core/error.h"
+#include "core/parallel.h"
 
 namespace penumbra::bvh {
 namespace {
@@ -105,8 +103,7 @@ void replaceTopLevel(std::vector<shader::BvhNode>& nodes, std::uint32_t nodeBase
     };
     // Each box on its own, so chunks on the worker pool give the serial boxes.
     if (threads == BuildThreads::Pool && n >= 2 * kMortonParallelGrain)
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kMortonParallelGrain),
-                          [&](const tbb::blocked_range<std::size_t>& r) { transformRange(r.begin(), r.end()); });
+        parallelFor(n, kMortonParallelGrain, transformRange);
     else
         transformRange(0, n);
     nodes.resize(nodeBase);

@@ -1,6 +1,7 @@
 #include "core/parallel.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
@@ -47,6 +48,31 @@ void parallelFor(std::size_t count, std::size_t minChunk,
     tbb::parallel_for(EvenRange(0, count, minChunk),
                       [&](const EvenRange& r) { body(r.begin(), r.end()); });
 }
+
+std::size_t parallelChunks(std::size_t count, std::size_t chunkSize,
+                           const std::function<void(std::size_t, std::size_t, std::size_t)>& body) {
+    chunkSize = std::max<std::size_t>(1, chunkSize);
+    const std::size_t chunks = (count + chunkSize - 1) / chunkSize;
+    parallelFor(chunks, 1, [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t c = lo; c < hi; ++c)
+            body(c, c * chunkSize, std::min(count, (c + 1) * chunkSize));
+    });
+    return chunks;
+}
+
+void parallelInvoke(const std::function<void()>& a, const std::function<void()>& b) {
+    tbb::parallel_invoke(a, b);
+}
+
+struct ThreadArena::Arena {
+    tbb::task_arena arena;
+};
+
+ThreadArena::ThreadArena(unsigned threads)
+    : arena_(std::make_unique<Arena>(Arena{tbb::task_arena(int(std::max(1u, threads)))})) {}
+ThreadArena::~ThreadArena() = default;
+
+void ThreadArena::run(const std::function<void()>& work) { arena_->arena.execute(work); }
 
 struct TaskGroup::Pool {
     tbb::task_group group;

@@ -20,6 +20,34 @@ unsigned hardwareThreads();
 void parallelFor(std::size_t count, std::size_t minChunk,
                  const std::function<void(std::size_t, std::size_t)>& body);
 
+// Calls body(chunk, begin, end) for the chunks [c * chunkSize, min(count, (c + 1) * chunkSize)),
+// in parallel. The chunks depend on chunkSize alone, never on the thread count, so per-chunk
+// results combined in chunk order are the same on any machine (reductions that must be
+// reproducible). Returns the number of chunks.
+std::size_t parallelChunks(std::size_t count, std::size_t chunkSize,
+                           const std::function<void(std::size_t, std::size_t, std::size_t)>& body);
+
+// Runs a and b, possibly at once, and returns when both are done (two halves of a recursion).
+// The first exception either throws is rethrown on the caller.
+void parallelInvoke(const std::function<void()>& a, const std::function<void()>& b);
+
+// A share of the pool: run() executes work, and the parallel calls it makes, on at most
+// `threads` threads (a frame encoder that leaves the render loop its share; a test forcing
+// several workers on a small machine). More threads than the machine has take turns.
+class ThreadArena {
+public:
+    explicit ThreadArena(unsigned threads);
+    ~ThreadArena();
+    ThreadArena(const ThreadArena&) = delete;
+    ThreadArena& operator=(const ThreadArena&) = delete;
+
+    void run(const std::function<void()>& work);
+
+private:
+    struct Arena;  // tbb::task_arena, kept out of this header
+    std::unique_ptr<Arena> arena_;
+};
+
 // Dynamic fork-join for recursive work whose shape is only known as it runs (BVH subtrees):
 // run() executes a root task, tasks may spawn() more, and run() returns once every task has
 // finished. A thread runs its own newest task first (depth first, warm caches) and idle threads

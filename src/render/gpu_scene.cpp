@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <string_view>
 #include <numeric>
 #include <optional>
 #include <span>
@@ -16,7 +15,6 @@
 #include "bvh/sprite.h"
 #include "bvh/triangle.h"
 #include "bvh/wide.h"
-#include "core/environment.h"
 #include "core/error.h"
 #include "render/env_table.h"
 #include "render/instance_arrays.h"
@@ -24,6 +22,7 @@
 #include "render/light_list.h"
 #include "render/scene_limits.h"
 #include "render/sphere_lights.h"
+#include "render/tuning.h"
 #include "render/walks.h"
 #include "scene/environment.h"
 #include "scene/objects.h"
@@ -164,16 +163,11 @@ void addLightList(const Scene& scene, std::span<const EmissiveTriangle> emissive
     out.topLightCount = list.topCount;
 }
 
-// The light grid over where shading points lie (the world's BVH, or its top level). For
-// measurements: PENUMBRA_LIGHT_GRID=0 leaves it out (the plain walk), PENUMBRA_LIGHT_GRID_LEVELS
-// sets the tree level it picks among, PENUMBRA_LIGHT_GRID_MB its size cap, and
-// PENUMBRA_LIGHT_GRID_DRAW=0 walks below the clusters instead of drawing from their tables.
+// The light grid over where shading points lie (the world's BVH, or its top level), unless the
+// tuning leaves it out (the plain walk, for measurements) or sets its options.
 void addLightGrid(SceneArrays& out) {
-    if (environmentSetting("PENUMBRA_LIGHT_GRID", 1, 0, 1) == 0 || out.nodes.empty()) return;
-    LightGridOptions options;
-    options.drawInClusters = environmentSetting("PENUMBRA_LIGHT_GRID_DRAW", 1, 0, 1) != 0;
-    options.levels = std::uint32_t(environmentSetting("PENUMBRA_LIGHT_GRID_LEVELS", options.levels, 1, PN_LIGHT_GRID_MAX_LEVELS));
-    options.maxWords = environmentSetting("PENUMBRA_LIGHT_GRID_MB", options.maxWords * 4 >> 20, 1, 1024) << 18;  // 2^18 words in a MiB
+    if (!renderTuning().lightGrid || out.nodes.empty()) return;
+    const LightGridOptions& options = renderTuning().lightGridOptions;
     const shader::BvhNode& root = out.nodes[out.instances.empty() ? 0 : out.topRoot];
     Aabb bounds;
     bounds.grow(root.boundsMin);
@@ -206,10 +200,10 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 // The scene the arrays are built from, when it is not the input itself. Emitters stay world-space
 // triangles in the light BVH, so instances of emissive meshes are baked into the world (keptFrom:
 // the input's number of each instance left); PENUMBRA_FORCE_INSTANCES=1 instead makes the world's
-// meshes one instance, to measure the two-level traversal on any scene.
+// meshes one instance (RenderTuning::forceInstances), to measure the two-level traversal on any scene.
 std::optional<Scene> sceneToBuild(const Scene& input, std::vector<std::uint32_t>& keptFrom) {
     std::optional<Scene> baked;
-    if (const char* force = std::getenv("PENUMBRA_FORCE_INSTANCES"); force && std::string_view(force) == "1") {
+    if (renderTuning().forceInstances) {
         baked = input;
         instanceWorldMeshes(*baked);
         bakeEmissiveInstances(*baked);

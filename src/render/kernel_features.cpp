@@ -1,14 +1,12 @@
 #include "render/kernel_features.h"
 
-#include <cstdlib>
-#include <cstring>
+#include "render/tuning.h"
 
 namespace penumbra {
 
 std::uint32_t kernelFeatures(const SceneArrays& a, Accel accel, bool cullBackfaces) {
     const std::uint32_t cull = cullBackfaces ? PN_FEATURE_CULL_BACKFACES : 0u;
-    const char* generic = std::getenv("PENUMBRA_GENERIC_KERNEL");
-    if (generic && *generic && std::strcmp(generic, "0") != 0) return PN_FEATURE_ALL | cull;
+    if (renderTuning().genericKernel) return PN_FEATURE_ALL | cull;
     std::uint32_t f = cull;
     if (a.sphereCount > 0) f |= PN_FEATURE_SPHERES;
     for (const shader::TriVerts& t : a.triVerts) {

@@ -1,11 +1,9 @@
 #include "serve/frame_encoder.h"
 
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <algorithm>
 
 #include "core/log.h"
+#include "core/parallel.h"
 #include "serve/jpeg_encoder.h"
 
 namespace penumbra::serve {
@@ -34,8 +32,8 @@ struct FrameEncoder::Workers {
     // The arena takes no more threads than the machine runs at once (TBB warns of more); the
     // strips stay as many as asked, so the pictures are the same on any machine.
     explicit Workers(int threads)
-        : arena(std::min(threads, tbb::this_task_arena::max_concurrency())), encoders(std::size_t(threads)) {}
-    tbb::task_arena arena;
+        : arena(std::min(unsigned(threads), hardwareThreads())), encoders(std::size_t(threads)) {}
+    ThreadArena arena;
     std::vector<JpegEncoder> encoders;  // one per strip slot; a strip index picks its encoder
 };
 
@@ -70,8 +68,8 @@ std::shared_ptr<EncodedFrame> FrameEncoder::encode(const ReadbackSlot& slot) {
     std::vector<Strip> strips = stripLayout(meta.height, int(workers_->encoders.size()));
     std::vector<double> ms(strips.size());
     const auto* pixels = static_cast<const std::uint8_t*>(slot.pixels.mapped());
-    workers_->arena.execute([&] {
-        tbb::parallel_for(std::size_t(0), strips.size(), [&](std::size_t i) {
+    workers_->arena.run([&] {
+        parallelChunks(strips.size(), 1, [&](std::size_t i, std::size_t, std::size_t) {
             const auto start = Clock::now();
             Strip& s = strips[i];
             workers_->encoders[i].encode(pixels + std::size_t(s.y) * meta.width * 4, int(meta.width), s.rows,

@@ -6,7 +6,7 @@
 #include "gpu_fixture.h"
 #include "render/kernel_features.h"
 #include "render/renderer.h"
-#include "scoped_env.h"
+#include "scoped_tuning.h"
 #include "render_helpers.h"
 #include "scene/presets/presets.h"
 
@@ -63,7 +63,8 @@ TEST_F(GpuTest, TheKernelsMadeForTheCornellBoxRenderWhatTheGenericOnesDo) {
     own.render();
     EXPECT_EQ(own.kernelFeatures() & (PN_FEATURE_GLOSSY | PN_FEATURE_TRANSMISSION | PN_FEATURE_TEXTURES), 0u)
         << kernelFeatureNames(own.kernelFeatures());
-    ScopedEnv generic("PENUMBRA_GENERIC_KERNEL", "1");
+    ScopedTuning generic;
+    generic.genericKernel(true);
     Renderer all(*ctx, scene, smallSettings(64, 7));
     all.render();
     EXPECT_EQ(all.kernelFeatures(), PN_FEATURE_ALL);

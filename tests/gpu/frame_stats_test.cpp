@@ -7,7 +7,7 @@
 #include "render/interactive_renderer.h"
 #include "render/renderer.h"
 #include "scene/presets/presets.h"
-#include "scoped_env.h"
+#include "scoped_tuning.h"
 
 namespace penumbra::test {
 namespace {
@@ -63,11 +63,13 @@ TEST_F(GpuTest, MegakernelAndWavefrontCountTheSame) {
     const Scene scene = makePreset("caffeine");  // spheres and a plane, open to the sky: misses too
     RenderStats mega, wave;
     {
-        ScopedEnv kernel("PENUMBRA_TRACE_KERNEL", "mega");
+        ScopedTuning tuning;
+        tuning.kernel("mega");
         mega = countedPass(*ctx, scene, Accel::Bvh);
     }
     {
-        ScopedEnv kernel("PENUMBRA_TRACE_KERNEL", "wavefront");
+        ScopedTuning tuning;
+        tuning.kernel("wavefront");
         wave = countedPass(*ctx, scene, Accel::Bvh);
     }
     EXPECT_GT(mega.closestRays, mega.closestHits) << "some rays leave the scene";

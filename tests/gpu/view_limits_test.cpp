@@ -4,7 +4,7 @@
 #include "gpu_fixture.h"
 #include "render/renderer.h"
 #include "render_helpers.h"
-#include "scoped_env.h"
+#include "scoped_tuning.h"
 #include "shared/view_limits.h"
 
 namespace penumbra::test {
@@ -41,7 +41,8 @@ void expectColor(const ImageRgb& img, int x, int y, Vec3 expected) {
 }
 
 TEST_P(ViewLimitsTest, TextureSaturationMovesTexelsFromTheirGreyAndKeepsGreys) {
-    ScopedEnv kernel("PENUMBRA_TRACE_KERNEL", GetParam());
+    ScopedTuning tuning;
+    tuning.kernel(GetParam());
     const float grey = srgbToLinear8(128);
     const float redLuminance = 0.2126f;  // Rec. 709: the red texel's luminance
     for (float s : {0.0f, 0.5f, 1.0f, 1.6f}) {
@@ -58,7 +59,8 @@ TEST_P(ViewLimitsTest, TextureSaturationMovesTexelsFromTheirGreyAndKeepsGreys) {
 }
 
 TEST_P(ViewLimitsTest, NothingBeyondTheRenderDistanceIsDrawn) {
-    ScopedEnv kernel("PENUMBRA_TRACE_KERNEL", GetParam());
+    ScopedTuning tuning;
+    tuning.kernel(GetParam());
     // The quad stands 2 m in front of the camera and reaches 1 m to each side (2.24 m away).
     const ImageRgb all = render(*ctx, 1, 0);
     expectColor(all, 9, 12, {1, 0, 0});

@@ -11,7 +11,7 @@
 #include "render/renderer.h"
 #include "scene/presets/presets.h"
 #include "gpu_fixture.h"
-#include "scoped_env.h"
+#include "scoped_tuning.h"
 
 namespace penumbra::test {
 namespace {
@@ -69,7 +69,8 @@ void expectStillViewerMatchesTheRender(const gpu::Context& ctx, std::uint32_t sa
 }
 
 TEST_P(ViewerRenderKernelTest, StillCameraConvergesToTheHeadlessRender) {
-    ScopedEnv kernel("PENUMBRA_TRACE_KERNEL", GetParam());
+    ScopedTuning tuning;
+    tuning.kernel(GetParam());
     expectStillViewerMatchesTheRender(*ctx, 1, false);
     expectStillViewerMatchesTheRender(*ctx, 3, false);
     expectStillViewerMatchesTheRender(*ctx, 3, true);
@@ -77,12 +78,12 @@ TEST_P(ViewerRenderKernelTest, StillCameraConvergesToTheHeadlessRender) {
 
 INSTANTIATE_TEST_SUITE_P(Kernels, ViewerRenderKernelTest, ::testing::Values("mega", "wavefront"));
 
-// The wavefront's stage timer (PENUMBRA_WAVE_STAGE_TIMES=1) reports each step per round of the
-// bounce loop as well as in total; after one timed pass the medians are that pass's figures, so
+// The wavefront's stage timer (RenderTuning::waveStageTimes, PENUMBRA_WAVE_STAGE_TIMES=1)
+// reports each step per round of the bounce loop as well as in total; after one timed pass the medians are that pass's figures, so
 // a step's rounds add up to its total.
 TEST_F(ViewerRenderTest, WavefrontStageTimesPerRoundAddUpToEachStep) {
-    ScopedEnv kernel("PENUMBRA_TRACE_KERNEL", "wavefront");
-    ScopedEnv stages("PENUMBRA_WAVE_STAGE_TIMES", "1");
+    ScopedTuning tuning;
+    tuning.kernel("wavefront").stageTimes(true);
     Scene scene = makeCornellBox();
     InteractiveRenderer viewer(*ctx, scene, false, 7);
     viewer.resize(16, 12);

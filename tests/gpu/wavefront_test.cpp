@@ -16,7 +16,7 @@
 #include "render/renderer.h"
 #include "render_helpers.h"
 #include "scene/presets/presets.h"
-#include "scoped_env.h"
+#include "scoped_tuning.h"
 #include "test_worlds.h"
 
 namespace penumbra::test {
@@ -30,9 +30,9 @@ struct Traced {
 };
 
 Traced renderWith(const gpu::Context& ctx, const std::string& kernel, const Scene& scene, const RenderSettings& settings,
-                  const std::vector<std::uint32_t>* mask = nullptr, const std::string& tailPaths = "0") {
-    ScopedEnv env("PENUMBRA_TRACE_KERNEL", kernel);
-    ScopedEnv tail("PENUMBRA_WAVE_TAIL_PATHS", tailPaths);
+                  const std::vector<std::uint32_t>* mask = nullptr, std::uint32_t tailPaths = 0) {
+    ScopedTuning tuning;
+    tuning.kernel(kernel).tailPaths(tailPaths);
     Renderer renderer(ctx, scene, settings);
     if (mask) {
         renderer.setActiveMask(*mask);
@@ -69,8 +69,8 @@ void expectSameImage(const gpu::Context& ctx, const Scene& scene, const RenderSe
     const Traced mega = renderWith(ctx, "mega", scene, settings, mask);
     // The tail kernel never, once half a pass's paths are left, and for every path from the start.
     const std::uint64_t pathsPerPass = std::uint64_t(settings.width) * settings.height * settings.samplesPerPass;
-    for (const std::string& tailPaths : {std::string("0"), std::to_string(pathsPerPass / 2), std::string("4294967295")}) {
-        SCOPED_TRACE("PENUMBRA_WAVE_TAIL_PATHS=" + tailPaths);
+    for (const std::uint32_t tailPaths : {0u, std::uint32_t(pathsPerPass / 2), UINT32_MAX}) {
+        SCOPED_TRACE("waveTailPaths " + std::to_string(tailPaths));
         const Traced wave = renderWith(ctx, "wavefront", scene, settings, mask, tailPaths);
         ASSERT_EQ(mega.sums.size(), wave.sums.size());
         EXPECT_EQ(differingPixels(ctx, mega.sums, wave.sums), 0u) << "pixels whose sums differ between the kernels";
@@ -79,7 +79,7 @@ void expectSameImage(const gpu::Context& ctx, const Scene& scene, const RenderSe
         } else if (settings.pathsPerDispatch == 0 && !mask) {
             // Shared camera rays: the wavefront traces one per pixel (unless the tail starts
             // every path from its camera ray), the megakernel one per sample.
-            const bool tailFromTheStart = std::stoull(tailPaths) >= pathsPerPass;
+            const bool tailFromTheStart = tailPaths >= pathsPerPass;
             const std::uint64_t passes = settings.samplesPerPixel / settings.samplesPerPass;
             const std::uint64_t saved = tailFromTheStart ? 0
                                                          : std::uint64_t(settings.width) * settings.height *

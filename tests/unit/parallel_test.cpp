@@ -1,9 +1,10 @@
 #include <gtest/gtest.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
 #include <stdexcept>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include "core/parallel.h"
@@ -29,10 +30,10 @@ TEST(Parallel, ExceptionsReachTheCaller) {
 }
 
 TEST(Parallel, ChunksAreNeverShorterThanMinChunk) {
-    tbb::task_arena four(4);  // splits whatever the machine has
+    ThreadArena four(4);  // splits whatever the machine has
     for (std::size_t n : {5u, 31u, 32u, 1000u, 100003u}) {
         std::atomic<std::size_t> shortest{n}, chunks{0};
-        four.execute([&] {
+        four.run([&] {
             parallelFor(n, 16, [&](std::size_t b, std::size_t e) {
                 ++chunks;
                 std::size_t s = shortest.load();
@@ -73,6 +74,51 @@ void visit(TaskGroup& tasks, std::vector<std::atomic<int>>& seen, std::size_t be
         end = mid;
     }
     seen[begin]++;
+}
+
+// Chunk c is always [c * size, (c + 1) * size), whatever the threads: a reduction combined in
+// chunk order is the same on one thread and on four.
+TEST(Parallel, ChunksAreFixedByTheirSizeAlone) {
+    for (unsigned threads : {1u, 4u}) {
+        for (std::size_t n : {0u, 1u, 99u, 100u, 100003u}) {
+            std::vector<std::atomic<int>> seen(n);
+            std::vector<std::pair<std::size_t, std::size_t>> ranges((n + 99) / 100);
+            std::size_t chunks = 0;
+            ThreadArena(threads).run([&] {
+                chunks = parallelChunks(n, 100, [&](std::size_t c, std::size_t b, std::size_t e) {
+                    ranges[c] = {b, e};
+                    for (std::size_t i = b; i < e; ++i) seen[i]++;
+                });
+            });
+            ASSERT_EQ(chunks, ranges.size());
+            for (std::size_t c = 0; c < chunks; ++c) {
+                EXPECT_EQ(ranges[c].first, c * 100);
+                EXPECT_EQ(ranges[c].second, std::min(n, c * 100 + 100));
+            }
+            for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(seen[i].load(), 1) << "n " << n << " index " << i;
+        }
+    }
+}
+
+TEST(Parallel, InvokeRunsBothAndRethrows) {
+    std::atomic<int> ran{0};
+    parallelInvoke([&] { ran += 1; }, [&] { ran += 2; });
+    EXPECT_EQ(ran.load(), 3);
+    EXPECT_THROW(parallelInvoke([] {}, [] { throw std::runtime_error("half failed"); }), std::runtime_error);
+}
+
+// An arena caps the threads a loop uses: one thread runs every chunk on the caller.
+TEST(Parallel, OneThreadArenaRunsOnTheCaller) {
+    ThreadArena one(1);
+    std::atomic<bool> elsewhere{false};
+    one.run([&] {
+        const auto caller = std::this_thread::get_id();
+        EXPECT_EQ(hardwareThreads(), 1u);
+        parallelFor(100000, 10, [&](std::size_t, std::size_t) {
+            if (std::this_thread::get_id() != caller) elsewhere = true;
+        });
+    });
+    EXPECT_FALSE(elsewhere.load());
 }
 
 TEST(TaskGroup, SpawnedTasksRunExactlyOnceBeforeRunReturns) {

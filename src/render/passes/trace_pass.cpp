@@ -10,16 +10,6 @@
 
 namespace penumbra {
 
-TraceKernel traceKernelFromEnvironment() {
-    const char* value = std::getenv("PENUMBRA_TRACE_KERNEL");
-    if (!value || !*value) return TraceKernel::Auto;
-    const std::string name = value;
-    if (name == "auto") return TraceKernel::Auto;
-    if (name == "mega") return TraceKernel::Megakernel;
-    if (name == "wavefront") return TraceKernel::Wavefront;
-    throw UsageError("PENUMBRA_TRACE_KERNEL must be 'auto', 'mega' or 'wavefront' (got '" + name + "')");
-}
-
 TracePass::TracePass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
                      const gpu::Buffer& accumulation, const gpu::Buffer& counters, std::uint32_t features,
                      const gpu::Buffer* activeMask, TraceKernel kernel)

@@ -12,19 +12,12 @@
 #include "gpu/pipeline.h"
 #include "render/gpu_scene.h"
 #include "render/passes/wavefront_pass.h"
+#include "render/tuning.h"
 
 namespace penumbra {
 
-// Auto: the wavefront for passes of at least kWavefrontMinPaths paths, where it is faster on the
-// H200 (1.9x on DOOM1 at 1280x800 x 4 spp, 1.3x at 960x540, even on Cornell), the megakernel
-// below, where the wavefront's fixed cost per bounce (a dozen dispatches and barriers) outweighs
-// what it saves (480x270: 25% slower on DOOM1). docs/PERFORMANCE.md has the crossover runs.
-enum class TraceKernel { Auto, Megakernel, Wavefront };
+// TraceKernel (render/tuning.h): Auto picks the wavefront from this many paths per pass on.
 constexpr std::uint64_t kWavefrontMinPaths = std::uint64_t(1) << 18;
-
-// The kernel design: PENUMBRA_TRACE_KERNEL=mega, =wavefront or =auto (the A/B switch of
-// docs/PERFORMANCE.md); auto when unset.
-TraceKernel traceKernelFromEnvironment();
 
 class TracePass {
 public:
@@ -33,7 +26,7 @@ public:
     // pass binds a placeholder of its own and never reads it.
     TracePass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
               const gpu::Buffer& accumulation, const gpu::Buffer& counters, std::uint32_t features,
-              const gpu::Buffer* activeMask = nullptr, TraceKernel kernel = traceKernelFromEnvironment());
+              const gpu::Buffer* activeMask = nullptr, TraceKernel kernel = renderTuning().traceKernel);
 
     // The design a pass of width x height x samplesPerPass paths runs with (never Auto).
     TraceKernel kernelFor(std::uint32_t width, std::uint32_t height, std::uint32_t samplesPerPass) const;

@@ -6,12 +6,12 @@
 #include <cstring>
 #include <string>
 
-#include "core/environment.h"
 #include "core/error.h"
 #include "core/median.h"
 #include "gpu/check.h"
 #include "gpu/commands.h"
 #include "gpu/limits.h"
+#include "render/tuning.h"
 
 namespace penumbra {
 
@@ -24,15 +24,6 @@ std::uint32_t groupsFor(std::uint64_t items) { return std::uint32_t((items + PN_
 
 enum Stage : std::uint32_t { kStart, kExtend, kShade, kShadow, kTail, kFinish, kStageCount };
 constexpr const char* kStageNames[kStageCount] = {"start", "extend", "shade", "shadow", "tail", "finish"};
-
-// The live paths at or below which the tail kernel follows them to their end instead of another
-// round of the bounce loop (PassPush.waveTailPaths). Measured on an H200 (docs/PERFORMANCE.md,
-// session 27); PENUMBRA_WAVE_TAIL_PATHS overrides it (0: never).
-constexpr std::uint32_t kDefaultTailPaths = 16384;
-
-std::uint32_t tailPathsSetting() {
-    return std::uint32_t(environmentSetting("PENUMBRA_WAVE_TAIL_PATHS", kDefaultTailPaths, 0, UINT32_MAX));
-}
 
 }  // namespace
 
@@ -59,9 +50,8 @@ WavefrontPass::WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, con
                            gpu::MemoryKind::DeviceLocal);
     args_->bind(PN_BINDING_WAVE_CONTROL, control_);
     reserve(PN_WAVE_GROUP);
-    tailPaths_ = tailPathsSetting();
-    const char* stageTimes = std::getenv("PENUMBRA_WAVE_STAGE_TIMES");
-    if (stageTimes && std::strcmp(stageTimes, "1") == 0) stageTimes_ = std::make_unique<StageTimes>(ctx);
+    tailPaths_ = renderTuning().waveTailPaths;
+    if (renderTuning().waveStageTimes) stageTimes_ = std::make_unique<StageTimes>(ctx);
 }
 
 template <typename Dispatch>

@@ -2,7 +2,6 @@
 #include "bvh/builder.h"
 
 #include <gtest/gtest.h>
-#include <tbb/task_arena.h>
 
 #include <cmath>
 #include <cstring>
@@ -13,6 +12,7 @@
 #include "bvh/validate.h"
 #include "bvh_test_util.h"
 #include "core/error.h"
+#include "core/parallel.h"
 #include "median_split.h"
 
 namespace penumbra::bvh {
@@ -93,8 +93,8 @@ TEST(BvhBuild, OneThreadAndFourBuildTheSameTree) {
     tris[100].v0.x = std::numeric_limits<float>::quiet_NaN();
     for (std::size_t i = 0; i < tris.size(); i += 50) tris[i] = tris[0];  // coincident centroids
     Bvh one, four;
-    tbb::task_arena(1).execute([&] { one = buildTriangles(tris); });
-    tbb::task_arena(4).execute([&] { four = buildTriangles(tris); });
+    ThreadArena(1).run([&] { one = buildTriangles(tris); });
+    ThreadArena(4).run([&] { four = buildTriangles(tris); });
     EXPECT_EQ(one.primOrder, four.primOrder);
     ASSERT_EQ(one.nodes.size(), four.nodes.size());
     EXPECT_EQ(0, std::memcmp(one.nodes.data(), four.nodes.data(),

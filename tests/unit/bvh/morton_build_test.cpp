@@ -3,8 +3,6 @@
 // against the binned-SAH build's (a worse tree, but not a broken one).
 #include <gtest/gtest.h>
 
-#include <tbb/task_arena.h>
-
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -13,6 +11,7 @@
 #include "bvh/stats.h"
 #include "bvh/validate.h"
 #include "bvh_test_util.h"
+#include "core/parallel.h"
 
 namespace penumbra::bvh {
 namespace {
@@ -71,7 +70,7 @@ bool sameBits(const std::vector<shader::BvhNode>& a, const std::vector<shader::B
 // 4 worker threads whatever the machine has, at sizes around the parallel grain and with many
 // equal codes (median splits) and odd boxes.
 TEST(MortonBuild, ParallelBuildIsTheSerialOneToTheBit) {
-    tbb::task_arena four(4);
+    ThreadArena four(4);
     for (std::size_t n : {2 * kMortonParallelGrain - 1, 2 * kMortonParallelGrain, std::size_t(9001), std::size_t(40000)}) {
         std::vector<Aabb> boxes = test::boxesOf(test::randomSoup(n, std::uint32_t(n) + 1));
         for (std::size_t i = 0; i < n; i += 7) boxes[i] = boxes[0];  // a cluster of equal codes
@@ -79,7 +78,7 @@ TEST(MortonBuild, ParallelBuildIsTheSerialOneToTheBit) {
         boxes[11].hi.x = std::numeric_limits<float>::infinity();
         const Bvh serial = buildMorton(boxes, BuildThreads::One);
         Bvh pooled;
-        four.execute([&] { pooled = buildMorton(boxes, BuildThreads::Pool); });
+        four.run([&] { pooled = buildMorton(boxes, BuildThreads::Pool); });
         EXPECT_TRUE(sameBits(serial.nodes, pooled.nodes)) << n << " boxes";
         EXPECT_EQ(serial.primOrder, pooled.primOrder) << n << " boxes";
         validate(pooled, boxes);

@@ -1,6 +1,5 @@
 // The parallel partition of large nodes against the serial one: same split, same order.
 #include <gtest/gtest.h>
-#include <tbb/task_arena.h>
 
 #include <bit>
 #include <cstring>
@@ -9,6 +8,7 @@
 #include <vector>
 
 #include "bvh/sah_binning.h"
+#include "core/parallel.h"
 
 namespace penumbra::bvh::sah {
 namespace {
@@ -46,7 +46,7 @@ bool sameBits(const std::vector<PrimRef>& a, const std::vector<PrimRef>& b) {
 }
 
 TEST(SahPartition, ParallelPartitionIsTheSerialOneToTheBit) {
-    tbb::task_arena four(4);
+    ThreadArena four(4);
     const BuildOptions options;
     const SahBinning sah(options);
     // A sub-range that does not start at 0, as deeper nodes do, of two chunks, of two and a
@@ -62,7 +62,7 @@ TEST(SahPartition, ParallelPartitionIsTheSerialOneToTheBit) {
             ASSERT_GE(serial.axis, 0);
             EXPECT_TRUE(serial.chunkLeft.empty());
             Split parallel;
-            four.execute([&] { parallel = sah.find(src.data(), range, 4); });
+            four.run([&] { parallel = sah.find(src.data(), range, 4); });
             ASSERT_GT(parallel.chunkLeft.size(), 1u);  // the parallel path was taken
             EXPECT_EQ(parallel.axis, serial.axis);
             EXPECT_EQ(parallel.bin, serial.bin);
@@ -71,7 +71,7 @@ TEST(SahPartition, ParallelPartitionIsTheSerialOneToTheBit) {
             std::vector<PrimRef> a(n), b(n);
             const std::uint32_t leftA = sah.partition(src.data(), a.data(), range, serial);
             std::uint32_t leftB = 0;
-            four.execute([&] { leftB = sah.partition(src.data(), b.data(), range, parallel); });
+            four.run([&] { leftB = sah.partition(src.data(), b.data(), range, parallel); });
             EXPECT_EQ(leftA, serial.left.size());
             EXPECT_EQ(leftB, leftA);
             EXPECT_TRUE(sameBits(a, b));
@@ -86,13 +86,13 @@ TEST(SahPartition, ParallelPartitionIsTheSerialOneToTheBit) {
 // Counts that do not match what the pass finds (as if binning had decided a primitive
 // differently) must not corrupt the output: the serial pass redoes the range.
 TEST(SahPartition, DisagreeingChunkCountsFallBackToTheSerialPass) {
-    tbb::task_arena four(4);
+    ThreadArena four(4);
     const SahBinning sah(BuildOptions{});
     const std::uint32_t n = 3 * SahBinning::kMinChunk;
     const std::vector<PrimRef> src = oddSoup(n, 3);
     const Range range = gather(src.data(), 0, n);
     Split split;
-    four.execute([&] { split = sah.find(src.data(), range, 4); });
+    four.run([&] { split = sah.find(src.data(), range, 4); });
     ASSERT_GT(split.chunkLeft.size(), 1u);
     Split serial = split;
     serial.chunkLeft.clear();
@@ -102,7 +102,7 @@ TEST(SahPartition, DisagreeingChunkCountsFallBackToTheSerialPass) {
     split.chunkLeft[0] -= 1;
     split.chunkLeft[1] += 1;
     std::uint32_t leftB = 0;
-    four.execute([&] { leftB = sah.partition(src.data(), b.data(), range, split); });
+    four.run([&] { leftB = sah.partition(src.data(), b.data(), range, split); });
     EXPECT_EQ(leftB, leftA);
     EXPECT_TRUE(sameBits(a, b));
 }

@@ -2,12 +2,12 @@
 // (mirrors and shears included), traversal against brute force over instances x triangles and
 // against one flat BVH over the transformed triangles.
 #include <gtest/gtest.h>
-#include <tbb/task_arena.h>
 
 #include <cstring>
 
 #include "bvh/two_level.h"
 #include "bvh_test_util.h"
+#include "core/parallel.h"
 
 namespace penumbra::bvh {
 namespace {
@@ -116,11 +116,11 @@ TEST(TwoLevel, PooledTopLevelRebuildIsTheSerialOneToTheBit) {
     }
     std::vector<shader::BvhNode> serial(37), pooled(37);  // stand-ins for bottom levels
     TopLevelScratch serialScratch, pooledScratch;
-    tbb::task_arena four(4);
+    ThreadArena four(4);
     for (int frame = 0; frame < 2; ++frame) {
         instances[std::size_t(frame) * 977].objectToWorld[1].w += 3.0f;  // an instance moves
         replaceTopLevel(serial, 37, instances, objectBounds, serialScratch, BuildThreads::One);
-        four.execute([&] { replaceTopLevel(pooled, 37, instances, objectBounds, pooledScratch, BuildThreads::Pool); });
+        four.run([&] { replaceTopLevel(pooled, 37, instances, objectBounds, pooledScratch, BuildThreads::Pool); });
         ASSERT_EQ(serial.size(), pooled.size());
         EXPECT_EQ(serial.size(), 37u + 2 * instances.size() - 1);
         EXPECT_EQ(std::memcmp(serial.data(), pooled.data(), serial.size() * sizeof(shader::BvhNode)), 0)
