@@ -30,6 +30,7 @@ struct ViewerOptions {
     std::optional<double> fixedDt;  // seconds each frame advances time by, instead of the clock
     bool printCamera = false;       // print the final camera on exit
     bool fly = false;               // start in free flight on levels one can walk
+    bool phantom = true;            // view --no-phantom: the dungeon's phantom starts switched off (H)
     ViewSettings view;              // the settings the flags set (addViewSettingOptions)
 };
 
