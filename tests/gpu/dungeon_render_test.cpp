@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "../unit/io/io_test_util.h"
@@ -44,8 +45,6 @@ Panel firstPanel(const Scene& s) {
     const Vec3 a = m.positions[m.indices[0]], b = m.positions[m.indices[1]], c = m.positions[m.indices[2]];
     return {sum * 0.25f, normalize(cross(b - a, c - a))};
 }
-
-float luminance(Vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
 // Looking straight at the first torch panel from 5 m in front of it, at its height.
 void facePanel(Scene& s) {
@@ -100,6 +99,8 @@ TEST_F(GpuTest, DungeonIsTexturedFromFreedoom) {
     facePanel(flat);
     const float t = wallAlbedoVariation(*ctx, textured, 64, 40);
     const float f = wallAlbedoVariation(*ctx, flat, 64, 40);
+    RecordProperty("textured_share", std::to_string(t));
+    RecordProperty("flat_share", std::to_string(f));
     EXPECT_GT(t, 0.3f) << "textured walls: share of wall pixels off the median albedo";
     EXPECT_LT(f, 0.1f) << "flat-coloured walls: only edge pixels should differ";
 }
@@ -146,6 +147,7 @@ TEST_F(GpuTest, DungeonTorchPanelsGlowAndLightTheRoomNearThem) {
     ASSERT_GT(farthest, 4.0f);  // metres: the map has corners far from every torch
     const float lit = floorBrightness(*ctx, scene, nearX, nearZ);
     const float dark = floorBrightness(*ctx, scene, farX, farZ);
+    RecordProperty("lit_over_dark", std::to_string(lit / std::max(dark, 1e-9f)));
     EXPECT_GT(lit, 0.0f);
     EXPECT_GT(lit, 4.0f * dark) << "near tile " << nearX << "," << nearZ << " far tile " << farX << "," << farZ;
 }
