@@ -24,6 +24,7 @@ void applyKey(InputState& in, int key, bool pressed) {
         case GLFW_KEY_ENTER: in.use = true; break;
         case GLFW_KEY_V: in.previewToggled = true; break;
         case GLFW_KEY_M: in.addModel = true; break;
+        case GLFW_KEY_H: in.phantomToggled = true; break;
         default: break;
     }
 }
@@ -63,7 +64,7 @@ void endInputFrame(InputState& in) {
     in.pauseToggled = in.resetCamera = in.screenshot = false;
     in.walkToggled = in.panelToggled = in.escape = false;
     in.nextInstance = in.gridToggled = in.use = false;
-    in.previewToggled = in.addModel = false;
+    in.previewToggled = in.addModel = in.phantomToggled = false;
 }
 
 }  // namespace penumbra::viewer

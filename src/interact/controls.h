@@ -20,6 +20,7 @@ struct InputState {
     bool use = false;  // Doom's "use" (Space or Enter): opens doors and turns switches while walking
     bool previewToggled = false;  // V: the fast preview while moving (ViewSettings::preview)
     bool addModel = false;        // M: add the model named in the panel's Add model field
+    bool phantomToggled = false;  // H: the dungeon's phantom off / on (scene/phantom.h)
 };
 
 // What the held keys ask of the selected instance: I/K forward/back, J/L left/right (along the

@@ -14,7 +14,7 @@ float cameraSpeedFor(const Scene& scene) {
 }
 
 Navigation::Navigation(const Scene& scene, bool fly)
-    : controller_(scene.camera, cameraSpeedFor(scene), scene.walkMap) {
+    : controller_(scene.camera, cameraSpeedFor(scene), scene.walkMap), phantom_(scene) {
     if (fly) controller_.setWalking(false);
     if (scene.tileGrid && !fly) grid_ = std::make_unique<GridWalker>(*scene.tileGrid, scene.camera);
     if (scene.doomLevel) {

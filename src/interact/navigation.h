@@ -12,6 +12,7 @@
 #include "interact/doom_play.h"
 #include "interact/grid_walk.h"
 #include "render/view_settings.h"
+#include "scene/phantom.h"
 #include "scene/scene.h"
 
 namespace penumbra::viewer {
@@ -47,6 +48,12 @@ public:
     bool moveSectors(Scene& scene) const { return doom_ && doom_->moveSectors(scene); }
     // A Doom level's sector lights as they are now, in their materials; the materials changed.
     std::vector<std::uint32_t> applyLights(Scene& scene) { return doom_ ? doom_->applyLights(scene) : std::vector<std::uint32_t>{}; }
+    // The dungeon's phantom (scene/phantom.h): whether the scene has one, and switching it off and
+    // on at the clock's `seconds`; true when its instance changed (the renderer takes the new
+    // transforms, and the temporal pass drops the history it uncovers or covers).
+    bool hasPhantom() const { return phantom_.present(); }
+    bool phantomShown() const { return phantom_.shown(); }
+    bool showPhantom(Scene& scene, bool shown, double seconds) { return phantom_.set(scene, shown, seconds); }
     // "E1M1 complete in T s", once, on the first call after a Doom level ended.
     std::optional<std::string> takeLevelCompletion() { return doom_ ? doom_->takeCompletion() : std::nullopt; }
 
@@ -58,6 +65,7 @@ private:
     // Not std::optional: GCC 12 warns of it being maybe uninitialized.
     std::unique_ptr<GridWalker> grid_;
     std::unique_ptr<DoomPlay> doom_;
+    PhantomSwitch phantom_;
 };
 
 // What the scene decides of the view. The torch: attached as the scene's last punctual light so

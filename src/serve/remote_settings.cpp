@@ -70,6 +70,8 @@ bool applySetting(RemoteState& state, const std::string& name, const nlohmann::j
         if ((ok = readNumber(value, -10, 10, x, error))) v.exposure = float(x);
     } else if (name == "playing") {
         ok = readBool(value, state.playing, error);
+    } else if (name == "phantom") {
+        ok = readBool(value, state.phantom, error);
     } else {
         error = "is not a setting";
     }
@@ -95,7 +97,8 @@ nlohmann::json settingsJson(const RemoteState& state) {
             {"debugOpacity", v.debugOpacity},
             {"torch", v.torch},
             {"exposure", v.exposure},
-            {"playing", state.playing}};
+            {"playing", state.playing},
+            {"phantom", state.phantom}};
 }
 
 nlohmann::json settingRangesJson() {

@@ -10,10 +10,12 @@
 
 namespace penumbra::serve {
 
-// What a browser may change: the view's settings and whether time runs.
+// What a browser may change: the view's settings, whether time runs, and whether the dungeon's
+// phantom is shown (scene/phantom.h; ignored by scenes without one).
 struct RemoteState {
     ViewSettings view;
     bool playing = true;
+    bool phantom = true;
 };
 
 // Applies one setting (clamped to its range). False, with `error` saying why, for an unknown

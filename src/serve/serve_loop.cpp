@@ -23,13 +23,14 @@ using Clock = std::chrono::steady_clock;
 constexpr auto kStatsInterval = std::chrono::milliseconds(250);
 constexpr const char* kControls =
     "WASD/arrows move, Q/E turn, Space/C up/down, Space/Enter use (walking a Doom level), Shift fast, F walk/fly, "
-    "G grid, R reset, P play/pause, "
+    "G grid, R reset, P play/pause, H phantom, "
     "N next object, I/K/J/L/O/U and ,/. move and turn it, click selects, drag moves (Shift turns)";
 
 // What the loop carries from frame to frame besides the scene and the renderer.
 struct LoopState {
     LoopState(const Scene& scene, const ServeOptions& options) : nav(scene, options.fly), pacer(options.pace) {
         remote.view = options.view;
+        remote.phantom = options.phantom;
     }
     viewer::Navigation nav;
     FramePacer pacer;
@@ -120,6 +121,9 @@ void applyInput(LoopState& s, Scene& scene, float step) {
     if (viewer::moveSelectedInstance(scene, s.selectedInstance, viewer::objectInputFrom(in), s.nav.camera(),
                                      s.nav.speed(), step))
         s.instancesMoved = true;
+    // The phantom's switch (H or the page's checkbox), paused or playing.
+    if (in.phantomToggled) s.remote.phantom = !s.remote.phantom;
+    if (s.nav.showPhantom(scene, s.remote.phantom, s.animationClock)) s.instancesMoved = true;
     if (s.remote.playing) {
         const viewer::WorldChange change = viewer::playStep(scene, s.nav, in, s.animationClock, step);
         s.lightsChanged.insert(s.lightsChanged.end(), change.lightsChanged.begin(), change.lightsChanged.end());
@@ -142,6 +146,7 @@ nlohmann::json helloJson(const LoopState& s, const Scene& scene, const Interacti
             {"height", o.height},    {"settings", settingsJson(s.remote)}, {"debugViews", debugViewsJson()},
             {"ranges", settingRangesJson()},
             {"walking", s.nav.walking()}, {"canWalk", s.nav.canWalk()}, {"hasTorch", r.hasTorch()},
+            {"hasPhantom", s.nav.hasPhantom()},
             {"controls", kControls}};
 }
 

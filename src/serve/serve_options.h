@@ -18,6 +18,7 @@ struct ServeOptions {
     std::uint32_t width = 1280, height = 720;  // the picture at resolution scale 1
     ViewSettings view;                          // the starting settings (spp, denoise, debug, ...)
     bool fly = false;
+    bool phantom = true;  // --no-phantom: the dungeon's phantom starts switched off
     EncodeOptions encode;
     PaceOptions pace;
 };

@@ -26,6 +26,9 @@ TEST(ServeSettings, EachSettingReachesTheView) {
     EXPECT_TRUE(apply(s, "torch", true));
     EXPECT_TRUE(apply(s, "exposure", -1.5));
     EXPECT_TRUE(apply(s, "playing", false));
+    EXPECT_TRUE(s.phantom);
+    EXPECT_TRUE(apply(s, "phantom", false));
+    EXPECT_FALSE(apply(s, "phantom", 1));  // a number is not a switch
     EXPECT_EQ(s.view.samplesPerFrame, 4u);
     EXPECT_EQ(s.view.maxBounces, 3u);
     EXPECT_FLOAT_EQ(s.view.resolutionScale, 0.5f);
@@ -37,12 +40,14 @@ TEST(ServeSettings, EachSettingReachesTheView) {
     EXPECT_TRUE(s.view.torch);
     EXPECT_FLOAT_EQ(s.view.exposure, -1.5f);
     EXPECT_FALSE(s.playing);
+    EXPECT_FALSE(s.phantom);
     // And back out as the JSON the page reads.
     const nlohmann::json j = settingsJson(s);
     EXPECT_EQ(j["spp"], 4);
     EXPECT_EQ(j["denoise"], 3);
     EXPECT_EQ(j["debug"], "normals");
     EXPECT_EQ(j["playing"], false);
+    EXPECT_EQ(j["phantom"], false);
     EXPECT_TRUE(apply(s, "denoise", 0));
     EXPECT_FALSE(s.view.denoise);
     EXPECT_EQ(settingsJson(s)["denoise"], 0);

@@ -238,6 +238,7 @@ void UiLayer::drawPanel(ViewSettings& s, PanelState& state, const ViewerStats& s
         ImGui::SliderFloat("intensity (cd)", &s.torchIntensity, 0.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic);
         ImGui::SliderFloat("range (m, 0: none)", &s.torchRange, 0.0f, 100.0f);
     }
+    if (state.hasPhantom) ImGui::Checkbox("phantom (H)", &state.phantom);
     drawEditSections(s, edit, requests);
     statistics(state, stats);
     ImGui::PopItemWidth();

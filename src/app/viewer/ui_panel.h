@@ -31,6 +31,7 @@ struct PanelState {
     std::size_t triangles = 0, bvhNodes = 0;
     std::size_t bvhDepth = 0;  // bvh::treeDepth, as `penumbra info` prints it: the box slider's top
     bool hasTorch = false;
+    bool hasPhantom = false, phantom = true;  // the dungeon's phantom: the scene has one; shown (H)
     bool frameStatistics = false;  // the trace kernels count tests, hits and blocked shadow rays
     bool walking = false, canWalk = false, pointerCaptured = false;
     std::string message;  // last screenshot path or error

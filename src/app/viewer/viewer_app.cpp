@@ -278,6 +278,8 @@ struct LoopState {
         panel.bvhNodes = renderer.sceneArrays().nodes.size();
         panel.bvhDepth = bvh::treeDepth(renderer.sceneArrays().nodes);
         panel.hasTorch = renderer.hasTorch();
+        panel.hasPhantom = nav.hasPhantom();
+        panel.phantom = options.phantom;
         loadLights(scene, edit);
     }
     Camera camera() const { return nav.camera(); }
@@ -335,6 +337,9 @@ void applyInput(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, co
         }
         settings.time = float(loop.animationClock);
     }
+    // The phantom's switch (H or the panel), paused or playing: parked or back on its patrol.
+    if (loop.input.phantomToggled && loop.panel.hasPhantom) loop.panel.phantom = !loop.panel.phantom;
+    if (loop.nav.showPhantom(scene, loop.panel.phantom, loop.animationClock)) instancesMoved = true;
     // A grabbed instance follows the cursor, after the camera and the animations have moved.
     if (!automationDone && dragSelection(w, loop.pointer, scene, loop.camera())) instancesMoved = true;
     if (!automationDone && dragGroup(w, loop.pointer, scene, loop.camera())) {
@@ -594,6 +599,8 @@ void applyEdits(Scene& scene, InteractiveRenderer& renderer, ViewSettings& setti
             settings.apertureRadius = scene.camera.apertureRadius;
             settings.focusDistance = scene.camera.focusDistance;
             nav = Navigation(scene, false);  // the new scene's own movement mode
+            panel.hasPhantom = nav.hasPhantom();
+            panel.phantom = true;
             edit.object = edit.group = kNoObject;
             loadLights(scene, edit);
             edit.openMessage.clear();

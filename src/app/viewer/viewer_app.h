@@ -33,6 +33,7 @@ struct ViewerOptions {
     std::uint32_t stepsPerFrame = 1;
     bool printCamera = false;       // print the final camera on exit
     bool fly = false;               // start in free flight on levels one can walk
+    bool phantom = true;            // view --no-phantom: the dungeon's phantom starts switched off (H)
     ViewSettings view;              // the settings the flags set (addViewSettingOptions)
 };
 

@@ -1,6 +1,7 @@
 // Built-in scenes, made in code so the binary needs no asset files.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -32,9 +33,13 @@ Scene makeMaterialSpheres();
 // the other, and a slab laid diagonally across (bvh_lesson.cpp).
 Scene makeBvhLesson();
 
-// A 16 x 16 tile dungeon lit by wall torches and the player's torch, with a phantom patrolling a
-// corridor (an instance with a scene motion) and a tile grid for the viewer's grid movement.
+// A 16 x 16 tile dungeon lit by wall torches (glowing panels) and the player's torch, with a
+// phantom patrolling a corridor (an instance with a scene motion; scene/phantom.h switches it off)
+// and a tile grid for the viewer's grid movement. Textured from Freedoom's freedoom1.wad
+// (freedoomWadPath(), presets/dungeon_textures.h), or from `textureWad`; without it the dungeon
+// is flat-coloured and a warning line says why.
 Scene makeDungeon();
+Scene makeDungeon(const std::filesystem::path& textureWad);
 
 // Suzanne (Debian assimp-testmodels, read at run time) in the Cornell room without its blocks, as
 // "Casually Pathtracing with WebGPU" renders it. Throws Error naming the package when the model
