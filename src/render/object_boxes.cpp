@@ -4,7 +4,7 @@
 
 #include "bvh/sphere.h"
 #include "bvh/sprite.h"
-#include "render/scene_objects.h"
+#include "render/picking.h"
 
 namespace penumbra {
 
