@@ -84,8 +84,10 @@ class FinalFrames final : public FrameMaker {
 public:
     FinalFrames(const gpu::Context& ctx, const FrameJob& job) : ctx_(ctx), job_(job) {}
     RenderedFrame make(const Scene& scene, const Camera& camera, double seconds, WorldChange change) override {
-        if (!renderer_ || change.instancesMoved || change.geometryChanged || !change.lightsChanged.empty())
+        if (!renderer_ || change.instancesMoved || change.geometryChanged)
             renderer_ = std::make_unique<Renderer>(ctx_, scene, job_.settings);
+        else  // a flickering sector changes its light nearly every tic: no new renderer for that
+            for (std::uint32_t m : change.lightsChanged) renderer_->setUnsampledEmission(m, scene.materials[m].emission);
         renderer_->restart(camera, textureTime(seconds));
         ProgressiveRender render(*renderer_, job_.adaptive);
         RenderBudget budget;

@@ -53,6 +53,17 @@ void Renderer::setFrameStatistics(bool on) {
 
 Renderer::~Renderer() = default;
 
+void Renderer::setUnsampledEmission(std::uint32_t material, Vec3 emission) {
+    PN_CHECK(material < arrays_.materials.size());
+    shader::Material& m = arrays_.materials[material];
+    m.emission = emission;
+    // renderPasses starts with a barrier that makes transfer writes visible to the trace.
+    commands_.run([&](VkCommandBuffer cmd) {
+        vkCmdUpdateBuffer(cmd, gpuScene_->materials.get(), VkDeviceSize(material) * sizeof(shader::Material),
+                          sizeof(shader::Material), &m);
+    });
+}
+
 double Renderer::renderPasses(std::uint32_t passes, bool countRays, bool masked) {
     timer_.reset();
     commands_.run([&](VkCommandBuffer cmd) {

@@ -49,6 +49,10 @@ public:
     void restart(const Camera& camera);
     // The same at another moment of animated textures (RenderSettings::time): a walk's frames.
     void restart(const Camera& camera, float time);
+    // A material's emission changed where light sampling does not look (a Doom sector's light:
+    // found by rays only, so no light table depends on it): the GPU's copy is updated in place,
+    // as InteractiveRenderer does, instead of a new Renderer. Call restart() after.
+    void setUnsampledEmission(std::uint32_t material, Vec3 emission);
     std::uint32_t passesDone() const { return passesDone_; }
     void setPassesDone(std::uint32_t passes);
 
