@@ -73,8 +73,25 @@ for name in sorted(order, key=lambda b: (-sizes[b], order.index(b))):
 print("\n".join(b for b in order if share[b] == k))' "$k" "$n" "$@"
 }
 
-pack() {
-  local build=build part=""
+# keep_share K N: trims .gpu/test-binaries and the packed binaries to the K-th of N shares and
+# records it in .gpu/part (for `run` to report); with N = 1 it keeps them all.
+keep_share() {
+  local k=$1 n=$2 all=() chosen=() b
+  mapfile -t all < .gpu/test-binaries
+  if [ "$n" -eq 1 ]; then rm -f .gpu/part; return; fi
+  mapfile -t chosen < <(choose_part "$k" "$n" "${all[@]}")
+  [ ${#chosen[@]} -gt 0 ] || die "part $k/$n has no test binaries (only ${#all[@]} to share)"
+  for b in "${all[@]}"; do
+    printf '%s\n' "${chosen[@]}" | grep -qx "$b" || rm -f ".gpu/bin/$b.xz"
+  done
+  printf '%s\n' "${chosen[@]}" > .gpu/test-binaries
+  echo "$k/$n" > .gpu/part
+  echo "gpu-tests: part $k/$n: ${chosen[*]}"
+}
+
+# pack_args ARG...: sets pack's build, k and n from [BUILD_DIR] [--part K/N].
+pack_args() {
+  local part=""
   while [ $# -gt 0 ]; do
     case "$1" in
       --part) [ $# -ge 2 ] || die "--part needs K/N, e.g. --part 1/2"; part=$2; shift 2 ;;
@@ -83,12 +100,15 @@ pack() {
       *) build=$1; shift ;;
     esac
   done
-  local k=1 n=1
-  if [ -n "$part" ]; then
-    [[ "$part" =~ ^([0-9]+)/([0-9]+)$ ]] || die "--part takes K/N, e.g. 1/2, not '$part'"
-    k=${BASH_REMATCH[1]} n=${BASH_REMATCH[2]}
-    [ "$n" -ge 1 ] && [ "$k" -ge 1 ] && [ "$k" -le "$n" ] || die "--part $part: K must be 1 to N"
-  fi
+  [ -n "$part" ] || return 0
+  [[ "$part" =~ ^([0-9]+)/([0-9]+)$ ]] || die "--part takes K/N, e.g. 1/2, not '$part'"
+  k=${BASH_REMATCH[1]} n=${BASH_REMATCH[2]}
+  [ "$n" -ge 1 ] && [ "$k" -ge 1 ] && [ "$k" -le "$n" ] || die "--part $part: K must be 1 to N"
+}
+
+pack() {
+  local build=build k=1 n=1
+  pack_args "$@"
   local top; top=$(git rev-parse --show-toplevel)
   cd "$top"
   [ -d .git ] || die "gpu-pack.sh writes .git/info/exclude, so run pack in a checkout whose .git is a folder (not a worktree)"
@@ -143,20 +163,8 @@ pack() {
   # The binaries travel compressed (a fifth of their size: ten test binaries and penumbra would not
   # fit the device tool's 64 MiB otherwise); `run` and `diagnose` unpack them.
   for b in "${names[@]}" penumbra; do xz -T0 -6 -f ".gpu/bin/$b"; done
-  if [ "$n" -gt 1 ]; then
-    local chosen=()
-    mapfile -t chosen < <(choose_part "$k" "$n" "${names[@]}")
-    for b in "${names[@]}"; do
-      printf '%s\n' "${chosen[@]}" | grep -qx "$b" || rm -f ".gpu/bin/$b.xz"
-    done
-    [ ${#chosen[@]} -gt 0 ] || die "part $k/$n has no test binaries (only ${#names[@]} to share)"
-    names=("${chosen[@]}")
-    echo "gpu-tests: part $k/$n: ${names[*]}"
-    echo "$k/$n" > .gpu/part
-  else
-    rm -f .gpu/part
-  fi
   printf '%s\n' "${names[@]}" > .gpu/test-binaries
+  keep_share "$k" "$n"
   # So do the shared libraries (53 MB as they are, FFmpeg's closure already stubbed down).
   tar -C .gpu -cf - lib | xz -T0 -6 > .gpu/lib.tar.xz
   rm -rf .gpu/lib
