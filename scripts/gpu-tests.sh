@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
 # The GPU test suite on a machine with a real GPU (docs/TESTING.md, "On a GPU host").
 #
-#   scripts/gpu-tests.sh pack [BUILD_DIR]    here, on the Debian machine that built BUILD_DIR (default build):
+#   scripts/gpu-tests.sh pack [BUILD_DIR] [--part K/N]
+#                                            here, on the Debian machine that built BUILD_DIR (default build):
 #                                            packs every GPU test binary the build registered with ctest (label
 #                                            gpu), the penumbra binary the CLI tests run, the Khronos validation
-#                                            layer and the test assets into .gpu/
+#                                            layer and the test assets into .gpu/, prints what would travel
+#                                            (working tree + .gpu) and fails if that is over 64 MiB. With
+#                                            --part K/N only the K-th of N shares of the test binaries (balanced
+#                                            by compressed size; penumbra, libraries and assets in every share):
+#                                            N packs and N runs make the whole suite
 #   scripts/gpu-tests.sh run [LOG_DIR]       on the GPU host, from the repository root, after `source .gpu/env.sh`:
 #                                            runs each test binary in ONE process, prints a summary, exits non-zero
 #                                            on any failure, crash, unexpected skip or validation message
@@ -14,7 +19,9 @@
 # LOG_DIR (default .gpu/logs) receives summary.txt and gpu-tests.log, or diagnose.txt and diagnose.log.
 # PENUMBRA_TEST_DEVICE picks the device (default NVIDIA); PENUMBRA_GPU_TEST_TIMEOUT limits each binary (seconds).
 # Packing runs scripts/gpu-pack.sh (GPU_PACK overrides), which needs a checkout whose .git is a
-# folder (a clone, not a `git worktree`).
+# folder (a clone, not a `git worktree`). It keeps only FFmpeg's H.264 path real (libx264, mp4/mkv:
+# GPU_PACK_VIDEO_MINIMAL, on by default) and stubs the codec libraries FFmpeg links besides, which
+# would not fit otherwise.
 set -euo pipefail
 
 # The binaries come from the build: every gtest executable ctest runs under the label gpu, in the
@@ -48,8 +55,60 @@ for test in json.load(sys.stdin).get("tests", []):
 print("\n".join(seen))'
 }
 
+# choose_part K N NAME...: the NAMEs (packed as .gpu/bin/NAME.xz) of the K-th of N shares, in the
+# order given. Largest first, each binary goes to the share with the fewest bytes so far (the first
+# such on a tie): the same build always gives the same shares, so N packs cover every binary once.
+choose_part() {
+  local k=$1 n=$2; shift 2
+  local name
+  for name in "$@"; do printf '%s %s\n' "$(stat -c %s ".gpu/bin/$name.xz")" "$name"; done | python3 -c '
+import sys
+k, n, order = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3:]
+sizes = {name: int(size) for size, name in (line.split() for line in sys.stdin)}
+load, share = [0] * n, {}
+for name in sorted(order, key=lambda b: (-sizes[b], order.index(b))):
+    i = load.index(min(load))
+    load[i] += sizes[name]
+    share[name] = i + 1
+print("\n".join(b for b in order if share[b] == k))' "$k" "$n" "$@"
+}
+
+# keep_share K N: trims .gpu/test-binaries and the packed binaries to the K-th of N shares and
+# records it in .gpu/part (for `run` to report); with N = 1 it keeps them all.
+keep_share() {
+  local k=$1 n=$2 all=() chosen=() b
+  mapfile -t all < .gpu/test-binaries
+  if [ "$n" -eq 1 ]; then rm -f .gpu/part; return; fi
+  mapfile -t chosen < <(choose_part "$k" "$n" "${all[@]}")
+  [ ${#chosen[@]} -gt 0 ] || die "part $k/$n has no test binaries (only ${#all[@]} to share)"
+  for b in "${all[@]}"; do
+    printf '%s\n' "${chosen[@]}" | grep -qx "$b" || rm -f ".gpu/bin/$b.xz"
+  done
+  printf '%s\n' "${chosen[@]}" > .gpu/test-binaries
+  echo "$k/$n" > .gpu/part
+  echo "gpu-tests: part $k/$n: ${chosen[*]}"
+}
+
+# pack_args ARG...: sets pack's build, k and n from [BUILD_DIR] [--part K/N].
+pack_args() {
+  local part=""
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --part) [ $# -ge 2 ] || die "--part needs K/N, e.g. --part 1/2"; part=$2; shift 2 ;;
+      --part=*) part=${1#--part=}; shift ;;
+      -*) die "unknown option $1 (pack [BUILD_DIR] [--part K/N])" ;;
+      *) build=$1; shift ;;
+    esac
+  done
+  [ -n "$part" ] || return 0
+  [[ "$part" =~ ^([0-9]+)/([0-9]+)$ ]] || die "--part takes K/N, e.g. 1/2, not '$part'"
+  k=${BASH_REMATCH[1]} n=${BASH_REMATCH[2]}
+  [ "$n" -ge 1 ] && [ "$k" -ge 1 ] && [ "$k" -le "$n" ] || die "--part $part: K must be 1 to N"
+}
+
 pack() {
-  local build=${1:-build}
+  local build=build k=1 n=1
+  pack_args "$@"
   local top; top=$(git rev-parse --show-toplevel)
   cd "$top"
   [ -d .git ] || die "gpu-pack.sh writes .git/info/exclude, so run pack in a checkout whose .git is a folder (not a worktree)"
@@ -101,29 +160,34 @@ pack() {
       echo "gpu-tests: warning: $a is not installed here; the tests that read it will skip there" >&2
     fi
   done
-  printf '%s\n' "${names[@]}" > .gpu/test-binaries
   # The binaries travel compressed (a fifth of their size: ten test binaries and penumbra would not
   # fit the device tool's 64 MiB otherwise); `run` and `diagnose` unpack them.
-  for b in $(cat .gpu/test-binaries) penumbra; do xz -T0 -6 -f ".gpu/bin/$b"; done
-  # So do the shared libraries (30 MiB as they are).
+  for b in "${names[@]}" penumbra; do xz -T0 -6 -f ".gpu/bin/$b"; done
+  printf '%s\n' "${names[@]}" > .gpu/test-binaries
+  keep_share "$k" "$n"
+  # So do the shared libraries (53 MB as they are, FFmpeg's closure already stubbed down).
   tar -C .gpu -cf - lib | xz -T0 -6 > .gpu/lib.tar.xz
   rm -rf .gpu/lib
   { git rev-parse --short HEAD; git status --porcelain --untracked-files=no | grep -q . && echo "(with uncommitted changes)" || true; } \
     | paste -sd' ' > .gpu/commit
-  report_size
+  report_size "$n"
 }
 
-# What the device tool would carry: the tracked and untracked-not-ignored files, plus .gpu.
+# report_size N: what the device tool would carry (the tracked and untracked-not-ignored files,
+# plus .gpu), in bytes and MiB; fails when that is over the limit, since the call would be refused.
 report_size() {
-  local tree gpu total
+  local n=$1 tree gpu total limit=$((LIMIT_MIB * 1048576))
   tree=$(git ls-files -z --cached --others --exclude-standard | xargs -0 stat -c %s 2>/dev/null | awk '{s += $1} END {print s + 0}')
   gpu=$(du -sb .gpu | cut -f1)
   total=$((tree + gpu))
-  awk -v g="$gpu" -v t="$tree" -v l="$LIMIT_MIB" 'BEGIN {
-    printf "gpu-tests: packed .gpu/ (%.1f MiB) + working tree (%.1f MiB) = %.1f MiB of the %d MiB the device tool carries\n",
-      g / 1048576, t / 1048576, (g + t) / 1048576, l }'
-  du -sh .gpu/* | sed 's/^/  /'
-  [ "$total" -lt $((LIMIT_MIB * 1048576 * 9 / 10)) ] || die "that is too close to the ${LIMIT_MIB} MiB limit"
+  du -sb .gpu/* | awk '{printf "  %10d  %s\n", $1, $2}'
+  awk -v g="$gpu" -v t="$tree" -v l="$limit" 'BEGIN {
+    printf "gpu-tests: packed .gpu/ %d + working tree %d = %d bytes (%.1f MiB) of the %d (%.0f MiB) the device tool carries\n",
+      g, t, g + t, (g + t) / 1048576, l, l / 1048576 }'
+  if [ "$total" -gt "$limit" ]; then
+    die "too big: $total bytes is over the device tool's $limit; pack in shares: --part 1/$((n + 1)) ... --part $((n + 1))/$((n + 1))"
+  fi
+  [ "$total" -lt $((limit * 19 / 20)) ] || echo "gpu-tests: warning: within 5% of the ${LIMIT_MIB} MiB limit" >&2
 }
 
 # xz -dc, or Python's lzma where the host has no xz.
@@ -176,6 +240,7 @@ prepare_host() {
 
 header() {
   echo "commit: $(cat .gpu/commit 2>/dev/null || echo unknown)"
+  [ ! -f .gpu/part ] || echo "part $(cat .gpu/part) of the suite: $(paste -sd' ' .gpu/test-binaries)"
   echo "device selector: PENUMBRA_TEST_DEVICE=$PENUMBRA_TEST_DEVICE; validation layer from $VK_LAYER_PATH"
   "$PENUMBRA_BINARY" info --device "$PENUMBRA_TEST_DEVICE" 2>&1 | sed 's/^/  /' || true
 }
@@ -257,6 +322,7 @@ run() {
   # On a GPU, rebuilding the viewer's pipelines is quick: every reopen of the viewer test draws;
   # and contexts are cheap: the context leak test makes 200 (100 under ctest on lavapipe).
   case "$PENUMBRA_TEST_DEVICE" in *llvmpipe*) ;; *) extra=(PENUMBRA_LEAK_REOPEN_FRAMES=100 PENUMBRA_LEAK_CONTEXTS=200) ;; esac
+  [ ! -f .gpu/part ] || echo "gpu-tests: part $(cat .gpu/part) of the suite: $(paste -sd' ' .gpu/test-binaries)" >&2
   for name in $(cat .gpu/test-binaries); do
     local start=$SECONDS
     run_binary "$name" ${extra[@]+"${extra[@]}"}
@@ -287,6 +353,8 @@ leak_run() {
 }
 
 diagnose() {
+  [ ! -f .gpu/test-binaries ] || grep -qx leak_tests .gpu/test-binaries \
+    || die "diagnose runs leak_tests, which this pack lacks: pack the part that holds it (see .gpu/part)"
   prepare_host "${1:-}"
   : > "$log_dir/diagnose.log"
   local old=0 new=0 noval=1 fds=1
@@ -305,11 +373,16 @@ diagnose() {
         echo "--- the open-file limit is already at its maximum ($hard): no run with a higher one"
       fi
     fi
-    run_binary material_tests PENUMBRA_INSTANCE_PER_CONTEXT=1
-    { echo "===== material_tests with PENUMBRA_INSTANCE_PER_CONTEXT=1 (exit $(cat "$work/material_tests.rc"))"
-      cat "$work/material_tests.log"; } >> "$log_dir/diagnose.log"
-    echo "--- material_tests with one instance per context: exit $(cat "$work/material_tests.rc"), $(counts "$work/material_tests.log")"
-    grep -m1 -A2 'Failure$' "$work/material_tests.log" | cut -c1-600 || true
+    # A pack of part of the suite (--part) may hold leak_tests without material_tests.
+    if grep -qx material_tests .gpu/test-binaries; then
+      run_binary material_tests PENUMBRA_INSTANCE_PER_CONTEXT=1
+      { echo "===== material_tests with PENUMBRA_INSTANCE_PER_CONTEXT=1 (exit $(cat "$work/material_tests.rc"))"
+        cat "$work/material_tests.log"; } >> "$log_dir/diagnose.log"
+      echo "--- material_tests with one instance per context: exit $(cat "$work/material_tests.rc"), $(counts "$work/material_tests.log")"
+      grep -m1 -A2 'Failure$' "$work/material_tests.log" | cut -c1-600 || true
+    else
+      echo "--- material_tests is not in this pack (part $(cat .gpu/part 2>/dev/null)): its run with one instance per context is left out"
+    fi
     echo
     if [ "$old" -eq 1 ] && [ "$new" -eq 0 ]; then
       echo "VERDICT: instance cycling was the cause: with one VkInstance per context the driver refused a context"
@@ -337,5 +410,5 @@ case "${1:-}" in
   pack) shift; pack "$@" ;;
   run) shift; run "$@" ;;
   diagnose) shift; diagnose "$@" ;;
-  *) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
+  *) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
 esac
