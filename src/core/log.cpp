@@ -12,10 +12,6 @@ void logWarning(std::string_view message) {
     std::fprintf(stderr, "penumbra: warning: %.*s\n", int(message.size()), message.data());
 }
 
-void logInfo(std::string_view message) {
-    if (g_verbose) std::fprintf(stderr, "penumbra: %.*s\n", int(message.size()), message.data());
-}
-
 void setVerbose(bool verbose) { g_verbose = verbose; }
 bool isVerbose() { return g_verbose; }
 

@@ -6,7 +6,6 @@
 namespace penumbra {
 
 void logWarning(std::string_view message);
-void logInfo(std::string_view message);  // only shown when verbose
 void setVerbose(bool verbose);
 bool isVerbose();
 

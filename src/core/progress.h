@@ -47,7 +47,6 @@ public:
 
     // etaSeconds >= 0 replaces the estimate from the rate (a time budget ends the work sooner).
     void update(std::uint64_t done, double etaSeconds = -1);
-    void setTotal(std::uint64_t total) { total_ = total; }
     void finish();  // draws the last state and ends the line
 
 private:

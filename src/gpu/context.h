@@ -84,9 +84,6 @@ public:
     // VK_KHR_pipeline_executable_properties is on: pipelines can report registers and spills.
     bool pipelineStatisticsSupported() const { return pipelineStatistics_; }
 
-    bool validationEnabled() const { return messenger_ != nullptr; }
-    // Messages the validation layer reported so far (tests fail if any).
-    std::vector<std::string> validationMessages() const { return log_->messages(); }
     // The same messages, in a log that outlives the context: destroying the device reports the
     // objects still alive, and a test reads them after the context is gone.
     std::shared_ptr<const ValidationLog> validationLog() const { return log_; }

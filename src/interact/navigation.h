@@ -36,7 +36,6 @@ public:
 
     bool walking() const { return !grid_ && controller_.walking(); }
     bool canWalk() const { return controller_.canWalk(); }
-    bool gridMoving() const { return grid_ != nullptr; }
     float speed() const { return controller_.speed(); }
     CameraController& controller() { return controller_; }
     const CameraController& controller() const { return controller_; }

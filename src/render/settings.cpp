@@ -34,8 +34,4 @@ MisMode parseMisMode(const std::string& name) {
     throw UsageError("unknown --mis '" + name + "'; use both, light or bsdf");
 }
 
-const char* misModeName(MisMode mode) {
-    return mode == MisMode::Both ? "both" : (mode == MisMode::LightOnly ? "light" : "bsdf");
-}
-
 }  // namespace penumbra

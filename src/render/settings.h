@@ -80,6 +80,5 @@ Accel parseAccel(const std::string& name);  // a name in render/walks.h; UsageEr
 const char* accelName(Accel accel);
 
 MisMode parseMisMode(const std::string& name);  // "both" | "light" | "bsdf"; UsageError otherwise
-const char* misModeName(MisMode mode);
 
 }  // namespace penumbra

@@ -117,14 +117,6 @@ Affine composeEdits(const Affine& later, const Affine& earlier) {
 
 Affine editedTransform(const Affine& edit, const Affine& animated) { return composeEdits(edit, animated); }
 
-double chainDuration(const std::vector<NodeMotion>& chain) {
-    double end = 0;
-    for (const NodeMotion& n : chain)
-        for (const Track* t : {&n.translationTrack, &n.rotationTrack, &n.scaleTrack})
-            if (t->present()) end = std::max(end, double(t->times.back()));
-    return end;
-}
-
 void validateTrack(const Track& track, const std::string& where) {
     const std::size_t perKey = track.interpolation == KeyInterpolation::CubicSpline ? 3 : 1;
     if (track.values.size() != track.times.size() * perKey)

@@ -68,10 +68,6 @@ Affine trsTransform(Vec3 translation, const KeyValue& rotation, Vec3 scale);
 // The chain's transform at `seconds`.
 Affine chainTransform(const std::vector<NodeMotion>& chain, double seconds);
 
-// The last key's time over every track of the chain (0 when nothing is keyed; scene-file motions
-// have no end and do not count).
-double chainDuration(const std::vector<NodeMotion>& chain);
-
 // Throws Error naming `where` when a track's times are not finite and strictly increasing or its
 // value count does not match them.
 void validateTrack(const Track& track, const std::string& where);

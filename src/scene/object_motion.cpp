@@ -26,10 +26,6 @@ double polylineLength(const std::vector<Vec3>& points) {
 
 }  // namespace
 
-double travelLength(const ScriptedMotion& motion) {
-    return motion.path.size() < 2 ? 0.0 : polylineLength(periodPoints(motion));
-}
-
 Vec3 pathOffset(const ScriptedMotion& motion, double seconds) {
     if (motion.path.empty()) return Vec3{0};
     if (motion.path.size() < 2 || !(seconds > 0)) return motion.path.front();

@@ -27,9 +27,6 @@ struct ScriptedMotion {
     float spinDegreesPerSecond = 0;  // right-handed about spinAxis
 };
 
-// Metres from the first point along the path to its end (and back to the start, for Loop).
-double travelLength(const ScriptedMotion& motion);
-
 // The path's offset `seconds` after time 0 (at time 0 and before: the first point).
 Vec3 pathOffset(const ScriptedMotion& motion, double seconds);
 

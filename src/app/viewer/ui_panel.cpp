@@ -100,7 +100,6 @@ void UiLayer::newFrame() {
 }
 
 bool UiLayer::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
-bool UiLayer::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
 
 void UiLayer::render(VkCommandBuffer cmd) {
     ImGui::Render();

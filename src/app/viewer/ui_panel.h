@@ -50,7 +50,6 @@ public:
                    EditRequests& requests);
     void render(VkCommandBuffer cmd);  // inside the presenter's UI render pass
     bool wantsMouse() const;
-    bool wantsKeyboard() const;
 
 private:
     void shutdown();  // ImGui's backends and context

@@ -48,7 +48,4 @@ struct LineSpecial {
 // The special with this number, or none for 0 and numbers vanilla Doom does not define.
 std::optional<LineSpecial> lineSpecial(int number);
 
-// A short name for messages and documentation: "DR door raise", "S1 exit", ...
-const char* actionName(Action action);
-
 }  // namespace penumbra::doom

@@ -177,12 +177,6 @@ std::vector<SectorOutline> buildSectorOutlines(const MapData& map) {
     return outlines;
 }
 
-double signedArea(const std::vector<Edge2>& edges) {
-    double sum = 0;
-    for (const Edge2& e : edges) sum += e.a.x * e.b.y - e.b.x * e.a.y;
-    return 0.5 * sum;
-}
-
 bool fillNonzero(const std::vector<Edge2>& input, std::vector<Triangle2>& out,
                  std::int64_t& budget) {
     std::vector<SlabEdge> edges;

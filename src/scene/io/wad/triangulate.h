@@ -29,10 +29,6 @@ struct SectorOutline {
 // left out (they bound nothing).
 std::vector<SectorOutline> buildSectorOutlines(const MapData& map);
 
-// Shoelace sum over directed edges: for closed loops the integral of the winding number
-// (negative for the clockwise loops a sector is on the right of).
-double signedArea(const std::vector<Edge2>& edges);
-
 using Triangle2 = std::array<Point2, 3>;
 
 // Appends triangles covering the points of nonzero winding number. `budget` counts work units
