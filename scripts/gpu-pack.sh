@@ -36,32 +36,12 @@ for f in .gpu/bin/*; do
 done
 # GPU_PACK_NO_VIDEO=1: for benchmark packs that never write a video. FFmpeg's libraries and
 # everything only they load (x265, AV1, codec2, ICU data...) are about 45 MB compressed, too much
-# to travel beside the WebGPU peer; they are replaced by empty libraries of the same names and
-# symbol versions. penumbra binds them lazily (no BIND_NOW, function calls only), so it starts,
-# and only writing a video would fail (unresolved symbol).
+# to travel beside the WebGPU peer; FFmpeg's own libraries become stubs (gpu_stub_libs.py: the
+# same names and symbol versions, functions that return zero) and what only they loaded is
+# dropped, so penumbra starts and only writing a video fails.
 if [ "${GPU_PACK_NO_VIDEO:-0}" = 1 ]; then
-  video_libs=(libavcodec.so.59:LIBAVCODEC_59 libavformat.so.59:LIBAVFORMAT_59 libavutil.so.57:LIBAVUTIL_57
-              libswscale.so.6:LIBSWSCALE_6)
-  keep=$(mktemp)
-  for f in .gpu/bin/*; do
-    case "$(file -bL "$f")" in ELF*) ;; *) continue ;; esac
-    for need in $(readelf -d "$f" | sed -n 's/.*Shared library: \[\(.*\)\]/\1/p'); do
-      case " ${video_libs[*]} " in *" $need:"*) continue ;; esac
-      echo "$need" >> "$keep"
-      path=$(ldd "$f" | awk -v n="$need" '$1 == n {print $3}')
-      [ -n "$path" ] && ldd "$path" | awk '/=> \//{print $1}' >> "$keep"
-    done
-  done
-  for lib in .gpu/lib/*; do grep -qx "$(basename "$lib")" "$keep" || rm -f "$lib"; done
-  rm -f "$keep"
-  stub_dir=$(mktemp -d)
-  echo 'void penumbra_video_stub(void) {}' > "$stub_dir/stub.c"
-  for entry in "${video_libs[@]}"; do
-    name=${entry%%:*} version=${entry#*:}
-    echo "$version { global: penumbra_video_stub; local: *; };" > "$stub_dir/$version.map"
-    cc -shared -fPIC -o ".gpu/lib/$name" -Wl,-soname,"$name" -Wl,--version-script="$stub_dir/$version.map" "$stub_dir/stub.c"
-  done
-  rm -rf "$stub_dir"
+  python3 "$here/gpu_stub_libs.py" .gpu $(cd .gpu/lib && ls libavcodec.so.* libavformat.so.* libavutil.so.* \
+                                                   libswscale.so.* libswresample.so.* 2>/dev/null)
 elif [ "${GPU_PACK_VIDEO_MINIMAL:-1}" != 0 ]; then
   # Videos are written and read with libx264 and FFmpeg's own H.264 decoder in mp4/mkv; the
   # codecs, protocols and hardware front ends FFmpeg links besides become stubs of the same names
