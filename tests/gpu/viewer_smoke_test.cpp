@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../unit/io/io_test_util.h"
 #include "run_penumbra.h"
 #include "scene/io/wad/units.h"
 #include "scene/io/wad/wad_loader.h"
@@ -130,6 +131,14 @@ TEST_F(ViewerSmokeTest, AMalformedScriptIsOneLineNamingItsLineBeforeAnyWindowOpe
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+constexpr const char* kFreedoom = "/usr/share/games/doom/freedoom1.wad";
+
+// The line --print-camera writes: "camera X,Y,Z direction DX,DY,DZ".
+bool readPrintedCamera(const std::string& out, Vec3& eye, Vec3& look) {
+    return std::sscanf(out.c_str(), "camera %f,%f,%f direction %f,%f,%f", &eye.x, &eye.y, &eye.z, &look.x, &look.y,
+                       &look.z) == 6;
+}
+
 // The first impassable line (one-sided or blocking) along a ray in map units, or infinity.
 double wallDistance(const walk::WalkMap& map, Vec3 from, Vec3 dir) {
     double best = INFINITY;
@@ -147,12 +156,9 @@ double wallDistance(const walk::WalkMap& map, Vec3 from, Vec3 dir) {
 // a second, and read the final camera: it went straight ahead, as far as Doom's walking speed
 // allows but not through the first wall, with the eye 41 units above the floor.
 TEST_F(ViewerSmokeTest, ScriptedWalkOnFreedoomE1M1StopsAtTheWallAtEyeHeight) {
-    const char* wadPath = "/usr/share/games/doom/freedoom1.wad";
+    const char* wadPath = kFreedoom;
     PN_REQUIRE_XVFB();
-    if (!fs::exists(wadPath)) {
-        if (std::getenv("CI")) FAIL() << wadPath << " is missing (install freedoom)";
-        GTEST_SKIP() << wadPath << " is not installed (apt install freedoom)";
-    }
+    PENUMBRA_REQUIRE_ASSET(wadPath);  // Debian package freedoom
     // docs/VIEWER.md: the mouse turns 0.003 radians per pixel; negative DX turns left.
     std::ofstream(dir / "walk.txt") << "0 mouse -523.59878 0\n0 key W down\n1 key W up\n";
     // 0.5 s per frame: the first two frames walk (script clock 0 and 0.5), the third sees W up.
@@ -164,9 +170,7 @@ TEST_F(ViewerSmokeTest, ScriptedWalkOnFreedoomE1M1StopsAtTheWallAtEyeHeight) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
     Vec3 eye, look;
-    ASSERT_EQ(std::sscanf(r.out.c_str(), "camera %f,%f,%f direction %f,%f,%f", &eye.x, &eye.y, &eye.z, &look.x,
-                          &look.y, &look.z), 6)
-        << r.out;
+    ASSERT_TRUE(readPrintedCamera(r.out, eye, look)) << r.out;
 
     const Scene scene = loadWad(wadPath, "E1M1");
     ASSERT_TRUE(scene.walkMap.has_value());
@@ -193,12 +197,9 @@ TEST_F(ViewerSmokeTest, ScriptedWalkOnFreedoomE1M1StopsAtTheWallAtEyeHeight) {
 // --steps-per-frame N plays N fixed steps per drawn frame, exactly as N frames would: the same
 // scripted walk (a turn, then W held across frames) ends on the same camera, to the printed digit.
 TEST_F(ViewerSmokeTest, StepsPerFrameWalksExactlyAsThatManyFrames) {
-    const char* wadPath = "/usr/share/games/doom/freedoom1.wad";
+    const char* wadPath = kFreedoom;
     PN_REQUIRE_XVFB();
-    if (!fs::exists(wadPath)) {
-        if (std::getenv("CI")) FAIL() << wadPath << " is missing (install freedoom)";
-        GTEST_SKIP() << wadPath << " is not installed (apt install freedoom)";
-    }
+    PENUMBRA_REQUIRE_ASSET(wadPath);  // Debian package freedoom
     std::ofstream(dir / "walk.txt") << "0 mouse -300 0\n0.1 key W down\n0.3 key D down\n0.5 key W up\n";
     const std::string base = std::string("view ") + wadPath +
                              " --map E1M1 --width 64 --height 64 --debug albedo --fixed-dt 0.0625 --script walk.txt "
@@ -210,9 +211,7 @@ TEST_F(ViewerSmokeTest, StepsPerFrameWalksExactlyAsThatManyFrames) {
     ASSERT_NE(one.out.find("camera "), std::string::npos) << one.out;
     EXPECT_EQ(one.out, four.out);
     Vec3 eye, look;
-    ASSERT_EQ(std::sscanf(one.out.c_str(), "camera %f,%f,%f direction %f,%f,%f", &eye.x, &eye.y, &eye.z, &look.x,
-                          &look.y, &look.z), 6)
-        << one.out;
+    ASSERT_TRUE(readPrintedCamera(one.out, eye, look)) << one.out;
     const Scene scene = loadWad(wadPath, "E1M1");
     EXPECT_GT(length(eye - scene.camera.position), 1.0) << "the walk must move the camera for the test to mean much";
 }
@@ -226,12 +225,9 @@ TEST_F(ViewerSmokeTest, StepsPerFrameWalksExactlyAsThatManyFrames) {
 // by about 7 MB a frame (docs/RELIABILITY.md): 36 frames take 10 s and 0.6 GB on the 2-core
 // machine; 144 frames (16 steps each) ran past 10 minutes beside the other tests of a full ctest.
 TEST_F(ViewerSmokeTest, FreedoomE1M1WalkEndsTheLevelAndTheRun) {
-    const char* wadPath = "/usr/share/games/doom/freedoom1.wad";
+    const char* wadPath = kFreedoom;
     PN_REQUIRE_XVFB();
-    if (!fs::exists(wadPath)) {
-        if (std::getenv("CI")) FAIL() << wadPath << " is missing (install freedoom)";
-        GTEST_SKIP() << wadPath << " is not installed (apt install freedoom)";
-    }
+    PENUMBRA_REQUIRE_ASSET(wadPath);  // Debian package freedoom
     const std::string walk = std::string(PENUMBRA_SOURCE_DIR) + "/scenes/walks/freedoom1-e1m1-exit.txt";
     RunResult r = runViewer(dir,
                             std::string("view ") + wadPath + " --map E1M1 --width 64 --height 64 --debug albedo --fixed-dt 0.03125 --steps-per-frame 64 --script " +
