@@ -33,7 +33,7 @@
 bool hitPrimitive(uint i, vec3 o, vec3 d, float tMax, bool anyHit, out float t, out float u, out float v) {
     TriVerts tri = triVerts[i];
     // Before the flags' other uses: a culled triangle costs one cross and one dot product.
-    if (PN_HAS(PN_FEATURE_CULL_BACKFACES) && !anyHit && (tri.flags & (PN_TRI_KEEP_BACK | PN_TRI_SPHERE | PN_TRI_SPRITE)) == 0u &&
+    if (PN_OPTION(PN_OPTION_CULL_BACKFACES) && !anyHit && (tri.flags & (PN_TRI_KEEP_BACK | PN_TRI_SPHERE | PN_TRI_SPRITE)) == 0u &&
         facesAway(tri, d)) {
         t = 0.0;
         u = 0.0;
@@ -201,8 +201,8 @@ Hit traceRay(vec3 o, vec3 d, float tMax, bool anyHit) {
     if (frame.renderDistance > 0.0)
         tMax = min(tMax, renderDistanceExit(o.x - frame.cameraPosition.x, o.z - frame.cameraPosition.z, d.x, d.z,
                                             frame.renderDistance));
-    if (PN_HAS(PN_FEATURE_WIDE_BVH) && PN_WALK_IS(PN_ACCEL_WIDE)) return traverseWide(o, d, tMax, anyHit);
-    if (PN_HAS(PN_FEATURE_BRUTE_FORCE) && PN_WALK_IS(PN_ACCEL_BRUTE)) return traverseBrute(o, d, tMax, anyHit);
+    if (PN_WALK_IS(PN_ACCEL_WIDE)) return traverseWide(o, d, tMax, anyHit);
+    if (PN_WALK_IS(PN_ACCEL_BRUTE)) return traverseBrute(o, d, tMax, anyHit);
     if (PN_WALK_IS(PN_ACCEL_STACKLESS)) return traverseStackless(o, d, tMax, anyHit);
     if (PN_WALK_IS(PN_ACCEL_OBJECTS)) return traverseObjects(o, d, tMax, anyHit);
     return traverseBvh(o, d, tMax, anyHit);

@@ -63,7 +63,7 @@ float topLightImportance(uint k, vec3 p, vec3 n) {
 // The tree's importance plus every top-level light's: the normaliser of every pick at p.
 float totalLightImportance(float tree, vec3 p, vec3 n) {
     float total = tree;
-    uint count = PN_HAS(PN_FEATURE_ONE_TOP_LIGHT) ? 1u : frame.topLightCount;
+    uint count = PN_OPTION(PN_OPTION_ONE_TOP_LIGHT) ? 1u : frame.topLightCount;
     for (uint k = 0u; k < count; ++k) total += topLightImportance(k, p, n);
     return total;
 }
@@ -178,7 +178,7 @@ LightPick pickInCluster(uvec4 cluster, float pmf, inout uint rng) {
 }
 
 // The first choice of a pick in a kernel specialised for one top-level light
-// (PN_FEATURE_ONE_TOP_LIGHT, a WAD level's torch), with u in [0, 1): the light (returns false,
+// (PN_OPTION_ONE_TOP_LIGHT, a WAD level's torch), with u in [0, 1): the light (returns false,
 // `pick` is final) or the tree (returns true, `pick` holds the tree's probability). The light's
 // bound is weighed once, where pickLight's loop weighs each top-level light twice (once for the
 // normaliser, once to choose); the numbers are the same, so lightPickPmf agrees.
@@ -210,7 +210,7 @@ LightPick pickLight(vec3 p, vec3 n, float u, inout uint rng) {
     uint table = lightGridTable(p, n);
     float tree = lightTreeWeight(p, n, table, node);
     LightPick pick = LightPick(PN_NO_LIGHT, 0.0);
-    if (PN_HAS(PN_FEATURE_ONE_TOP_LIGHT)) {
+    if (PN_OPTION(PN_OPTION_ONE_TOP_LIGHT)) {
         if (!pickBesideOneTopLight(p, n, u, tree, pick)) return pick;
     } else {
         float total = totalLightImportance(tree, p, n);

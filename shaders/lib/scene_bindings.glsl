@@ -32,5 +32,11 @@ layout(constant_id = 0) const uint pnFeatures = PN_FEATURE_ALL;
 // default) keeps them all and reads frame.accel for each ray.
 layout(constant_id = 1) const uint pnWalk = PN_WALK_ANY;
 #define PN_WALK_IS(walk) (pnWalk == PN_WALK_ANY ? frame.accel == (walk) : pnWalk == (walk))
+// Where bounce 0's paths come from (PN_CAMERA_*): only the wavefront's first extend and shade
+// make them in place.
+layout(constant_id = 2) const uint pnCamera = PN_CAMERA_FROM_QUEUE;
+// What the host promises or asks for (PN_OPTION_*); none by default, which is always correct.
+layout(constant_id = 3) const uint pnOptions = PN_OPTION_NONE;
+#define PN_OPTION(option) ((pnOptions & (option)) != 0u)
 
 #endif

@@ -16,16 +16,16 @@ layout(std430, set = 0, binding = PN_BINDING_COUNTERS) buffer CounterBuffer { Ra
 layout(std430, set = 0, binding = PN_BINDING_ACTIVE_MASK) readonly buffer ActiveMask { uint activeMask[]; };
 layout(std430, set = 0, binding = PN_BINDING_PIXEL_ESTIMATES) readonly buffer PixelEstimates { vec4 pixelEstimates[]; };
 
-// Frame statistics (PN_FEATURE_FRAME_STATS): this invocation's primitive tests, closest hits and
+// Frame statistics (PN_OPTION_FRAME_STATS): this invocation's primitive tests, closest hits and
 // blocked shadow rays, counted through lib/bvh.glsl's hooks (so this file comes before it) and
 // added to the counters by countRays. Without the feature the hooks are empty branches the
 // pipeline's specialisation removes.
 uint pnPrimitivesTested = 0u;
 uint pnClosestHits = 0u;
 uint pnShadowBlocked = 0u;
-#define PN_COUNT_TRIANGLE() if (PN_HAS(PN_FEATURE_FRAME_STATS)) ++pnPrimitivesTested
-#define PN_COUNT_CLOSEST(hit) if (PN_HAS(PN_FEATURE_FRAME_STATS) && (hit).triangle != PN_NO_HIT) ++pnClosestHits
-#define PN_COUNT_OCCLUDED(blocked) if (PN_HAS(PN_FEATURE_FRAME_STATS) && (blocked)) ++pnShadowBlocked
+#define PN_COUNT_TRIANGLE() if (PN_OPTION(PN_OPTION_FRAME_STATS)) ++pnPrimitivesTested
+#define PN_COUNT_CLOSEST(hit) if (PN_OPTION(PN_OPTION_FRAME_STATS) && (hit).triangle != PN_NO_HIT) ++pnClosestHits
+#define PN_COUNT_OCCLUDED(blocked) if (PN_OPTION(PN_OPTION_FRAME_STATS) && (blocked)) ++pnShadowBlocked
 
 // The counter lane this workgroup adds to (see RayCounters).
 uint counterLane() { return (gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x) % PN_RAY_COUNTER_LANES; }
@@ -81,7 +81,7 @@ void countRays(uint closest, uint shadow) {
         if (closestSum != 0u) atomicAdd(counterLanes[lane].closestRays, closestSum);
         if (shadowSum != 0u) atomicAdd(counterLanes[lane].shadowRays, shadowSum);
     }
-    if (!PN_HAS(PN_FEATURE_FRAME_STATS)) return;
+    if (!PN_OPTION(PN_OPTION_FRAME_STATS)) return;
     uint tested = subgroupAdd(pnPrimitivesTested);
     uint hits = subgroupAdd(pnClosestHits);
     uint blocked = subgroupAdd(pnShadowBlocked);

@@ -171,7 +171,7 @@ uint appendIndex(bool want, uint counter) {
 }
 
 // PN_WAVE_CAMERA_IN_PLACE: bounce 0 makes its camera paths in place, every slot live in order.
-bool cameraInPlace() { return PN_HAS(PN_FEATURE_CAMERA_IN_PLACE) && PN_WAVE_MAKES_CAMERA_PATHS(push.mode, push.waveBounce); }
+bool cameraInPlace() { return pnCamera == PN_CAMERA_IN_PLACE && PN_WAVE_MAKES_CAMERA_PATHS(push.mode, push.waveBounce); }
 
 // The queue a bounce reads (its live paths) and the one it fills for the next bounce.
 uint queueIn(uint i) { return waveQueues[(push.waveBounce & 1u) * push.waveStride + i]; }

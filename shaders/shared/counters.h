@@ -18,7 +18,7 @@ PN_STRUCT(RayCounters) {
     uint closestRays;
     uint shadowRays;
     uint invalidSamples;  // NaN or infinite path samples (always counted; dropped from the image)
-    // PN_FEATURE_FRAME_STATS only: primitives (triangles, spheres, sprites) tested by the walks,
+    // PN_OPTION_FRAME_STATS only: primitives (triangles, spheres, sprites) tested by the walks,
     // closest-hit rays that hit something, shadow rays that found an occluder.
     uint primitivesTested;
     uint closestHits;

@@ -23,7 +23,7 @@ namespace penumbra::shader {
 // in metres (x along the card, to the viewer's right); e2.y = the direction the thing faces, in
 // radians counter-clockwise (seen from above) from +x toward -z; e2.z = its views (1 or 8).
 #define PN_TRI_SPRITE 4u
-// Never culled by PN_FEATURE_CULL_BACKFACES: its material transmits (a path inside glass must
+// Never culled by PN_OPTION_CULL_BACKFACES: its material transmits (a path inside glass must
 // find the back faces to leave it).
 #define PN_TRI_KEEP_BACK 8u
 

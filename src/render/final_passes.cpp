@@ -52,7 +52,7 @@ void FinalFramePasses::runGBuffer() {
     if (gbufferDone_) return;
     const std::size_t n = std::size_t(width_) * height_;
     GBufferPass pass(ctx_, renderer_.gpuScene(), renderer_.frameUniforms(), viewerUniforms_, gbuffer_,
-                     kernelFeatures(renderer_.sceneArrays(), renderer_.settings().accel, renderer_.settings().cullBackfaces));
+                     renderer_.kernelSpec().withOption(PN_OPTION_FRAME_STATS, false));
     auto trace = [&](int subpixel) {
         commands_.run([&](VkCommandBuffer cmd) { pass.record(cmd, width_, height_, subpixel); });
         return gpu::downloadBuffer<shader::GBufferTexel>(ctx_, commands_, gbuffer_, n);

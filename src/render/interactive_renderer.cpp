@@ -150,7 +150,7 @@ void InteractiveRenderer::setMaterial(std::uint32_t index, const Material& mater
     });
     // A material now glass, metal or coated needs kernels made for that: the ones in use may have
     // left its code out (and the last such material turned matte lets the kernels leave it out).
-    if (sceneKernelFeatures() != features_) createPasses();
+    if (kernelSpecAfter(spec_, arrays_, kEditMaterials) != spec_) createPasses();
     historyValid_ = false;
     stillGBuffer_[0] = stillGBuffer_[1] = false;  // the albedo changed
 }
@@ -241,9 +241,8 @@ void InteractiveRenderer::resize(std::uint32_t width, std::uint32_t height) {
     previousFrame_.reset();
 }
 
-std::uint32_t InteractiveRenderer::sceneKernelFeatures() const {
-    return penumbra::kernelFeatures(arrays_, Accel::Bvh, cullBackfaces_) |
-           (frameStatistics_ ? PN_FEATURE_FRAME_STATS : 0u);
+KernelSpec InteractiveRenderer::sceneKernelSpec() const {
+    return penumbra::kernelSpec(arrays_, cullBackfaces_, frameStatistics_);
 }
 
 void InteractiveRenderer::setFrameStatistics(bool on) {
@@ -261,12 +260,12 @@ void InteractiveRenderer::setCullBackfaces(bool on) {
 
 void InteractiveRenderer::createPasses() {
     stillGBuffer_[0] = stillGBuffer_[1] = false;  // new buffers, or a new scene in them
-    features_ = sceneKernelFeatures();
-    trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, features_);
+    spec_ = sceneKernelSpec();
+    trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, spec_);
     trace_->setReplacesAccumulation(true);  // one pass per frame: no clear before it
     trace_->setPixelEstimates(&pixelEstimates_);  // the temporal pass's, for the shadow-ray roulette
     auto gbufferPass = [&](const gpu::Buffer& out) {
-        return std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, out, features_,
+        return std::make_unique<GBufferPass>(ctx_, *gpuScene_, frameUniforms_, viewerUniforms_, out, spec_,
                                              &instancesPrev_);
     };
     gbufferPassA_ = gbufferPass(gbufferA_);
@@ -512,7 +511,7 @@ void InteractiveRenderer::finishFrame() {
     stats_.primitivesTested = counts.primitivesTested;
     stats_.closestHits = counts.closestHits;
     stats_.shadowBlocked = counts.shadowBlocked;
-    stats_.frameStatistics = (features_ & PN_FEATURE_FRAME_STATS) != 0;
+    stats_.frameStatistics = spec_.hasOption(PN_OPTION_FRAME_STATS);
     stats_.raysPerSecond = traceSeconds > 0 ? double(stats_.rays) / traceSeconds : 0.0;
     if (heatFrame_) {
         const auto* heat = static_cast<const shader::HeatCounters*>(heatCounters_.mapped());

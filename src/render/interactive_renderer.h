@@ -71,7 +71,7 @@ public:
     // drops history when it changes. Off by default.
     void setCullBackfaces(bool on);
     // The trace kernels also count primitive tests, closest hits and blocked shadow rays into
-    // ViewerStats (PN_FEATURE_FRAME_STATS); remakes the kernels when it changes. Off by default.
+    // ViewerStats (PN_OPTION_FRAME_STATS); remakes the kernels when it changes. Off by default.
     void setFrameStatistics(bool on);
 
     // Sets the render resolution; a change reallocates the per-pixel buffers and drops history.
@@ -104,7 +104,7 @@ public:
     // The temporal and a-trous pipelines' (the image passes that run every frame).
     std::vector<gpu::PipelineStatistic> imageStatistics() const;
     std::map<std::string, double> traceStageMilliseconds() const { return trace_->stageMilliseconds(); }
-    std::uint32_t kernelFeatures() const { return features_; }
+    KernelSpec kernelSpec() const { return spec_; }
     const SceneArrays& sceneArrays() const { return arrays_; }
     gpu::Commands& commands() { return commands_; }
 
@@ -112,7 +112,7 @@ private:
     void loadScene(const Scene& scene, SceneArrays arrays, bool torchIsLastLight);
     void createPasses();
     // The kernel features the scene needs as it stands (the viewer always walks the binary BVH).
-    std::uint32_t sceneKernelFeatures() const;
+    KernelSpec sceneKernelSpec() const;
     // Sends moved instances, the rebuilt top level and the previous frame's instances up before
     // this frame's passes; `moved`: the instances differ from the last frame's.
     void uploadInstances(VkCommandBuffer cmd, bool moved);
@@ -174,7 +174,7 @@ private:
     std::optional<std::uint32_t> boxesDepth_;  // the depth boxes_ holds; none: refill it
     gpu::GpuTimer timer_;
     std::uint32_t width_ = 0, height_ = 0;
-    std::uint32_t features_ = PN_FEATURE_ALL;  // what the scene kernels are specialised for
+    KernelSpec spec_;  // what the scene kernels are specialised for
     bool historyValid_ = false;
     // Whether G-buffer A / B holds the current view with no motion. While the camera and the
     // scene hold still, the pixel-centre rays hit the same points every frame: once both letters

@@ -57,11 +57,11 @@ RayBenchResult runRayBench(const gpu::Context& ctx, Renderer& renderer, int repe
     gpu::Buffer results(ctx, pixels * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                         gpu::MemoryKind::DeviceLocal);
     // The timed kernel and its counting twin, over the same points and results.
-    const std::uint32_t features =
-        kernelFeatures(renderer.sceneArrays(), renderer.settings().accel, renderer.settings().cullBackfaces);
+    // The renderer's kernels without counting: the ray rate is the walk's own.
+    const KernelSpec spec = renderer.kernelSpec().withOption(PN_OPTION_FRAME_STATS, false);
     auto makeBench = [&](const char* shader) {
         auto made = makeScenePipeline(ctx, shader, renderer.gpuScene(), renderer.frameUniforms(),
-                                      {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2}, features);
+                                      {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2}, spec);
         made->bind(PN_BINDING_SCRATCH, points);
         made->bind(PN_BINDING_SCRATCH2, results);
         return made;

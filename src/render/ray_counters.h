@@ -12,7 +12,7 @@ namespace penumbra {
 
 struct RayCounts {
     std::uint64_t closestRays = 0, shadowRays = 0, invalidSamples = 0;
-    // Counted only by kernels made with PN_FEATURE_FRAME_STATS (zero otherwise).
+    // Counted only by kernels made with PN_OPTION_FRAME_STATS (zero otherwise).
     std::uint64_t primitivesTested = 0, closestHits = 0, shadowBlocked = 0;
 };
 

@@ -33,21 +33,21 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
     activeMask_ = gpu::Buffer(ctx, pixels * sizeof(std::uint32_t),
                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                               gpu::MemoryKind::DeviceLocal);
-    features_ = penumbra::kernelFeatures(arrays_, settings_.accel, settings_.cullBackfaces);
+    spec_ = penumbra::kernelSpec(arrays_, settings_.cullBackfaces);
     makeTracePass();
 }
 
 void Renderer::makeTracePass() {
-    trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, features_, &activeMask_);
+    trace_ = std::make_unique<TracePass>(ctx_, *gpuScene_, frameUniforms_, accumulation_, counters_, spec_, &activeMask_);
     trace_->setPathBudget(settings_.pathsPerDispatch);
     trace_->setSharesCameraRays(settings_.shareCameraRays);
     trace_->reserve(settings_.width, settings_.height, settings_.samplesPerPass);
 }
 
 void Renderer::setFrameStatistics(bool on) {
-    const std::uint32_t features = on ? features_ | PN_FEATURE_FRAME_STATS : features_ & ~PN_FEATURE_FRAME_STATS;
-    if (features == features_) return;
-    features_ = features;
+    const KernelSpec spec = spec_.withOption(PN_OPTION_FRAME_STATS, on);
+    if (spec == spec_) return;
+    spec_ = spec;
     makeTracePass();
 }
 

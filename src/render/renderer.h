@@ -66,13 +66,13 @@ public:
     const GpuScene& gpuScene() const { return *gpuScene_; }
     const RenderSettings& settings() const { return settings_; }
     const gpu::Buffer& frameUniforms() const { return frameUniforms_; }
-    std::uint32_t kernelFeatures() const { return features_; }
+    KernelSpec kernelSpec() const { return spec_; }  // what its kernels were specialised for
     // On: later passes also count primitive tests, closest hits and blocked shadow rays
-    // (PN_FEATURE_FRAME_STATS; remakes the trace kernels). Off by default: counting costs.
-    void setFrameStatistics(bool on);  // what its kernels were specialised for
+    // (PN_OPTION_FRAME_STATS; remakes the trace kernels). Off by default: counting costs.
+    void setFrameStatistics(bool on);
 
 private:
-    void makeTracePass();  // with features_
+    void makeTracePass();  // with spec_
 
     const gpu::Context& ctx_;
     RenderSettings settings_;
@@ -85,7 +85,7 @@ private:
     gpu::Buffer accumulation_;
     gpu::Buffer counters_;
     gpu::Buffer activeMask_;  // uint per pixel (adaptive sampling)
-    std::uint32_t features_ = 0;
+    KernelSpec spec_;
     std::unique_ptr<TracePass> trace_;
     gpu::GpuTimer timer_;
     std::uint32_t passesDone_ = 0;

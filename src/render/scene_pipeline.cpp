@@ -8,7 +8,7 @@ namespace penumbra {
 std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx, const std::string& shader,
                                                         const GpuScene& scene, const gpu::Buffer& frameUniforms,
                                                         const std::vector<std::uint32_t>& extraStorageBindings,
-                                                        std::uint32_t features) {
+                                                        KernelSpec spec, std::uint32_t camera) {
     constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     std::vector<gpu::BindingSpec> bindings = {
         {PN_BINDING_NODES, storage},     {PN_BINDING_TRI_VERTS, storage},
@@ -20,8 +20,8 @@ std::unique_ptr<gpu::ComputePipeline> makeScenePipeline(const gpu::Context& ctx,
         {PN_BINDING_INSTANCES, storage}, {PN_BINDING_STACKLESS_NODES, storage}, {PN_BINDING_OBJECT_BOXES, storage},
         {PN_BINDING_OBJECT_PRIMS, storage}};
     for (std::uint32_t b : extraStorageBindings) bindings.push_back({b, storage});
-    // Constant 0: the capability bits; constant 1: the walk (shaders/lib/scene_bindings.glsl).
-    const std::uint32_t specialization[] = {features, scene.walk};
+    // In constant_id order (shaders/shared/features.h, shaders/lib/scene_bindings.glsl).
+    const std::uint32_t specialization[] = {spec.capabilities, scene.walk, camera, spec.options};
     auto pipeline = std::make_unique<gpu::ComputePipeline>(ctx, shader, bindings, sizeof(shader::PassPush), specialization);
     pipeline->bind(PN_BINDING_NODES, scene.nodes);
     pipeline->bind(PN_BINDING_TRI_VERTS, scene.triVerts);

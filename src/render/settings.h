@@ -51,7 +51,7 @@ struct RenderSettings {
     // Camera rays jittered over their pixel (anti-aliasing); false: through its centre (render
     // --no-jitter, the viewer's toggle), which shows aliased edges as the seed ray tracers do.
     bool pixelJitter = true;
-    // Closest-hit walks skip triangles seen from behind (PN_FEATURE_CULL_BACKFACES; --cull-backfaces):
+    // Closest-hit walks skip triangles seen from behind (PN_OPTION_CULL_BACKFACES; --cull-backfaces):
     // not shadow rays, not transmissive materials (docs/RENDERING.md, "Back-face culling").
     bool cullBackfaces = false;
     // Paths per trace dispatch (render/passes/trace_tiles.h); 0: the device's default.

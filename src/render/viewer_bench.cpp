@@ -183,7 +183,7 @@ ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bo
         raysPerSample += double(st.rays) / samples;
     }
     ViewerBenchResult result;
-    result.kernelFeatures = kernelFeatureNames(renderer.kernelFeatures());
+    result.kernelFeatures = kernelSpecNames(renderer.kernelSpec());
     result.traceStatistics = renderer.traceStatistics();
     result.imageStatistics = renderer.imageStatistics();
     result.frames = o.frames;

@@ -204,7 +204,7 @@ TEST_F(GpuTest, MetallicRoughnessTextureSelectsTheLobes) {
 TEST_F(GpuTest, TheLambertianKernelGivesWhatTheWholeMixtureGives) {
     const Material m = diffuseMaterial(Vec3{0.7f, 0.45f, 0.2f});
     BsdfKernel lambertian(*ctx, m);
-    BsdfKernel mixture(*ctx, m, {}, PN_FEATURE_ALL);
+    BsdfKernel mixture(*ctx, m, {}, KernelSpec{});
     std::vector<shader::BsdfTestQuery> queries;
     for (float cosO : {1.0f, 0.7f, 0.2f, 0.01f})
         for (float cosI : {0.9f, 0.5f, 0.05f, -0.3f})

@@ -10,7 +10,7 @@
 namespace penumbra::test {
 
 BsdfKernel::BsdfKernel(const gpu::Context& ctx, const Material& material, const std::vector<Texture>& textures,
-                       std::optional<std::uint32_t> features)
+                       std::optional<KernelSpec> spec)
     : ctx_(ctx), commands_(ctx) {
     Scene scene;
     scene.name = "bsdf-test";
@@ -22,7 +22,7 @@ BsdfKernel::BsdfKernel(const gpu::Context& ctx, const Material& material, const 
     mesh.indices = {0, 1, 2};
     scene.meshes.push_back(mesh);
     const SceneArrays arrays = buildSceneArrays(scene);
-    features_ = features.value_or(kernelFeatures(arrays, Accel::Bvh));
+    spec_ = spec.value_or(kernelSpec(arrays));
     scene_ = std::make_unique<GpuScene>(ctx, commands_, arrays);
 }
 
@@ -41,7 +41,7 @@ std::vector<shader::BsdfTestResult> BsdfKernel::run(const std::vector<shader::Bs
                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                              gpu::MemoryKind::DeviceLocal);
     auto pipeline =
-        makeScenePipeline(ctx_, "test_bsdf_sample", *scene_, frameBuffer, {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2}, features_);
+        makeScenePipeline(ctx_, "test_bsdf_sample", *scene_, frameBuffer, {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2}, spec_);
     pipeline->bind(PN_BINDING_SCRATCH, queryBuffer);
     pipeline->bind(PN_BINDING_SCRATCH2, resultBuffer);
     shader::PassPush push{0, mode, count, 0};

@@ -11,6 +11,7 @@
 #include "gpu/commands.h"
 #include "gpu/context.h"
 #include "render/gpu_scene.h"
+#include "render/kernel_features.h"
 #include "scene/scene.h"
 
 namespace penumbra::test {
@@ -19,9 +20,9 @@ class BsdfKernel {
 public:
     // The material is packed exactly as a render packs it (buildSceneArrays), and the kernel is
     // specialised as a render's would be for a scene of that material (render/kernel_features.h),
-    // or for `features` where given (PN_FEATURE_ALL: every lobe's code).
+    // or for `spec` where given (KernelSpec{}: every lobe's code).
     BsdfKernel(const gpu::Context& ctx, const Material& material, const std::vector<Texture>& textures = {},
-               std::optional<std::uint32_t> features = std::nullopt);
+               std::optional<KernelSpec> spec = std::nullopt);
     ~BsdfKernel();
 
     // count samples for wo (local frame, wo.z > 0); entering: wo is outside the material.
@@ -36,7 +37,7 @@ private:
     const gpu::Context& ctx_;
     gpu::Commands commands_;
     std::unique_ptr<GpuScene> scene_;
-    std::uint32_t features_ = PN_FEATURE_ALL;
+    KernelSpec spec_;
 };
 
 // A material with one lobe family, for tests: every field not named here keeps Material{}'s value.

@@ -4,9 +4,7 @@
 #include <filesystem>
 
 #include "gpu_fixture.h"
-#include "render/kernel_features.h"
 #include "render/renderer.h"
-#include "scoped_tuning.h"
 #include "render_helpers.h"
 #include "scene/presets/presets.h"
 
@@ -83,26 +81,6 @@ TEST_F(GpuTest, CornellMeanAgreesWithHighSampleCountRender) {
     double sigma = std::sqrt(l.stderr * l.stderr + h.stderr * h.stderr);
     EXPECT_NEAR(l.mean, h.mean, 5 * sigma) << "sigma " << sigma;
     EXPECT_LT(sigma, 0.05 * h.mean) << "the test has too little power to mean anything";
-}
-
-// The box is Lambertian throughout, so its kernels leave out the glossy lobes, glass, textures
-// and the rest; they must render what the kernels that keep everything (PENUMBRA_GENERIC_KERNEL)
-// render, to within the noise (the two compilations may round a few operations differently).
-TEST_F(GpuTest, TheKernelsMadeForTheCornellBoxRenderWhatTheGenericOnesDo) {
-    Scene scene = makeCornellBox();
-    Renderer own(*ctx, scene, smallSettings(64, 7));
-    own.render();
-    EXPECT_EQ(own.kernelFeatures() & (PN_FEATURE_GLOSSY | PN_FEATURE_TRANSMISSION | PN_FEATURE_TEXTURES), 0u)
-        << kernelFeatureNames(own.kernelFeatures());
-    ScopedTuning generic;
-    generic.genericKernel(true);
-    Renderer all(*ctx, scene, smallSettings(64, 7));
-    all.render();
-    EXPECT_EQ(all.kernelFeatures(), PN_FEATURE_ALL);
-    MeanEstimate a = imageMean(own.accumulation(), 64), b = imageMean(all.accumulation(), 64);
-    double sigma = std::sqrt(a.stderr * a.stderr + b.stderr * b.stderr);
-    EXPECT_NEAR(a.mean, b.mean, 5 * sigma) << "sigma " << sigma;
-    EXPECT_LT(sigma, 0.05 * b.mean) << "the test has too little power to mean anything";
 }
 
 // Every other walk against the binary BVH, with independent seeds: the image means agree within

@@ -1,4 +1,4 @@
-// --cull-backfaces (PN_FEATURE_CULL_BACKFACES): the GPU walks (binary BVH, 8-wide BVH, brute
+// --cull-backfaces (PN_OPTION_CULL_BACKFACES): the GPU walks (binary BVH, 8-wide BVH, brute
 // force) against a CPU brute-force reference that culls by the same rule, on random soups: a
 // closest-hit ray skips a triangle whose geometric normal e1 x e2 faces away from it, unless its
 // material transmits (glass keeps its back faces); any-hit rays (shadows) cull nothing.
@@ -77,7 +77,7 @@ TEST_F(GpuTest, CulledWalksAgreeWithACpuBruteForceThatCullsTheSameFaces) {
             ASSERT_EQ((arrays.triVerts[i].flags & PN_TRI_KEEP_BACK) != 0,
                       arrays.materials[arrays.triAttribs[i].materialId].transmission > 0);
         const auto rays = randomRays(seed + 10, 3000);
-        const std::uint32_t cull = PN_FEATURE_ALL | PN_FEATURE_CULL_BACKFACES;
+        const KernelSpec cull = KernelSpec{}.withOption(PN_OPTION_CULL_BACKFACES, true);
         std::size_t culledAway = 0, glassBacks = 0, hits = 0;
         for (Accel accel : {Accel::Bvh, Accel::Wide, Accel::Brute}) {
             const GpuHits gpu = traceOnGpu(*ctx, arrays, rays, accel, cull);

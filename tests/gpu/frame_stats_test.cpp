@@ -1,4 +1,4 @@
-// Frame statistics (PN_FEATURE_FRAME_STATS: primitives tested, closest hits, shadow rays blocked),
+// Frame statistics (PN_OPTION_FRAME_STATS: primitives tested, closest hits, shadow rays blocked),
 // as the viewer's panel and `bench --json` report them. Brute force tests every primitive for a
 // closest hit and at most every one for a shadow ray, which bounds the count exactly; the
 // megakernel and the wavefront draw the same random numbers, so they count the same; a closed box

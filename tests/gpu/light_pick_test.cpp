@@ -71,14 +71,14 @@ std::vector<shader::RayDesc> queryPoints() {
 // Picks at the query points, from the light grid's tables (render/light_grid.h) or (withGrid
 // false) by the walk's own importance levels. With oneTopLight the sky is black, so the sun is
 // the only top-level light, and the kernel is specialised for the scene as the renderers do it
-// (PN_FEATURE_ONE_TOP_LIGHT among its features).
+// (PN_OPTION_ONE_TOP_LIGHT among its promises).
 void expectPicksFollowTheProbabilitiesMisUses(const gpu::Context& ctx, bool withGrid, bool oneTopLight = false) {
     SCOPED_TRACE(std::string(withGrid ? "light grid" : "tree walk") + (oneTopLight ? ", one top-level light" : ""));
     Scene scene = manyLightsScene(300, 0.6f, 5);
     if (oneTopLight) scene.background = Vec3{0.0f};
     const SceneArrays arrays = buildSceneArrays(scene);
-    const std::uint32_t features = oneTopLight ? kernelFeatures(arrays, Accel::Bvh) : PN_FEATURE_ALL;
-    ASSERT_TRUE(!oneTopLight || (features & PN_FEATURE_ONE_TOP_LIGHT));
+    const KernelSpec spec = oneTopLight ? kernelSpec(arrays) : KernelSpec{};
+    ASSERT_TRUE(!oneTopLight || spec.hasOption(PN_OPTION_ONE_TOP_LIGHT));
     ASSERT_FALSE(arrays.lightGrid.empty());  // 600 emitters: deeper than the importance levels
     const auto noGrid = [withGrid](shader::FrameUniforms& f) {
         if (!withGrid) f.lightGridOffset = 0;
@@ -91,12 +91,12 @@ void expectPicksFollowTheProbabilitiesMisUses(const gpu::Context& ctx, bool with
     const auto pmfs = runSceneKernel<Vec4, shader::RayDesc>(ctx, scene, arrays, "test_light_pick", points,
                                                             points.size() * refs,
                                                             {0, 1, std::uint32_t(points.size() * refs), 0}, {}, noGrid,
-                                                            features);
+                                                            spec);
     const std::uint32_t perPoint = 200000;
     const auto picks = runSceneKernel<Vec4, shader::RayDesc>(ctx, scene, arrays, "test_light_pick", points,
                                                              points.size() * perPoint,
                                                              {perPoint, 0, std::uint32_t(points.size() * perPoint), 0}, {}, noGrid,
-                                                             features);
+                                                             spec);
     for (std::size_t p = 0; p < points.size(); ++p) {
         double sum = 0;
         int reachable = 0;

@@ -18,9 +18,9 @@ struct GpuHits {
     std::vector<bool> occluded;
 };
 
-// features: the kernel's specialisation (PN_FEATURE_CULL_BACKFACES added to cull back faces).
+// spec: the kernel's specialisation (PN_OPTION_CULL_BACKFACES among its options to cull back faces).
 inline GpuHits traceOnGpu(const gpu::Context& ctx, const SceneArrays& arrays, const std::vector<shader::RayDesc>& rays,
-                          Accel accel, std::uint32_t features = PN_FEATURE_ALL) {
+                          Accel accel, KernelSpec spec = {}) {
     gpu::Commands commands(ctx);
     // Arrays built for --accel wide keep the binary nodes on the host; the other walks need them
     // uploaded (before the wide ones, which the wide walk then finds after them).
@@ -51,7 +51,7 @@ inline GpuHits traceOnGpu(const gpu::Context& ctx, const SceneArrays& arrays, co
     gpu::Buffer hitBuffer(ctx, rays.size() * 2 * sizeof(shader::HitRecord),
                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryKind::DeviceLocal);
     auto pipeline = makeScenePipeline(ctx, "test_ray_query", scene, frameBuffer, {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2},
-                                      features);
+                                      spec);
     pipeline->bind(PN_BINDING_SCRATCH, rayBuffer);
     pipeline->bind(PN_BINDING_SCRATCH2, hitBuffer);
     shader::PassPush push{0, 0, static_cast<std::uint32_t>(rays.size()), 0};

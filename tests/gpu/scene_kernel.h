@@ -20,7 +20,7 @@ std::vector<Out> runSceneKernel(const gpu::Context& ctx, const Scene& scene, con
                                 const std::string& kernel, std::span<const In> input, std::size_t outCount,
                                 shader::PassPush push, const RenderSettings& settings = {},
                                 const std::function<void(shader::FrameUniforms&)>& editFrame = {},
-                                std::uint32_t features = PN_FEATURE_ALL) {
+                                KernelSpec spec = {}) {
     gpu::Commands commands(ctx);
     GpuScene gpuScene(ctx, commands, arrays);
     shader::FrameUniforms frame =
@@ -32,7 +32,7 @@ std::vector<Out> runSceneKernel(const gpu::Context& ctx, const Scene& scene, con
     gpu::Buffer out(ctx, outCount * sizeof(Out), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                     gpu::MemoryKind::DeviceLocal);
     auto pipeline =
-        makeScenePipeline(ctx, kernel, gpuScene, frameBuffer, {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2}, features);
+        makeScenePipeline(ctx, kernel, gpuScene, frameBuffer, {PN_BINDING_SCRATCH, PN_BINDING_SCRATCH2}, spec);
     pipeline->bind(PN_BINDING_SCRATCH, in);
     pipeline->bind(PN_BINDING_SCRATCH2, out);
     commands.run([&](VkCommandBuffer cmd) {

@@ -50,8 +50,8 @@ Scene manyLightsScene() {
 // Only scenes of many lights get the roulette's code: with a few, a light sample rarely carries
 // so little that the test pays for itself.
 TEST(ShadowRouletteFeature, OnlyScenesOfManyLightsCarryIt) {
-    EXPECT_NE(kernelFeatures(buildSceneArrays(manyLightsScene()), Accel::Bvh) & PN_FEATURE_SHADOW_ROULETTE, 0u);
-    EXPECT_EQ(kernelFeatures(buildSceneArrays(makeCornellBox()), Accel::Bvh) & PN_FEATURE_SHADOW_ROULETTE, 0u);
+    EXPECT_TRUE(kernelSpec(buildSceneArrays(manyLightsScene())).has(PN_FEATURE_SHADOW_ROULETTE));
+    EXPECT_FALSE(kernelSpec(buildSceneArrays(makeCornellBox())).has(PN_FEATURE_SHADOW_ROULETTE));
 }
 
 struct Estimate {

@@ -161,7 +161,7 @@ TEST_F(ViewerEditTest, ACoatOnALambertianSceneBringsKernelsThatHaveIt) {
     Scene scene = wallAndSphere();
     InteractiveRenderer viewer(*ctx, scene, false);
     viewer.resize(kW, kH);
-    EXPECT_EQ(viewer.kernelFeatures() & PN_FEATURE_GLOSSY, 0u);
+    EXPECT_FALSE(viewer.kernelSpec().has(PN_FEATURE_GLOSSY));
     ViewSettings vs;
     vs.maxBounces = 3;
     Material coated = scene.materials[0];
@@ -169,7 +169,7 @@ TEST_F(ViewerEditTest, ACoatOnALambertianSceneBringsKernelsThatHaveIt) {
     coated.specular = 1;
     coated.roughness = 0;
     viewer.setMaterial(0, coated);
-    EXPECT_NE(viewer.kernelFeatures() & PN_FEATURE_GLOSSY, 0u);
+    EXPECT_TRUE(viewer.kernelSpec().has(PN_FEATURE_GLOSSY));
     std::vector<shader::GBufferTexel> g;
     for (int k = 0; k < 2; ++k) g = renderGBuffer(*ctx, viewer, scene.camera, vs);
     auto h = gpu::downloadBuffer<shader::HistoryTexel>(*ctx, viewer.commands(), viewer.history(), kW * kH);

@@ -115,7 +115,7 @@ TEST_F(TemporalTest, ReprojectionFollowsAKnownCameraTranslation) {
     frameUniforms.nodeCount = gpuScene.nodeCount;
     frameUniforms.triCount = gpuScene.triCount;
     std::memcpy(frame.mapped(), &frameUniforms, sizeof(frameUniforms));
-    GBufferPass gbufferPass(*ctx, gpuScene, frame, viewer, gbuffer, PN_FEATURE_ALL);
+    GBufferPass gbufferPass(*ctx, gpuScene, frame, viewer, gbuffer, KernelSpec{});
 
     // Frame 0: a distinct value per pixel, no history.
     const shader::FrameUniforms first = frameUniforms;

@@ -7,10 +7,10 @@
 namespace penumbra {
 
 GBufferPass::GBufferPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                         const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer, std::uint32_t features,
+                         const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer, KernelSpec spec,
                          const gpu::Buffer* previousInstances)
     : pipeline_(makeScenePipeline(ctx, "gbuffer", scene, frameUniforms,
-                                  {PN_BINDING_VIEWER, PN_BINDING_GBUFFER, PN_BINDING_INSTANCES_PREV}, features)) {
+                                  {PN_BINDING_VIEWER, PN_BINDING_GBUFFER, PN_BINDING_INSTANCES_PREV}, spec)) {
     pipeline_->bind(PN_BINDING_VIEWER, viewerUniforms);
     pipeline_->bind(PN_BINDING_GBUFFER, gbuffer);
     pipeline_->bind(PN_BINDING_INSTANCES_PREV, previousInstances ? *previousInstances : scene.instances);

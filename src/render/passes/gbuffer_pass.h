@@ -6,6 +6,7 @@
 
 #include "gpu/pipeline.h"
 #include "render/gpu_scene.h"
+#include "render/kernel_features.h"
 
 namespace penumbra {
 
@@ -14,7 +15,7 @@ public:
     // previousInstances: the scene's Instance entries as the previous frame placed them, for the
     // motion of moving objects; null: the current ones (nothing moves).
     GBufferPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer, std::uint32_t features,
+                const gpu::Buffer& viewerUniforms, const gpu::Buffer& gbuffer, KernelSpec spec,
                 const gpu::Buffer* previousInstances = nullptr);
     // subpixel < 0: the pixel centre; 0..15: that cell of a 4x4 grid in the pixel (row-major).
     void record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, int subpixel = -1) const;

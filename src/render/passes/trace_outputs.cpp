@@ -8,11 +8,11 @@ std::unique_ptr<gpu::ComputePipeline> makeTracePipeline(const gpu::Context& ctx,
                                                         const GpuScene& scene, const gpu::Buffer& frameUniforms,
                                                         const TraceOutputs& outputs,
                                                         const std::vector<std::uint32_t>& moreBindings,
-                                                        std::uint32_t features) {
+                                                        KernelSpec spec, std::uint32_t camera) {
     std::vector<std::uint32_t> bindings = {PN_BINDING_ACCUM, PN_BINDING_COUNTERS, PN_BINDING_ACTIVE_MASK,
                                            PN_BINDING_PIXEL_ESTIMATES};
     bindings.insert(bindings.end(), moreBindings.begin(), moreBindings.end());
-    auto pipeline = makeScenePipeline(ctx, shader, scene, frameUniforms, bindings, features);
+    auto pipeline = makeScenePipeline(ctx, shader, scene, frameUniforms, bindings, spec, camera);
     pipeline->bind(PN_BINDING_ACCUM, *outputs.accumulation);
     pipeline->bind(PN_BINDING_COUNTERS, *outputs.counters);
     pipeline->bind(PN_BINDING_ACTIVE_MASK, *outputs.activeMask);

@@ -10,6 +10,7 @@
 #include "gpu/buffer.h"
 #include "gpu/pipeline.h"
 #include "render/gpu_scene.h"
+#include "render/kernel_features.h"
 
 namespace penumbra {
 
@@ -26,6 +27,7 @@ std::unique_ptr<gpu::ComputePipeline> makeTracePipeline(const gpu::Context& ctx,
                                                         const GpuScene& scene, const gpu::Buffer& frameUniforms,
                                                         const TraceOutputs& outputs,
                                                         const std::vector<std::uint32_t>& moreBindings,
-                                                        std::uint32_t features);
+                                                        KernelSpec spec,
+                                                        std::uint32_t camera = PN_CAMERA_FROM_QUEUE);
 
 }  // namespace penumbra

@@ -11,7 +11,7 @@
 namespace penumbra {
 
 TracePass::TracePass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                     const gpu::Buffer& accumulation, const gpu::Buffer& counters, std::uint32_t features,
+                     const gpu::Buffer& accumulation, const gpu::Buffer& counters, KernelSpec spec,
                      const gpu::Buffer* activeMask, TraceKernel kernel)
     : ctx_(ctx),
       scene_(scene),
@@ -19,7 +19,7 @@ TracePass::TracePass(const gpu::Context& ctx, const GpuScene& scene, const gpu::
       accumulation_(accumulation),
       counters_(counters),
       activeMask_(activeMask),
-      features_(features),
+      spec_(spec),
       kernel_(kernel),
       hasMask_(activeMask != nullptr),
       maxBudget_(WavefrontPass::maxSlots(ctx)) {
@@ -43,12 +43,12 @@ TraceOutputs TracePass::outputs() const {
 }
 
 const gpu::ComputePipeline& TracePass::megakernel() {
-    if (!pipeline_) pipeline_ = makeTracePipeline(ctx_, "trace", scene_, frameUniforms_, outputs(), {}, features_);
+    if (!pipeline_) pipeline_ = makeTracePipeline(ctx_, "trace", scene_, frameUniforms_, outputs(), {}, spec_);
     return *pipeline_;
 }
 
 WavefrontPass& TracePass::wavefront() {
-    if (!wave_) wave_ = std::make_unique<WavefrontPass>(ctx_, scene_, frameUniforms_, outputs(), features_);
+    if (!wave_) wave_ = std::make_unique<WavefrontPass>(ctx_, scene_, frameUniforms_, outputs(), spec_);
     return *wave_;
 }
 

@@ -21,11 +21,11 @@ constexpr std::uint64_t kWavefrontMinPaths = std::uint64_t(1) << 18;
 
 class TracePass {
 public:
-    // features: what the kernel is specialised for (render/kernel_features.h). activeMask: one
+    // spec: what the kernels are specialised for (render/kernel_features.h). activeMask: one
     // uint per pixel that record(..., masked = true) obeys (adaptive sampling); without one the
     // pass binds a placeholder of its own and never reads it.
     TracePass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-              const gpu::Buffer& accumulation, const gpu::Buffer& counters, std::uint32_t features,
+              const gpu::Buffer& accumulation, const gpu::Buffer& counters, KernelSpec spec,
               const gpu::Buffer* activeMask = nullptr, TraceKernel kernel = renderTuning().traceKernel);
 
     // The design a pass of width x height x samplesPerPass paths runs with (never Auto).
@@ -77,7 +77,7 @@ private:
     const gpu::Buffer &frameUniforms_, &accumulation_, &counters_;
     const gpu::Buffer* activeMask_;
     const gpu::Buffer* pixelEstimates_ = nullptr;
-    std::uint32_t features_;
+    KernelSpec spec_;
     TraceKernel kernel_;
     gpu::Buffer placeholderMask_;
     bool hasMask_;

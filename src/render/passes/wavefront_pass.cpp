@@ -28,17 +28,17 @@ constexpr const char* kStageNames[kStageCount] = {"start", "extend", "shade", "s
 }  // namespace
 
 WavefrontPass::WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                             const TraceOutputs& outputs, std::uint32_t features)
+                             const TraceOutputs& outputs, KernelSpec spec)
     : ctx_(ctx) {
     const std::vector<std::uint32_t> extra(std::begin(kWorkingBindings), std::end(kWorkingBindings));
-    auto make = [&](const char* shader, std::uint32_t variant = 0) {
-        return makeTracePipeline(ctx, shader, scene, frameUniforms, outputs, extra, features | variant);
+    auto make = [&](const char* shader, std::uint32_t camera = PN_CAMERA_FROM_QUEUE) {
+        return makeTracePipeline(ctx, shader, scene, frameUniforms, outputs, extra, spec, camera);
     };
     start_ = make("wave_start");
     extend_ = make("wave_extend");
     shade_ = make("wave_shade");
-    extendCamera_ = make("wave_extend", PN_FEATURE_CAMERA_IN_PLACE);
-    shadeCamera_ = make("wave_shade", PN_FEATURE_CAMERA_IN_PLACE);
+    extendCamera_ = make("wave_extend", PN_CAMERA_IN_PLACE);
+    shadeCamera_ = make("wave_shade", PN_CAMERA_IN_PLACE);
     shadow_ = make("wave_shadow");
     tail_ = make("wave_tail");
     finish_ = make("wave_finish");

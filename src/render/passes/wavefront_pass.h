@@ -18,6 +18,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/timer.h"
 #include "render/gpu_scene.h"
+#include "render/kernel_features.h"
 #include "render/passes/trace_outputs.h"
 #include "render/passes/trace_tiles.h"
 
@@ -26,7 +27,7 @@ namespace penumbra {
 class WavefrontPass {
 public:
     WavefrontPass(const gpu::Context& ctx, const GpuScene& scene, const gpu::Buffer& frameUniforms,
-                  const TraceOutputs& outputs, std::uint32_t features);
+                  const TraceOutputs& outputs, KernelSpec spec);
 
     // The most path slots this device can give the working buffers: the path array within the
     // largest storage buffer a shader may bind, and all of them within a quarter of the memory.
@@ -71,7 +72,7 @@ private:
     std::uint32_t tailPaths_ = 0;  // PassPush.waveTailPaths
     gpu::Buffer paths_, hits_, shadows_, queues_, control_;
     std::unique_ptr<gpu::ComputePipeline> start_, args_, extend_, shade_, shadow_, tail_, finish_;
-    // Bounce 0's extend and shade when they make the camera paths (PN_FEATURE_CAMERA_IN_PLACE).
+    // Bounce 0's extend and shade when they make the camera paths (PN_CAMERA_IN_PLACE).
     std::unique_ptr<gpu::ComputePipeline> extendCamera_, shadeCamera_;
     struct StageTimes {
         explicit StageTimes(const gpu::Context& ctx) : timer(ctx, kSections) {}
