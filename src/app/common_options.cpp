@@ -129,6 +129,12 @@ std::unique_ptr<gpu::Context> openDevice(const std::string& selector) {
     return std::move(result.context);
 }
 
+void addPhantomOption(CLI::App& cmd, bool& phantom) {
+    cmd.add_flag_callback("--no-phantom", [&phantom] { phantom = false; },
+                          "the dungeon's phantom switched off: not drawn, not moving (H toggles it in the viewer, "
+                          "the browser and a walk's events)");
+}
+
 void addViewSettingOptions(CLI::App& cmd, ViewSettings& view) {
     cmd.add_option("--resolution-scale", view.resolutionScale,
                    "render at this multiple of the window, 0.25 to 2 (above 1 supersamples; default 1)");

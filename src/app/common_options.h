@@ -43,6 +43,9 @@ void addCameraOptions(CLI::App& cmd, CameraOverrides& overrides);
 void addEnvironmentOptions(CLI::App& cmd, EnvironmentSpec& env);
 // --wad-glow SCALE, --wad-sector-light SCALE, --wad-filter nearest|bilinear (Doom levels).
 void addWadOptions(CLI::App& cmd, WadOptions& wad);
+// --no-phantom (view, serve, render): the dungeon's phantom starts switched off, as H leaves it
+// (scene/phantom.h). On by default everywhere, so a render shows what the viewer shows.
+void addPhantomOption(CLI::App& cmd, bool& phantom);
 // The view settings both the window and the browser start from (view, serve): --resolution-scale
 // and the other settings the WebGPU renderer offers; checked with checkViewSettingRanges.
 void addViewSettingOptions(CLI::App& cmd, ViewSettings& view);

@@ -20,6 +20,7 @@
 #include "image/write.h"
 #include "interact/input_script.h"
 #include "scene/animation.h"
+#include "scene/phantom.h"
 
 namespace penumbra::app {
 namespace {
@@ -145,6 +146,7 @@ std::optional<VideoJob> videoJob(const RenderArgs& args, const CLI::App& cmd, co
     job.fps = args.fps;
     job.offsetSeconds = args.time;
     job.viewerQuality = args.viewerQuality;
+    job.phantom = args.phantom;
     if (args.viewerQuality) {
         job.samplesPerFrame = cmd.count("--spp") ? args.settings.samplesPerPixel : 1;
         if (job.samplesPerFrame < 1 || job.samplesPerFrame > 64)
@@ -175,6 +177,9 @@ RenderPlan prepareRender(const RenderArgs& args, const CLI::App& cmd, const std:
     const std::filesystem::path& output = plan.output;
     // Fail before rendering, not after: a bad name or folder would waste the whole render.
     plan.video = videoJob(args, cmd, output);
+    // --no-phantom: a walk's replay switches the phantom as the viewer does (H in the walk too);
+    // every other render has it parked here, before its moments are placed.
+    if (!args.phantom && !(plan.video && plan.video->walk)) PhantomSwitch(plan.scene).set(plan.scene, false, args.time);
     const bool video = isVideoPath(output);
     if (!video) formatFromPath(output);
     std::error_code ec;

@@ -96,6 +96,7 @@ void addRenderOptions(CLI::App& cmd, RenderArgs& a) {
                  "render across the ranks of an MPI job (implied when started by mpirun; docs/DISTRIBUTED.md)");
     addDeviceOption(cmd, a.device);
     addWadOptions(cmd, a.wad);
+    addPhantomOption(cmd, a.phantom);
     addBvhCacheOption(cmd);
     addCameraOptions(cmd, a.camera);
     addEnvironmentOptions(cmd, a.env);

@@ -46,6 +46,7 @@ struct RenderArgs {
     bool mpi = false;                // --mpi: join an MPI job even when not started by mpirun
     std::string walk;                // --walk FILE: replay a walk (the viewer's --script format)
     bool viewerQuality = false;      // --viewer-quality: walks and videos at the viewer's settings
+    bool phantom = true;             // --no-phantom: the dungeon's phantom switched off, as in view
 };
 
 // Which AOV layers to write.

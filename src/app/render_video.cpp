@@ -45,7 +45,8 @@ public:
 
 class WalkSource final : public FrameSource {
 public:
-    WalkSource(const Scene& scene, const VideoJob& video) : replay_(scene, *video.walk, 1.0 / video.fps) {}
+    WalkSource(const Scene& scene, const VideoJob& video)
+        : replay_(scene, *video.walk, 1.0 / video.fps, video.phantom) {}
     WorldChange next(Scene& scene) override { return replay_.nextFrame(scene); }
     Camera camera(const Scene&) const override { return replay_.camera(); }
     double seconds() const override { return replay_.clock(); }
@@ -88,6 +89,8 @@ public:
             renderer_ = std::make_unique<Renderer>(ctx_, scene, job_.settings);
         else  // a flickering sector changes its light nearly every tic: no new renderer for that
             for (std::uint32_t m : change.lightsChanged) renderer_->setUnsampledEmission(m, scene.materials[m].emission);
+        // A switch turned or a key was taken: sent up in place (a new renderer has them already).
+        for (std::uint32_t m : change.materialsChanged) renderer_->setMaterial(m, scene.materials[m]);
         renderer_->restart(camera, textureTime(seconds));
         ProgressiveRender render(*renderer_, job_.adaptive);
         RenderBudget budget;
@@ -121,6 +124,7 @@ public:
         if (change.geometryChanged) renderer_.rebuildScene(scene, true);
         else if (change.instancesMoved) renderer_.setInstanceTransforms(scene);
         for (std::uint32_t m : change.lightsChanged) renderer_.setUnsampledEmission(m, scene.materials[m].emission);
+        for (std::uint32_t m : change.materialsChanged) renderer_.setMaterial(m, scene.materials[m]);
         settings_.time = textureTime(seconds);
         renderer_.commands().run([&](VkCommandBuffer cmd) { renderer_.record(cmd, camera, settings_); });
         renderer_.finishFrame();

@@ -26,6 +26,7 @@ struct VideoJob {
     // instead of a final render of job.settings.samplesPerPixel per frame.
     bool viewerQuality = false;
     std::uint32_t samplesPerFrame = 1;
+    bool phantom = true;  // a walk starts with the dungeon's phantom on (H in the walk toggles it)
 };
 
 // The number of frames the job renders.

@@ -86,8 +86,7 @@ void registerServe(CLI::App& app, Action& action) {
     cmd->add_flag("--denoise", a->denoise, "start with the a-trous denoiser on");
     cmd->add_option("--debug", a->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles, boxes, leaf-depth, leaf-triangles");
     cmd->add_flag("--fly", o.fly, "start in free flight on Doom levels (F toggles walking)");
-    cmd->add_flag_callback("--no-phantom", [a] { a->options.phantom = false; },
-                           "start with the dungeon's phantom switched off: not drawn, not moving (H or the page toggles it)");
+    addPhantomOption(*cmd, a->options.phantom);
     addViewSettingOptions(*cmd, o.view);
     cmd->add_option("--quality", o.encode.restQuality, "JPEG quality while nothing moves (default 85)");
     cmd->add_option("--motion-quality", o.encode.motionQuality, "JPEG quality while the camera moves (default 50)");

@@ -72,8 +72,7 @@ void registerView(CLI::App& app, Action& action) {
     cmd->add_flag("--print-camera", args->options.printCamera,
                   "on exit, print 'camera X,Y,Z direction DX,DY,DZ' (scene units)");
     cmd->add_flag("--fly", args->options.fly, "start in free flight on Doom levels (F toggles walking)");
-    cmd->add_flag_callback("--no-phantom", [args] { args->options.phantom = false; },
-                           "start with the dungeon's phantom switched off: not drawn, not moving (H toggles it)");
+    addPhantomOption(*cmd, args->options.phantom);
     cmd->add_flag("--denoise", args->options.denoise, "start with the a-trous denoiser on");
     addViewSettingOptions(*cmd, args->options.view);
     cmd->add_flag("--preview", args->options.preview,

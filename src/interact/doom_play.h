@@ -11,6 +11,7 @@
 
 #include "interact/camera_controller.h"
 #include "scene/doom/level.h"
+#include "scene/doom/level_looks.h"
 #include "scene/scene.h"
 
 namespace penumbra::viewer {
@@ -29,6 +30,9 @@ public:
     // Sets the fill light of sectors whose light changed (light specials) in their materials;
     // returns the materials changed (for InteractiveRenderer::setUnsampledEmission).
     std::vector<std::uint32_t> applyLights(Scene& scene);
+    // Turns the switches' textures and hides the keys picked up (scene/doom/level_looks.h) in their
+    // materials; returns the materials changed (for InteractiveRenderer::setMaterial).
+    std::vector<std::uint32_t> applyLooks(Scene& scene) const { return doom::applyLooks(level_, scene.materials); }
 
     const doom::Level& level() const { return level_; }
     // Once the level has ended: "E1M1 complete in 42.3 s" (level time: tics / 35).

@@ -47,6 +47,8 @@ public:
     bool moveSectors(Scene& scene) const { return doom_ && doom_->moveSectors(scene); }
     // A Doom level's sector lights as they are now, in their materials; the materials changed.
     std::vector<std::uint32_t> applyLights(Scene& scene) { return doom_ ? doom_->applyLights(scene) : std::vector<std::uint32_t>{}; }
+    // A Doom level's switches and keys as they are now, in their materials; the materials changed.
+    std::vector<std::uint32_t> applyLooks(Scene& scene) { return doom_ ? doom_->applyLooks(scene) : std::vector<std::uint32_t>{}; }
     // The dungeon's phantom (scene/phantom.h): whether the scene has one, and switching it off and
     // on at the clock's `seconds`; true when its instance changed (the renderer takes the new
     // transforms, and the temporal pass drops the history it uncovers or covers).

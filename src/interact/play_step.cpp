@@ -10,6 +10,7 @@ WorldChange playStep(Scene& scene, Navigation& nav, const InputState& input, dou
     WorldChange change;
     change.instancesMoved = nav.moveSectors(scene);  // doors and lifts
     change.lightsChanged = nav.applyLights(scene);
+    change.materialsChanged = nav.applyLooks(scene);  // switches that turned, keys picked up
     change.levelCompleted = nav.takeLevelCompletion();
     // Animated instances (glTF animations, scene-file motions) follow the clock.
     if (animatesGeometry(scene)) {

@@ -21,6 +21,9 @@ struct WorldChange {
     bool geometryChanged = false;  // meshes changed: a bottom level must be rebuilt or refitted
     // Materials whose emission changed (a Doom sector's light): InteractiveRenderer::setUnsampledEmission.
     std::vector<std::uint32_t> lightsChanged;
+    // Materials whose textures changed (a Doom switch turned, a key was picked up): the front end
+    // sends them up in place (InteractiveRenderer::setMaterial, Renderer::setMaterial).
+    std::vector<std::uint32_t> materialsChanged;
     // The frame the level ended: "E1M1 complete in 42.3 s", for the front end to print and show.
     std::optional<std::string> levelCompleted;
 };

@@ -18,16 +18,20 @@ std::uint64_t walkFrameCount(const std::vector<ScriptEvent>& events, double fram
     return frame + 1;
 }
 
-WalkReplay::WalkReplay(const Scene& scene, std::vector<ScriptEvent> events, double frameSeconds)
+WalkReplay::WalkReplay(const Scene& scene, std::vector<ScriptEvent> events, double frameSeconds, bool phantom)
     : frameSeconds_(frameSeconds),
       frames_(walkFrameCount(events, frameSeconds)),
       nav_(scene, false),
-      player_(std::move(events)) {}
+      player_(std::move(events)),
+      phantom_(phantom) {}
 
 WorldChange WalkReplay::nextFrame(Scene& scene) {
     player_.playFrame(input_, frameSeconds_);
     (void)nav_.handlePresses(input_, scene);
-    const WorldChange change = playStep(scene, nav_, input_, clock_, float(frameSeconds_));
+    WorldChange change = playStep(scene, nav_, input_, clock_, float(frameSeconds_));
+    // The phantom's switch as the viewer has it (viewer_app.cpp): after the step, at its clock.
+    if (input_.phantomToggled && nav_.hasPhantom()) phantom_ = !phantom_;
+    if (nav_.showPhantom(scene, phantom_, clock_)) change.instancesMoved = true;
     endInputFrame(input_);
     return change;
 }

@@ -23,7 +23,8 @@ std::uint64_t walkFrameCount(const std::vector<ScriptEvent>& events, double fram
 class WalkReplay {
 public:
     // The scene's own movement mode (Doom levels walk, tile maps step on the grid, others fly).
-    WalkReplay(const Scene& scene, std::vector<ScriptEvent> events, double frameSeconds);
+    // phantom: the dungeon's phantom starts on (H in the events toggles it, as in the viewer).
+    WalkReplay(const Scene& scene, std::vector<ScriptEvent> events, double frameSeconds, bool phantom = true);
 
     std::uint64_t frameCount() const { return frames_; }
     // Plays the next frame: the events due, the presses (F, G, R, ...), the move, the world.
@@ -39,6 +40,7 @@ private:
     ScriptPlayer player_;
     InputState input_;
     double clock_ = 0;
+    bool phantom_ = true;
 };
 
 }  // namespace penumbra::viewer

@@ -64,6 +64,18 @@ void Renderer::setUnsampledEmission(std::uint32_t material, Vec3 emission) {
     });
 }
 
+void Renderer::setMaterial(std::uint32_t index, const Material& material) {
+    PN_CHECK(index < arrays_.materials.size());
+    const shader::Material gm = toGpuMaterial(material);
+    const shader::Material& old = arrays_.materials[index];
+    PN_CHECK(gm.emission.x == old.emission.x && gm.emission.y == old.emission.y && gm.emission.z == old.emission.z);
+    PN_CHECK(gm.flags == old.flags);  // the same kernel features
+    arrays_.materials[index] = gm;
+    commands_.run([&](VkCommandBuffer cmd) {
+        vkCmdUpdateBuffer(cmd, gpuScene_->materials.get(), VkDeviceSize(index) * sizeof(gm), sizeof(gm), &gm);
+    });
+}
+
 double Renderer::renderPasses(std::uint32_t passes, bool countRays, bool masked) {
     timer_.reset();
     commands_.run([&](VkCommandBuffer cmd) {

@@ -47,6 +47,7 @@ struct LoopState {
     bool instancesMoved = false;
     bool geometryChanged = false;  // a mesh moved (WorldChange): the renderer rebuilds the scene
     std::vector<std::uint32_t> lightsChanged;  // materials whose emission a Doom light special changed
+    std::vector<std::uint32_t> materialsChanged;  // a Doom switch's or key's material (textures, cutoff)
     std::optional<Camera> shownCamera;
     std::optional<ViewSettings> shownSettings;
 };
@@ -127,6 +128,8 @@ void applyInput(LoopState& s, Scene& scene, float step) {
     if (s.remote.playing) {
         const viewer::WorldChange change = viewer::playStep(scene, s.nav, in, s.animationClock, step);
         s.lightsChanged.insert(s.lightsChanged.end(), change.lightsChanged.begin(), change.lightsChanged.end());
+        s.materialsChanged.insert(s.materialsChanged.end(), change.materialsChanged.begin(),
+                                  change.materialsChanged.end());
         if (change.levelCompleted) {
             std::printf("%s\n", change.levelCompleted->c_str());
             std::fflush(stdout);
@@ -234,6 +237,8 @@ void ServeLoop::run(FrameReadback& readback, FrameEncoder& encoder, const std::f
         applyInput(s, scene, step);
         for (std::uint32_t m : s.lightsChanged) renderer.setUnsampledEmission(m, scene.materials[m].emission);
         s.lightsChanged.clear();
+        for (std::uint32_t m : s.materialsChanged) renderer.setMaterial(m, scene.materials[m]);
+        s.materialsChanged.clear();
         const Camera camera = s.nav.camera();
         const bool changed = s.shownCamera != camera || s.shownSettings != s.remote.view || s.instancesMoved;
         if (s.remote.playing || s.mustRender || changed) {

@@ -43,6 +43,35 @@ TEST_F(CliTest, ExrOutputHoldsLinearRadiance) {
     EXPECT_EQ(filesIn(dir).size(), 1u);
 }
 
+// render draws the dungeon's phantom as the viewer does with it on (by default), and
+// --no-phantom leaves it out: pixel by pixel, the two images differ in the middle of the
+// preset's view, where the phantom stands in the corridor, far more than at its left edge.
+TEST_F(CliTest, RenderShowsThePhantomUnlessNoPhantom) {
+    auto image = [&](const std::string& flags) {
+        RunResult r = run("render dungeon -o p.exr --width 32 --height 24 --spp 4 --quiet " + flags);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return readExr(dir / "p.exr");
+    };
+    const ImageRgb shown = image(""), hidden = image("--no-phantom");
+    ASSERT_EQ(shown.pixels.size(), hidden.pixels.size());
+    // Mean |difference| over mean brightness, in rows 40-80 % and columns x0..x1 tenths.
+    auto change = [&](int x0, int x1) {
+        double diff = 0, level = 0;
+        for (int y = shown.height * 2 / 5; y < shown.height * 4 / 5; ++y)
+            for (int x = shown.width * x0 / 10; x < shown.width * x1 / 10; ++x) {
+                const std::size_t i = std::size_t(y * shown.width + x);
+                diff += std::abs(luminance(shown.pixels[i]) - luminance(hidden.pixels[i]));
+                level += 0.5 * (luminance(shown.pixels[i]) + luminance(hidden.pixels[i]));
+            }
+        return diff / level;
+    };
+    const double middle = change(4, 6), edge = change(0, 2);
+    RecordProperty("middle_change", std::to_string(middle));
+    RecordProperty("edge_change", std::to_string(edge));
+    EXPECT_GT(middle, 3 * edge) << "middle " << middle << ", edge " << edge;
+    EXPECT_GT(middle, 0.3);
+}
+
 // A red torch adds red light only; a range shorter than any wall's distance adds nothing.
 TEST_F(CliTest, TorchColourAndRangeShapeTheCameraLight) {
     auto meanOf = [&](const std::string& flags) {

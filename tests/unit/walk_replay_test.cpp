@@ -5,7 +5,10 @@
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "core/error.h"
+#include "scene/phantom.h"
 #include "scene/presets/presets.h"
 
 namespace penumbra::viewer {
@@ -48,6 +51,36 @@ TEST(WalkReplay, FollowsTheViewersLoopFrameForFrame) {
     EXPECT_TRUE(player.finished());
     // Held W for 0.75 s and D for 0.5 s at the flight speed: it went somewhere.
     EXPECT_GT(length(replay.camera().position - start), 0.5f * cameraSpeedFor(scene));
+}
+
+// render --walk --no-phantom: the dungeon's phantom starts parked, as `view --no-phantom` has
+// it, and H in the walk's events puts it back on its patrol, as in the viewer.
+TEST(WalkReplay, PhantomStartsAsAskedAndHTogglesIt) {
+    Scene scene = makePreset("dungeon");
+    const PhantomSwitch probe(scene);
+    ASSERT_TRUE(probe.present());
+    std::uint32_t phantom = 0;
+    while (scene.prototypes[scene.instances[phantom].prototype].name != kPhantomPrototype) ++phantom;
+    const float floorY = scene.bounds().lo.y;
+    auto standing = [&] { return scene.instances[phantom].transform.m[1][3] > floorY - 1.0f; };
+
+    const std::string text = "0.5 key H down\n0.55 key H up\n1.5 key W up";
+    WalkReplay replay(scene, parseInputScript(text, "w"), 0.1, false);
+    EXPECT_TRUE(replay.nextFrame(scene).instancesMoved);  // parked on the first frame
+    EXPECT_FALSE(standing()) << "--no-phantom: it starts parked under the level";
+    const Affine parked = scene.instances[phantom].transform;
+    for (int k = 1; k < 5; ++k) replay.nextFrame(scene);
+    EXPECT_EQ(scene.instances[phantom].transform.m[0][3], parked.m[0][3]) << "parked, it does not patrol";
+    for (int k = 5; k < 8; ++k) replay.nextFrame(scene);  // H at 0.5 s
+    EXPECT_TRUE(standing()) << "H put it back";
+    const Affine back = scene.instances[phantom].transform;
+    for (int k = 8; k < 14; ++k) replay.nextFrame(scene);
+    EXPECT_NE(std::memcmp(&back, &scene.instances[phantom].transform, sizeof back), 0) << "on its patrol again";
+
+    Scene shown = makePreset("dungeon");
+    WalkReplay defaults(shown, parseInputScript("1 key W up", "w"), 0.1);
+    defaults.nextFrame(shown);
+    EXPECT_GT(shown.instances[phantom].transform.m[1][3], floorY - 1.0f) << "on by default, as in view";
 }
 
 }  // namespace

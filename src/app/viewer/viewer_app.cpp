@@ -289,6 +289,7 @@ struct LoopState {
 bool playOneStep(LoopState& loop, Scene& scene, InteractiveRenderer& renderer, GLFWwindow* w, float step) {
     const WorldChange change = playStep(scene, loop.nav, loop.input, loop.animationClock, step);
     for (std::uint32_t m : change.lightsChanged) renderer.setUnsampledEmission(m, scene.materials[m].emission);
+    for (std::uint32_t m : change.materialsChanged) renderer.setMaterial(m, scene.materials[m]);
     if (change.levelCompleted) {
         std::printf("%s\n", change.levelCompleted->c_str());
         std::fflush(stdout);

@@ -4,4 +4,5 @@ target_sources(penumbra_scene PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/sector_movers.cpp
   ${CMAKE_CURRENT_LIST_DIR}/line_specials.cpp
   ${CMAKE_CURRENT_LIST_DIR}/level.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/level_looks.cpp
   ${CMAKE_CURRENT_LIST_DIR}/light_specials.cpp)

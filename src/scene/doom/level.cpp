@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "scene/walk/wad_walk_map.h"
+#include "scene/io/wad/things.h"
 #include "scene/io/wad/units.h"
 #include "scene/walk/walk_physics.h"
 
@@ -12,16 +13,6 @@ namespace penumbra::doom {
 namespace {
 
 constexpr double kMaxHeight = 32767;  // what "no neighbour" leaves (Doom's MAXINT, in map range)
-
-// Doom's key things: cards and skulls of each colour (a skull opens what a card opens).
-Key keyOfThing(int type) {
-    switch (type) {
-        case 5: case 40: return Key::Blue;
-        case 6: case 39: return Key::Yellow;
-        case 13: case 38: return Key::Red;
-        default: return Key::None;
-    }
-}
 
 const char* keyName(Key key) {
     switch (key) {
@@ -115,9 +106,12 @@ Level::Level(const wad::MapData& map) : mapName_(map.name), walk_(walk::buildWal
             lightTags.insert(line.tag).second)
             for (int s : taggedSectors(line.tag)) lightVaries_[std::size_t(s)] = true;
     }
-    for (const wad::Thing& t : map.things) {
+    // The keys of the single-player game at medium skill: those the WAD loader draws.
+    for (std::size_t i = 0; i < map.things.size(); ++i) {
+        const wad::Thing& t = map.things[i];
         const Key key = keyOfThing(t.type);
-        if (key != Key::None && !(t.flags & 0x10)) keyThings_.push_back({double(t.x), double(t.y), key, false});
+        if (key != Key::None && wad::inSinglePlayerMedium(t.flags))
+            keyThings_.push_back({i, double(t.x), double(t.y), key, false});
     }
     // The ranges the movers the map's lines can start would sweep, from the heights at load.
     floorRanges_.resize(sectors_.size());
@@ -499,6 +493,12 @@ std::vector<std::pair<double, double>> Level::keyPositions() const {
     for (const KeyThing& k : keyThings_)
         if (!k.taken) out.emplace_back(k.x, k.y);
     return out;
+}
+
+bool Level::thingTaken(std::size_t thing) const {
+    for (const KeyThing& k : keyThings_)
+        if (k.thing == thing) return k.taken;
+    return false;
 }
 
 bool placePlaneInstances(const Level& level, std::vector<Instance>& instances) {

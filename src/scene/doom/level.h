@@ -51,6 +51,24 @@ struct LightMaterial {
     float scale = 1;
 };
 
+// A material made for one switch's wall alone, so that the switch turns without its texture
+// turning on every other wall: its albedo (and glow) texture is [0] as the map draws the switch,
+// [1] the other one (SW2 for SW1). Emission textures are -1 where it does not glow.
+struct SwitchMaterial {
+    std::size_t line = 0;
+    std::uint32_t material = 0;
+    int albedo[2] = {-1, -1};
+    int emission[2] = {-1, -1};
+};
+
+// A material made for one key thing's sprite alone, so that the key can vanish when it is picked
+// up while its kind lies elsewhere: `shownCutoff` is its alpha cutoff while the key lies there.
+struct KeyMaterial {
+    std::size_t thing = 0;  // index in the map's things
+    std::uint32_t material = 0;
+    float shownCutoff = 0.5f;
+};
+
 constexpr double kUseRange = 64;   // USERANGE: how far the player reaches to use a line
 constexpr int kButtonTics = 35;    // BUTTONTIME: a repeatable switch turns back after a second
 
@@ -82,6 +100,8 @@ public:
     bool hasKey(Key key) const { return key == Key::None || keys_[std::size_t(key)]; }
     // Where the keys not yet picked up lie (map units).
     std::vector<std::pair<double, double>> keyPositions() const;
+    // Whether thing `thing` (index in the map's things) is a key that was picked up.
+    bool thingTaken(std::size_t thing) const;
 
     bool exited() const { return exitTic_ >= 0; }
     bool secretExit() const { return secretExit_; }
@@ -98,6 +118,11 @@ public:
     bool lightVaries(int sector) const;
     std::vector<LightMaterial>& lightMaterials() { return lightMaterials_; }
     const std::vector<LightMaterial>& lightMaterials() const { return lightMaterials_; }
+    // The materials that show the switches' and keys' state (level_looks.h applies them).
+    std::vector<SwitchMaterial>& switchMaterials() { return switchMaterials_; }
+    const std::vector<SwitchMaterial>& switchMaterials() const { return switchMaterials_; }
+    std::vector<KeyMaterial>& keyMaterials() { return keyMaterials_; }
+    const std::vector<KeyMaterial>& keyMaterials() const { return keyMaterials_; }
     const std::vector<PlaneInstance>& planeInstances() const { return planeInstances_; }
     // Whether the switch on linedef `line` shows its other texture (SW2 for a switch drawn SW1).
     bool switchFlipped(std::size_t line) const { return lines_.at(line).flipped; }
@@ -128,6 +153,7 @@ private:
         bool busy = false;            // Doom's specialdata: one mover at a time
     };
     struct KeyThing {
+        std::size_t thing = 0;  // index in the map's things
         double x = 0, y = 0;
         Key key = Key::None;
         bool taken = false;
@@ -161,6 +187,8 @@ private:
     std::map<int, std::vector<int>> sectorsByTag_;  // tag -> its sectors, in order
     std::vector<PlaneInstance> planeInstances_;
     std::vector<LightMaterial> lightMaterials_;
+    std::vector<SwitchMaterial> switchMaterials_;
+    std::vector<KeyMaterial> keyMaterials_;
     std::vector<bool> lightVaries_;
     bool keys_[4] = {true, false, false, false};
     int tics_ = 0;

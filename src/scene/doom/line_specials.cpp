@@ -140,4 +140,13 @@ std::optional<LineSpecial> lineSpecial(int number) {
     return std::nullopt;
 }
 
+Key keyOfThing(int type) {
+    switch (type) {
+        case 5: case 40: return Key::Blue;
+        case 6: case 39: return Key::Yellow;
+        case 13: case 38: return Key::Red;
+        default: return Key::None;
+    }
+}
+
 }  // namespace penumbra::doom

@@ -48,4 +48,8 @@ struct LineSpecial {
 // The special with this number, or none for 0 and numbers vanilla Doom does not define.
 std::optional<LineSpecial> lineSpecial(int number);
 
+// The key a thing of this type is (Doom's cards and skulls: a skull opens what a card of its
+// colour opens); Key::None for every other thing.
+Key keyOfThing(int type);
+
 }  // namespace penumbra::doom

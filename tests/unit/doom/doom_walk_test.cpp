@@ -9,11 +9,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "../wad/freedoom_wad.h"
 #include "interact/controls.h"
 #include "interact/doom_play.h"
+#include "interact/walk_replay.h"
+#include "scene/doom/level_looks.h"
 #include "scene/doom/level.h"
 #include "scene/io/wad/sector_light.h"
 #include "scene/io/wad/wad_loader.h"
@@ -67,6 +70,43 @@ TEST(DoomWalks, Doom1E1M1WalkEndsTheLevel) {
     const Scene scene = loadWad(doom1Path(), "E1M1");
     writeWalk(scene, "DOOM1.WAD (shareware) E1M1, from the player start to the exit switch", "doom1-e1m1-exit.txt");
     checkWalk(scene, "doom1-e1m1-exit.txt");
+}
+
+// The Freedoom walk replayed as `render --walk` replays it: when the level ends, the exit
+// switch's wall shows its other texture and the key picked up on the way is hidden, in the
+// scene's materials the renderer is sent.
+TEST(DoomWalks, FreedoomWalkTurnsTheExitSwitchAndHidesTheKeyTaken) {
+    REQUIRE_WAD(bytes, "freedoom1.wad");
+    Scene scene = loadWadFromMemory(bytes, "E1M1", "freedoom1.wad");
+    const std::vector<Material> loaded = scene.materials;
+    viewer::WalkReplay replay(scene, viewer::parseInputScript(readText(walksDir() / "freedoom1-e1m1-exit.txt"), "w"),
+                              kWalkStep);
+    std::set<std::uint32_t> sent;
+    bool ended = false;
+    for (std::uint64_t f = 0; f < replay.frameCount() && !ended; ++f) {
+        const viewer::WorldChange change = replay.nextFrame(scene);
+        sent.insert(change.materialsChanged.begin(), change.materialsChanged.end());
+        ended = change.levelCompleted.has_value();
+    }
+    ASSERT_TRUE(ended);
+    const doom::Level& level = replay.navigation().doom()->level();
+    auto name = [&](const std::vector<Material>& list, std::uint32_t m) {
+        return scene.textures.at(std::size_t(list.at(m).albedoTexture.texture)).name;
+    };
+    std::size_t exits = 0;
+    for (const doom::SwitchMaterial& s : level.switchMaterials()) {
+        if (level.lines()[s.line].special != 0 || !level.switchFlipped(s.line)) continue;  // used one-shots
+        EXPECT_EQ(name(scene.materials, s.material), doom::otherSwitchTexture(name(loaded, s.material)));
+        EXPECT_TRUE(sent.count(s.material));
+        exits += scene.doomLevel->lines()[s.line].special == 11;  // as loaded: S1 exit
+    }
+    EXPECT_EQ(exits, 1u) << "the exit switch turned";
+    std::size_t hidden = 0;
+    for (const doom::KeyMaterial& k : level.keyMaterials()) {
+        EXPECT_EQ(scene.materials[k.material].alphaCutoff > 1.0f, level.thingTaken(k.thing));
+        hidden += level.thingTaken(k.thing) && sent.count(k.material);
+    }
+    EXPECT_GE(hidden, 1u) << "the blue key, taken on the way";
 }
 
 // Space is Doom's use key while walking and still moves up in free flight; Enter uses too.

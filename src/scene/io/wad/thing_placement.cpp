@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/log.h"
+#include "scene/doom/line_specials.h"
 #include "scene/io/wad/sprites.h"
 #include "scene/io/wad/things.h"
 #include "scene/io/wad/units.h"
@@ -66,15 +67,16 @@ public:
           options_(options),
           scene_(scene) {}
 
-    void place() {
-        for (const Thing& t : map_.things) {
+    std::vector<TakeableSprite> place() {
+        for (std::size_t i = 0; i < map_.things.size(); ++i) {
+            const Thing& t = map_.things[i];
             if (!inSinglePlayerMedium(t.flags)) continue;
             const int sector = sectorAt(map_, t.x, t.y);
             const double floor = sector >= 0 ? map_.sectors[std::size_t(sector)].floorHeight : 0.0;
             const double ceiling =
                 sector >= 0 ? map_.sectors[std::size_t(sector)].ceilingHeight : 0.0;
             if (const ThingType* type = thingType(t.type))
-                addSprite(t, *type, type->hangHeight > 0 ? ceiling - type->hangHeight : floor);
+                addSprite(i, *type, type->hangHeight > 0 ? ceiling - type->hangHeight : floor);
             if (const LampType* lamp = lampType(t.type)) addLamp(t, *lamp, floor);
         }
         const std::string where = wad_.fileName() + ": map " + map_.name;
@@ -84,6 +86,7 @@ public:
         if (skippedLights_ > 0)
             logWarning(where + " has more than " + std::to_string(kMaxLights) + " lamps; " +
                        std::to_string(skippedLights_) + " are left out");
+        return std::move(takeable_);
     }
 
 private:
@@ -116,7 +119,18 @@ private:
         return &*it->second;
     }
 
-    void addSprite(const Thing& t, const ThingType& type, double z) {
+    // A key's sprite gets a copy of its frame's material, which vanishes when the key is taken.
+    std::uint32_t ownMaterial(std::size_t thing, std::uint32_t shared) {
+        Material m = scene_.materials[shared];
+        m.name += " thing " + std::to_string(thing);
+        const auto material = std::uint32_t(scene_.materials.size());
+        scene_.materials.push_back(std::move(m));
+        takeable_.push_back({thing, material});
+        return material;
+    }
+
+    void addSprite(std::size_t thing, const ThingType& type, double z) {
+        const Thing& t = map_.things[thing];
         const SpriteFrame* f = frame(type);
         if (!f) return;
         if (scene_.sprites.size() >= kMaxSprites) {
@@ -129,7 +143,7 @@ private:
         s.facing = Vec3{float(std::cos(angle)), 0.0f, float(-std::sin(angle))};
         s.left = f->left, s.right = f->right, s.bottom = f->bottom, s.top = f->top;
         s.rotations = f->rotations;
-        s.material = f->material;
+        s.material = doom::keyOfThing(t.type) != doom::Key::None ? ownMaterial(thing, f->material) : f->material;
         scene_.sprites.push_back(s);
     }
 
@@ -157,13 +171,14 @@ private:
     Scene& scene_;
     std::map<std::string, std::optional<SpriteFrame>> frames_;
     std::size_t lightCount_ = 0, skippedLights_ = 0, skippedSprites_ = 0;
+    std::vector<TakeableSprite> takeable_;
 };
 
 }  // namespace
 
-void placeThings(const WadFile& wad, const MapData& map, TextureLibrary& textures,
-                 const WadOptions& options, Scene& scene) {
-    ThingPlacer(wad, map, textures, options, scene).place();
+std::vector<TakeableSprite> placeThings(const WadFile& wad, const MapData& map, TextureLibrary& textures,
+                                        const WadOptions& options, Scene& scene) {
+    return ThingPlacer(wad, map, textures, options, scene).place();
 }
 
 }  // namespace penumbra::wad

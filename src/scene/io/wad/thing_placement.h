@@ -2,6 +2,9 @@
 // lamps, candles and torches as lights besides.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "scene/io/wad/map.h"
 #include "scene/io/wad/textures.h"
 #include "scene/io/wad/wad_file.h"
@@ -10,10 +13,17 @@
 
 namespace penumbra::wad {
 
-// Adds a sprite (Scene::sprites, with a material per sprite frame) for every thing with a picture
-// and a point light for every lamp, for the single-player game at medium skill. Textures are
-// appended to `textures`, whose list becomes the scene's.
-void placeThings(const WadFile& wad, const MapData& map, TextureLibrary& textures,
-                 const WadOptions& options, Scene& scene);
+// A thing the player can take away (a key), whose sprite has a material of its own, so that it
+// can vanish alone (doom::KeyMaterial).
+struct TakeableSprite {
+    std::size_t thing = 0;  // index in the map's things
+    std::uint32_t material = 0;
+};
+
+// Adds a sprite (Scene::sprites, with a material per sprite frame, and one per key) for every
+// thing with a picture and a point light for every lamp, for the single-player game at medium
+// skill. Textures are appended to `textures`, whose list becomes the scene's. Returns the keys'.
+std::vector<TakeableSprite> placeThings(const WadFile& wad, const MapData& map, TextureLibrary& textures,
+                                        const WadOptions& options, Scene& scene);
 
 }  // namespace penumbra::wad

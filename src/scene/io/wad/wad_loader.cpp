@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "scene/doom/level.h"
+#include "scene/doom/level_looks.h"
 #include "scene/environment.h"
 #include "scene/io/wad/glow.h"
 #include "scene/io/wad/map.h"
@@ -61,7 +62,8 @@ public:
         buildFlats();
         if (hasSky_) buildSky();
         placeCamera();
-        placeThings(wad_, map_, textures_, options_, scene_);
+        for (const TakeableSprite& key : placeThings(wad_, map_, textures_, options_, scene_))
+            level_->keyMaterials().push_back({key.thing, key.material, scene_.materials[key.material].alphaCutoff});
         scene_.walkMap = walk::buildWalkMap(map_);
         placeMovingPlanes();
         scene_.doomLevel = level_;
@@ -103,6 +105,39 @@ private:
             }
             return m;
         });
+    }
+
+    // A switch's wall (doom::SwitchMaterial): a material for line `line` alone, which knows the
+    // texture the switch turns to (and that texture's glow, since SW1 and SW2 glow alike).
+    std::uint32_t switchMaterial(std::size_t line, const std::string& texName, int texture, bool masked,
+                                 bool moving) {
+        const std::size_t before = scene_.materials.size();
+        const std::uint32_t index =
+            material("switch line " + std::to_string(line) + " " + texName, texName, false, texture, masked, moving);
+        if (scene_.materials.size() == before) return index;  // the switch's second wall piece
+        const int other = textures_.wallTexture(doom::otherSwitchTexture(texName));
+        doom::SwitchMaterial turn{line, index, {texture, other}, {-1, -1}};
+        if (scene_.materials[index].emissionTexture.present()) {
+            turn.emission[0] = scene_.materials[index].emissionTexture.texture;
+            turn.emission[1] = glowTextureOf(other, glowOf(texName, false).kind);
+        }
+        level_->switchMaterials().push_back(turn);
+        return index;
+    }
+
+    // The part of a switch line's front side whose texture turns, as P_ChangeSwitchTexture picks
+    // it: the first of upper, middle and lower that is a switch texture the WAD has the other of.
+    enum class SidePart { Upper, Middle, Lower };
+    std::optional<SidePart> turningPart(const Linedef& line, const Sidedef& side) const {
+        if (!doom::turnsSwitch(line.special)) return std::nullopt;
+        auto turns = [&](const std::string& name) {
+            const std::string other = doom::otherSwitchTexture(name);
+            return !other.empty() && textures_.hasWallTexture(name) && textures_.hasWallTexture(other);
+        };
+        if (turns(side.upper)) return SidePart::Upper;
+        if (turns(side.middle)) return SidePart::Middle;
+        if (turns(side.lower)) return SidePart::Lower;
+        return std::nullopt;
     }
 
     // The emission texture of a glowing texture, made once; for an animated one, one per frame,
@@ -250,14 +285,17 @@ private:
 
     // One wall piece from z0 to z1 (Doom units) along a -> b, facing right of a -> b.
     // textureTop: the height of the texture's top row (offsets included).
-    // proto >= 0: the quad moves with that prototype's plane.
+    // proto >= 0: the quad moves with that prototype's plane. switchLine: the quad shows that
+    // line's switch, which turns.
     void wallQuad(int sector, const Vertex& a, const Vertex& b, double z0, double z1,
-                  const std::string& texName, double textureTop, double uOffset, bool masked, int proto = -1) {
+                  const std::string& texName, double textureTop, double uOffset, bool masked, int proto = -1,
+                  std::optional<std::size_t> switchLine = std::nullopt) {
         if (!(z1 > z0)) return;
         int tex = textures_.wallTexture(texName);
         double tw = textures_.width(tex), th = textures_.height(tex);
-        std::uint32_t mat =
-            material((masked ? "masked " : "wall ") + texName, texName, false, tex, masked, proto >= 0);
+        std::uint32_t mat = switchLine ? switchMaterial(*switchLine, texName, tex, masked, proto >= 0)
+                                       : material((masked ? "masked " : "wall ") + texName, texName, false, tex,
+                                                  masked, proto >= 0);
         double dx = double(b.x) - a.x, dy = double(b.y) - a.y;
         double len = std::sqrt(dx * dx + dy * dy);
         Vec3 facing = normalize(Vec3(float(dy), 0.0f, float(dx)));  // Doom right (dy, -dx)
@@ -275,7 +313,9 @@ private:
             const Vertex& v1 = map_.vertices[line.v1];
             const Vertex& v2 = map_.vertices[line.v2];
             if (v1.x == v2.x && v1.y == v2.y) continue;
-            wallSide(line, map_.sidedefs[line.front], line.back, v1, v2);
+            const std::size_t index = std::size_t(&line - map_.linedefs.data());
+            wallSide(line, map_.sidedefs[line.front], line.back, v1, v2, index);
+            // Only the front side's switch turns (P_ChangeSwitchTexture).
             if (line.back != kNoSide) wallSide(line, map_.sidedefs[line.back], line.front, v2, v1);
         }
     }
@@ -284,9 +324,12 @@ private:
     // can take: a wall whose edge is the other sector's moving plane moves with that plane (its
     // extra height goes behind this sector's own floor or ceiling), and a wall whose edge is this
     // sector's moving plane stays, reaching as far as the plane goes (the plane covers the rest).
+    // frontOf: this is the front side of that linedef (whose switch may turn).
     void wallSide(const Linedef& line, const Sidedef& side, std::uint16_t otherSide,
-                  const Vertex& a, const Vertex& b) {
+                  const Vertex& a, const Vertex& b, std::optional<std::size_t> frontOf = std::nullopt) {
         using doom::Plane;
+        const std::optional<SidePart> turning = frontOf ? turningPart(line, side) : std::nullopt;
+        auto switchOf = [&](SidePart part) { return turning == part ? frontOf : std::nullopt; };
         const int fs = side.sector;
         const Sector& f = map_.sectors[std::size_t(fs)];
         const double u = side.xOffset, dyOff = side.yOffset;
@@ -301,7 +344,8 @@ private:
         if (otherSide == kNoSide) {
             if (!hasTexture(side.middle)) return;
             double top = lowerUnpegged ? f.floorHeight + texHeight(side.middle) : f.ceilingHeight;
-            wallQuad(fs, a, b, fFloorLow, fCeilHigh, side.middle, top + dyOff, u, false);
+            wallQuad(fs, a, b, fFloorLow, fCeilHigh, side.middle, top + dyOff, u, false, -1,
+                     switchOf(SidePart::Middle));
             return;
         }
         const int ks = map_.sidedefs[otherSide].sector;
@@ -312,9 +356,10 @@ private:
                 const double reach = fCeilHigh - level_->range(ks, Plane::Ceiling).low;
                 if (reach > 0)
                     wallQuad(fs, a, b, k.ceilingHeight, k.ceilingHeight + reach, side.upper, top + dyOff, u, false,
-                             movingPrototype(ks, Plane::Ceiling));
+                             movingPrototype(ks, Plane::Ceiling), switchOf(SidePart::Upper));
             } else if (k.ceilingHeight < fCeilHigh) {
-                wallQuad(fs, a, b, k.ceilingHeight, fCeilHigh, side.upper, top + dyOff, u, false);
+                wallQuad(fs, a, b, k.ceilingHeight, fCeilHigh, side.upper, top + dyOff, u, false, -1,
+                         switchOf(SidePart::Upper));
             }
         }
         if (hasTexture(side.lower)) {
@@ -323,9 +368,10 @@ private:
                 const double reach = level_->range(ks, Plane::Floor).high - fFloorLow;
                 if (reach > 0)
                     wallQuad(fs, a, b, k.floorHeight - reach, k.floorHeight, side.lower, top + dyOff, u, false,
-                             movingPrototype(ks, Plane::Floor));
+                             movingPrototype(ks, Plane::Floor), switchOf(SidePart::Lower));
             } else if (k.floorHeight > fFloorLow) {
-                wallQuad(fs, a, b, fFloorLow, k.floorHeight, side.lower, top + dyOff, u, false);
+                wallQuad(fs, a, b, fFloorLow, k.floorHeight, side.lower, top + dyOff, u, false, -1,
+                         switchOf(SidePart::Lower));
             }
         }
         if (hasTexture(side.middle)) {
@@ -335,7 +381,8 @@ private:
             double lo = std::max(f.floorHeight, k.floorHeight);
             double th = texHeight(side.middle);
             double top = (lowerUnpegged ? lo + th : hi) + dyOff;
-            wallQuad(fs, a, b, std::max(lo, top - th), std::min(hi, top), side.middle, top, u, true);
+            wallQuad(fs, a, b, std::max(lo, top - th), std::min(hi, top), side.middle, top, u, true, -1,
+                     switchOf(SidePart::Middle));
         }
     }
 
