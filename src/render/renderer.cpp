@@ -69,11 +69,17 @@ void Renderer::setMaterial(std::uint32_t index, const Material& material) {
     const shader::Material gm = toGpuMaterial(material);
     const shader::Material& old = arrays_.materials[index];
     PN_CHECK(gm.emission.x == old.emission.x && gm.emission.y == old.emission.y && gm.emission.z == old.emission.z);
-    PN_CHECK(gm.flags == old.flags);  // the same kernel features
     arrays_.materials[index] = gm;
     commands_.run([&](VkCommandBuffer cmd) {
         vkCmdUpdateBuffer(cmd, gpuScene_->materials.get(), VkDeviceSize(index) * sizeof(gm), sizeof(gm), &gm);
     });
+    // A material that now needs code the kernels left out (or the last one that needed it) brings
+    // new kernels (render/kernel_features.h).
+    const KernelSpec spec = kernelSpecAfter(spec_, arrays_, kEditMaterials);
+    if (spec != spec_) {
+        spec_ = spec;
+        makeTracePass();
+    }
 }
 
 double Renderer::renderPasses(std::uint32_t passes, bool countRays, bool masked) {

@@ -54,8 +54,8 @@ public:
     // as InteractiveRenderer does, instead of a new Renderer. Call restart() after.
     void setUnsampledEmission(std::uint32_t material, Vec3 emission);
     // A material's textures or alpha cutoff changed (a Doom switch turned, a key was picked up):
-    // updated in place. Its emission and the kernels it needs must stay as they were (the light
-    // tables weigh emitters by power). Call restart() after.
+    // updated in place; kernels that lack what it now needs are remade. Its emission must stay
+    // as it was (the light tables weigh emitters by power). Call restart() after.
     void setMaterial(std::uint32_t index, const Material& material);
     std::uint32_t passesDone() const { return passesDone_; }
     void setPassesDone(std::uint32_t passes);
