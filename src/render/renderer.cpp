@@ -6,6 +6,8 @@
 
 #include "core/error.h"
 #include "render/frame_uniforms.h"
+#include "render/instance_arrays.h"
+#include "render/instance_upload.h"
 #include "render/kernel_features.h"
 #include "render/ray_counters.h"
 
@@ -61,6 +63,18 @@ void Renderer::setUnsampledEmission(std::uint32_t material, Vec3 emission) {
     commands_.run([&](VkCommandBuffer cmd) {
         vkCmdUpdateBuffer(cmd, gpuScene_->materials.get(), VkDeviceSize(material) * sizeof(shader::Material),
                           sizeof(shader::Material), &m);
+    });
+}
+
+void Renderer::setInstanceTransforms(const Scene& scene) {
+    if (!moveInstances(arrays_, scene)) return;
+    if (instanceStaging_.get() == VK_NULL_HANDLE)
+        instanceStaging_ = gpu::Buffer(ctx_, instanceUploadBytes(arrays_), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                       gpu::MemoryKind::HostVisible);
+    // renderPasses starts with a barrier that makes transfer writes visible to the trace.
+    commands_.run([&](VkCommandBuffer cmd) {
+        gpu::computeBarrier(cmd);  // passes still reading the top level finish first
+        recordInstanceUpload(cmd, arrays_, *gpuScene_, instanceStaging_, 0);
     });
 }
 
@@ -122,27 +136,9 @@ void Renderer::restart(const Camera& camera, float time) {
     restart(camera);
 }
 
-namespace {
-
-// Copies host data into an existing device buffer through a staging buffer.
-void copyToBuffer(const gpu::Context& ctx, gpu::Commands& commands, const gpu::Buffer& dst, const void* data,
-                  VkDeviceSize bytes) {
-    PN_CHECK(bytes <= dst.size());
-    if (bytes == 0) return;
-    gpu::Buffer staging(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryKind::HostVisible);
-    std::memcpy(staging.mapped(), data, bytes);
-    commands.run([&](VkCommandBuffer cmd) {
-        gpu::computeBarrier(cmd);  // passes still reading the buffer finish first
-        VkBufferCopy region{0, 0, bytes};
-        vkCmdCopyBuffer(cmd, staging.get(), dst.get(), 1, &region);
-    });
-}
-
-}  // namespace
-
 void Renderer::setActiveMask(std::span<const std::uint32_t> mask) {
     PN_CHECK(mask.size() == std::size_t(settings_.width) * settings_.height);
-    copyToBuffer(ctx_, commands_, activeMask_, mask.data(), mask.size_bytes());
+    gpu::uploadToBuffer(ctx_, commands_, activeMask_, mask.data(), mask.size_bytes());
 }
 
 std::vector<Vec4> Renderer::takeAccumulation() {
@@ -156,7 +152,7 @@ std::vector<Vec4> Renderer::takeAccumulation() {
 
 void Renderer::loadAccumulation(std::span<const Vec4> sums) {
     PN_CHECK(sums.size() == std::size_t(settings_.width) * settings_.height);
-    copyToBuffer(ctx_, commands_, accumulation_, sums.data(), sums.size_bytes());
+    gpu::uploadToBuffer(ctx_, commands_, accumulation_, sums.data(), sums.size_bytes());
 }
 
 void Renderer::setPassesDone(std::uint32_t passes) {

@@ -53,6 +53,12 @@ public:
     // found by rays only, so no light table depends on it): the GPU's copy is updated in place,
     // as InteractiveRenderer does, instead of a new Renderer. Call restart() after.
     void setUnsampledEmission(std::uint32_t material, Vec3 emission);
+    // Moves the instances to where `scene` (the scene this renderer was made from, its instances
+    // moved: a Doom door, an animation) now places them: the top level is rebuilt on the CPU and
+    // copied over the GPU's, as InteractiveRenderer::setInstanceTransforms does, instead of a new
+    // Renderer. Instances of emissive prototypes stay where they were baked (moveInstances). Call
+    // restart() after.
+    void setInstanceTransforms(const Scene& scene);
     std::uint32_t passesDone() const { return passesDone_; }
     void setPassesDone(std::uint32_t passes);
 
@@ -85,6 +91,7 @@ private:
     gpu::Buffer accumulation_;
     gpu::Buffer counters_;
     gpu::Buffer activeMask_;  // uint per pixel (adaptive sampling)
+    gpu::Buffer instanceStaging_;  // what a move uploads (render/instance_upload.h); made on the first
     std::uint32_t features_ = 0;
     std::unique_ptr<TracePass> trace_;
     gpu::GpuTimer timer_;

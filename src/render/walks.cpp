@@ -80,4 +80,12 @@ void buildWalkRecords(SceneArrays& arrays, Accel accel) {
     arrays.walk = wideFallsBack ? PN_ACCEL_BVH : walkInfo(accel).shaderId;
 }
 
+void refreshTopLevelRecords(SceneArrays& arrays) {
+    if (arrays.instances.empty()) return;
+    // Only the top level's escapes change: the bottom levels' nodes are untouched.
+    if (!arrays.stacklessNodes.empty()) bvh::threadTree(arrays.nodes, arrays.topRoot, arrays.stacklessNodes);
+    // A moved instance's box is its top-level leaf's; rebuilt whole (a comparison walk: simple wins).
+    if (!arrays.objectBoxes.empty()) buildObjectBoxes(arrays);
+}
+
 }  // namespace penumbra
