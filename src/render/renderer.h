@@ -56,8 +56,9 @@ public:
     // Moves the instances to where `scene` (the scene this renderer was made from, its instances
     // moved: a Doom door, an animation) now places them: the top level is rebuilt on the CPU and
     // copied over the GPU's, as InteractiveRenderer::setInstanceTransforms does, instead of a new
-    // Renderer. Instances of emissive prototypes stay where they were baked (moveInstances). Call
-    // restart() after.
+    // Renderer. Instances of emissive prototypes stay where they were baked (moveInstances). The
+    // light grid keeps the bounds the scene had when built: points a move takes beyond them use
+    // the light tree's own weights (unbiased; a new renderer would fit them). Call restart() after.
     void setInstanceTransforms(const Scene& scene);
     std::uint32_t passesDone() const { return passesDone_; }
     void setPassesDone(std::uint32_t passes);

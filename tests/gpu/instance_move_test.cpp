@@ -15,7 +15,8 @@ namespace penumbra::test {
 namespace {
 
 // The instanced room and one more sphere placed by the identity (like a Doom door at rest: its
-// instance walked untransformed), and the same room with that sphere and another one moved.
+// instance walked untransformed), and the same room with that sphere and another one moved. Both
+// stay inside the room, so the scene's bounds, and the light grid over them, are the same.
 struct Move {
     Scene before, after;
 };
