@@ -7,6 +7,7 @@
 #include "bvh/triangle.h"
 #include "bvh/two_level.h"
 #include "core/error.h"
+#include "render/rest_tree.h"
 #include "render/walks.h"
 #include "scene/objects.h"
 
@@ -74,6 +75,7 @@ void appendInstanceLevels(const Scene& scene, SceneArrays& out, const bvh::Build
                                                   static_cast<std::uint32_t>(k)));
         out.instanceBounds.push_back(level.bounds);
     }
+    appendRestTree(out);
     out.bottomNodeCount = static_cast<std::uint32_t>(out.nodes.size());
     out.uniqueMeshes = static_cast<std::uint32_t>(std::count(built.begin(), built.end(), true));
     rebuildTopLevel(out);

@@ -14,6 +14,7 @@
 #include "render/kernel_features.h"
 #include "render/passes/gbuffer_pass.h"
 #include "render/ray_counters.h"
+#include "render/rest_tree.h"
 #include "shared/animation.h"
 
 namespace penumbra {
@@ -272,7 +273,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     PN_CHECK(width_ > 0 && height_ > 0);
     trace_->reserve(width_, height_, s.samplesPerFrame);  // before this frame records anything
     startHistory(s);
-    const shader::FrameUniforms f = frameUniforms(camera, s);
+    shader::FrameUniforms f = frameUniforms(camera, s);
     // An animated texture that turned to its next frame changed the image: blend history as for a
     // moving camera. Between its ticks the image holds still and the mean keeps converging.
     const bool animating = previousFrame_ && animationTicked(arrays_.textures, previousFrame_->time, f.time);
@@ -280,6 +281,9 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     const bool instancesMoved =
         !arrays_.instances.empty() && std::memcmp(lastFrameInstances_.data(), arrays_.instances.data(),
                                                   arrays_.instances.size() * sizeof(shader::Instance)) != 0;
+    // At rest since the frame before too: the rest tree's flat walk (render/rest_tree.h). The frame
+    // an instance comes to rest still walks two levels, so its last step has its motion vectors.
+    if (!instancesMoved && atRest(arrays_)) walkRestTree(f, arrays_);
     const bool moved = previousFrame_ && (!sameCamera(*previousFrame_, f) || animating || instancesMoved);
     if (s.preview && moved) return recordPreview(cmd, camera, s, f, instancesMoved);
     // A still view whose G-buffers both hold it reuses them (recordGBuffer): the temporal pass is

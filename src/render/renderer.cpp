@@ -10,6 +10,7 @@
 #include "render/instance_upload.h"
 #include "render/kernel_features.h"
 #include "render/ray_counters.h"
+#include "render/rest_tree.h"
 
 namespace penumbra {
 
@@ -21,8 +22,7 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
     environment_ = Environment{std::nullopt, std::nullopt, scene.environment.intensity, scene.environment.rotationDegrees};
     frameUniforms_ = gpu::Buffer(ctx, sizeof(shader::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                  gpu::MemoryKind::HostVisible);
-    const shader::FrameUniforms frame =
-        makeSceneFrameUniforms(scene.camera, background_, environment_, settings_, *gpuScene_);
+    const shader::FrameUniforms frame = sceneUniforms(scene.camera);
     std::memcpy(frameUniforms_.mapped(), &frame, sizeof(frame));
 
     const VkDeviceSize pixels = VkDeviceSize(settings_.width) * settings_.height;
@@ -37,6 +37,12 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
                               gpu::MemoryKind::DeviceLocal);
     features_ = penumbra::kernelFeatures(arrays_, settings_.accel, settings_.cullBackfaces);
     makeTracePass();
+}
+
+shader::FrameUniforms Renderer::sceneUniforms(const Camera& camera) const {
+    shader::FrameUniforms f = makeSceneFrameUniforms(camera, background_, environment_, settings_, *gpuScene_);
+    if (atRest(arrays_)) walkRestTree(f, arrays_);  // every instance where it was modelled
+    return f;
 }
 
 void Renderer::makeTracePass() {
@@ -124,7 +130,7 @@ void Renderer::render(const std::function<void(std::uint32_t)>& onProgress) {
 }
 
 void Renderer::restart(const Camera& camera) {
-    const shader::FrameUniforms frame = makeSceneFrameUniforms(camera, background_, environment_, settings_, *gpuScene_);
+    const shader::FrameUniforms frame = sceneUniforms(camera);
     std::memcpy(frameUniforms_.mapped(), &frame, sizeof(frame));
     commands_.run([&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0); });
     passesDone_ = 0;

@@ -80,6 +80,8 @@ public:
 
 private:
     void makeTracePass();  // with features_
+    // The frame's uniforms for this camera; the rest tree's flat walk while every instance rests.
+    shader::FrameUniforms sceneUniforms(const Camera& camera) const;
 
     const gpu::Context& ctx_;
     RenderSettings settings_;

@@ -73,6 +73,7 @@ void buildWalkRecords(SceneArrays& arrays, Accel accel) {
         roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
         if (arrays.instances.empty()) roots = {0u};
         else roots.push_back(arrays.topRoot);
+        if (arrays.restRoot != PN_NO_HIT) roots.push_back(arrays.restRoot);
         arrays.stacklessNodes = bvh::threadNodes(arrays.nodes, roots);
     }
     if (accel == Accel::Objects) buildObjectBoxes(arrays);

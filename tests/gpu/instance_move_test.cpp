@@ -1,7 +1,8 @@
 // Final renders whose instances move in place (Renderer::setInstanceTransforms, what a walk's
 // video does when a Doom door moves): they render what a renderer made anew on the moved scene
 // renders, for every walk that keeps records of the top level, and the denoiser's passes kept
-// from the frame before denoise as new ones do.
+// from the frame before denoise as new ones do. A scene whose movers all rest walks its rest tree
+// (render/rest_tree.h) and renders what its two levels render.
 #include <cstring>
 
 #include "../unit/instanced_world.h"
@@ -10,6 +11,7 @@
 #include "render/progressive.h"
 #include "render/renderer.h"
 #include "render_helpers.h"
+#include "scoped_tuning.h"
 
 namespace penumbra::test {
 namespace {
@@ -71,6 +73,42 @@ TEST_F(GpuTest, InstancesMovedInPlaceRenderAsANewRenderer) {
         const std::vector<Vec4> a = updated.accumulation();
         EXPECT_NE(std::memcmp(a.data(), old.data(), a.size() * sizeof(Vec4)), 0) << accelName(accel) << ": nothing moved";
         expectSameSums(*ctx, a, fresh.accumulation(), accelName(accel));
+    }
+}
+
+std::vector<Vec4> renderSums(const gpu::Context& ctx, const Scene& scene, Accel accel, bool restTree) {
+    ScopedTuning tuning;
+    tuning.restTree(restTree);
+    Renderer r(ctx, scene, moveSettings(accel));
+    EXPECT_EQ(r.sceneArrays().restRoot != PN_NO_HIT, restTree);
+    r.render();
+    return r.accumulation();
+}
+
+TEST_F(GpuTest, MoversAtRestRenderThroughTheRestTreeAsThroughTwoLevels) {
+    const Scene scene = moversAtRest();
+    for (Accel accel : {Accel::Bvh, Accel::Stackless})
+        expectSameSums(*ctx, renderSums(*ctx, scene, accel, true), renderSums(*ctx, scene, accel, false),
+                       accelName(accel));
+}
+
+// A door raised walks two levels, and back at rest the rest tree again: each frame as a renderer
+// made anew on the scene as it then stands.
+TEST_F(GpuTest, ADoorRaisedAndLoweredInPlaceRendersAsNewRenderers) {
+    const Scene rest = moversAtRest();
+    Scene raised = rest;
+    raised.instances[0].transform = doorRaised(1.2f);
+    for (Accel accel : {Accel::Bvh, Accel::Stackless}) {
+        Renderer updated(*ctx, rest, moveSettings(accel));
+        updated.render();
+        updated.setInstanceTransforms(raised);
+        updated.restart(raised.camera);
+        updated.render();
+        expectSameSums(*ctx, updated.accumulation(), renderSums(*ctx, raised, accel, false), accelName(accel));
+        updated.setInstanceTransforms(rest);
+        updated.restart(rest.camera);
+        updated.render();
+        expectSameSums(*ctx, updated.accumulation(), renderSums(*ctx, rest, accel, true), accelName(accel));
     }
 }
 
