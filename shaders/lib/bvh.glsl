@@ -83,7 +83,8 @@ vec3 toInstanceVector(uint instance, vec3 v) {
 // root on the same stack, above a marker; popping the marker ends the bottom level. The world ray
 // is saved on the stack (bit for bit) under a moved instance's marker rather than kept in
 // registers through the whole walk: the loop then carries one ray and the instance, the state a
-// flat walk carries plus one register. Without instances, the flat BVH at node 0. Each step reads
+// flat walk carries plus one register. Without instances, a flat walk from frame.topRoot: node 0 in
+// flat scenes, the rest tree in a two-level scene at rest (render/rest_tree.h). Each step reads
 // one record (BvhPair): a leaf's primitives, or both children's boxes, tested here, so the walk
 // goes on into a child whose box it already knows it enters (the root's own box is never tested:
 // its children's are).
@@ -91,7 +92,7 @@ Hit traverseBvh(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
     Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0, PN_NO_HIT);
     if (frame.nodeCount == 0u) return hit;
     bool twoLevel = PN_HAS(PN_FEATURE_INSTANCES) && frame.instanceCount != 0u;
-    uint current = twoLevel ? frame.topRoot : 0u;
+    uint current = PN_HAS(PN_FEATURE_INSTANCES) ? frame.topRoot : 0u;
     vec3 o = worldO, d = worldD;
     vec3 invD = safeInverse(d);
     uint stack[PN_BVH_WALK_STACK_SIZE];

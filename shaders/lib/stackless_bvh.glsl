@@ -14,7 +14,7 @@ Hit traverseStackless(vec3 worldO, vec3 worldD, float tMax, bool anyHit) {
     Hit hit = Hit(tMax, PN_NO_HIT, 0.0, 0.0, PN_NO_HIT);
     if (frame.nodeCount == 0u) return hit;
     bool twoLevel = PN_HAS(PN_FEATURE_INSTANCES) && frame.instanceCount != 0u;
-    uint current = twoLevel ? frame.topRoot : 0u;
+    uint current = PN_HAS(PN_FEATURE_INSTANCES) ? frame.topRoot : 0u;  // flat: node 0 or the rest tree
     uint resume = PN_STACKLESS_END;  // the top level's next node once the instance is done
     uint instance = PN_NO_HIT;       // the instance whose bottom level is being walked
     vec3 o = worldO, d = worldD;

@@ -64,7 +64,7 @@ PN_STRUCT(FrameUniforms) {
     float envLuminance;    // mean luminance of the environment over directions (intensity 1)
     uint lightRefCount;    // LightRef entries in all
     uint lightPickUniform; // nonzero: pick every light with the same probability (a test oracle)
-    uint topRoot;          // with instanceCount > 0: the top-level BVH's root node
+    uint topRoot;          // the walk's root: top level (instanceCount > 0), rest tree (at rest, 0 instances), or 0 (flat)
     uint lightGridOffset;  // word of the light grid (its LightGridHeader) in the light tree's buffer (0: none, walk the tree)
     float shadowRouletteShare;  // shadow-ray roulette below this share of the pixel's estimate (lib/path.glsl); 0: off
     float textureSaturation;    // of base-colour textures (shared/view_limits.h); 1: as they are

@@ -37,6 +37,7 @@ RenderTuning renderTuningFromEnvironment() {
     const std::string_view generic = text("PENUMBRA_GENERIC_KERNEL");
     t.genericKernel = !generic.empty() && generic != "0";
     t.lightGrid = environmentSetting("PENUMBRA_LIGHT_GRID", 1, 0, 1) != 0;
+    t.restTree = environmentSetting("PENUMBRA_REST_TREE", 1, 0, 1) != 0;
     LightGridOptions& grid = t.lightGridOptions;
     grid.drawInClusters = environmentSetting("PENUMBRA_LIGHT_GRID_DRAW", 1, 0, 1) != 0;
     grid.levels = std::uint32_t(

@@ -1,5 +1,6 @@
 #include "app/render_video.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -19,6 +20,7 @@
 #include "render/interactive_renderer.h"
 #include "render/progressive.h"
 #include "scene/animation.h"
+#include "scene/instances.h"
 
 namespace penumbra::app {
 namespace {
@@ -79,18 +81,23 @@ public:
     virtual std::uint32_t samplesPerFrame() const = 0;
 };
 
+// Instances of emissive prototypes are baked into the world where they stand (scene/instances.h):
+// moving one takes a new Renderer.
+bool hasBakedInstances(const Scene& scene) {
+    return std::any_of(scene.instances.begin(), scene.instances.end(), [&](const Instance& i) {
+        return i.prototype < scene.prototypes.size() && prototypeIsEmissive(scene, scene.prototypes[i.prototype]);
+    });
+}
+
 // The render command's final frame: job.settings.samplesPerPixel (under --time-limit per frame,
-// --noise-threshold, --denoise), one pipeline for every frame while the geometry holds still.
+// --noise-threshold, --denoise). One renderer and one set of denoising passes for every frame:
+// moved instances (doors, lifts) and changed sector lights are updated in place; only changed
+// geometry makes a new renderer.
 class FinalFrames final : public FrameMaker {
 public:
     FinalFrames(const gpu::Context& ctx, const FrameJob& job) : ctx_(ctx), job_(job) {}
     RenderedFrame make(const Scene& scene, const Camera& camera, double seconds, WorldChange change) override {
-        if (!renderer_ || change.instancesMoved || change.geometryChanged)
-            renderer_ = std::make_unique<Renderer>(ctx_, scene, job_.settings);
-        else  // a flickering sector changes its light nearly every tic: no new renderer for that
-            for (std::uint32_t m : change.lightsChanged) renderer_->setUnsampledEmission(m, scene.materials[m].emission);
-        // A switch turned or a key was taken: sent up in place (a new renderer has them already).
-        for (std::uint32_t m : change.materialsChanged) renderer_->setMaterial(m, scene.materials[m]);
+        update(scene, change);
         renderer_->restart(camera, textureTime(seconds));
         ProgressiveRender render(*renderer_, job_.adaptive);
         RenderBudget budget;
@@ -99,16 +106,35 @@ public:
         budget.stop = &StopOnSignals::signal();
         render.run(budget);
         RenderedFrame frame;
-        frame.linear = job_.denoise ? FinalFramePasses(ctx_, *renderer_).denoise(render.current()) : render.image();
+        frame.linear = job_.denoise ? denoise(render) : render.image();
         frame.rgb = toneMapToSrgb8(frame.linear, job_.toneMap);
         return frame;
     }
     std::uint32_t samplesPerFrame() const override { return job_.settings.samplesPerPixel; }
 
 private:
+    void update(const Scene& scene, const WorldChange& change) {
+        if (!renderer_ || change.geometryChanged || (change.instancesMoved && hasBakedInstances(scene))) {
+            passes_.reset();  // it refers to the renderer
+            renderer_ = std::make_unique<Renderer>(ctx_, scene, job_.settings);
+            return;
+        }
+        if (change.instancesMoved) renderer_->setInstanceTransforms(scene);
+        // A flickering sector changes its light nearly every tic: no new renderer for that.
+        for (std::uint32_t m : change.lightsChanged) renderer_->setUnsampledEmission(m, scene.materials[m].emission);
+        // A switch turned or a key was taken: sent up in place (a new renderer has them already).
+        for (std::uint32_t m : change.materialsChanged) renderer_->setMaterial(m, scene.materials[m]);
+    }
+    ImageRgb denoise(ProgressiveRender& render) {
+        if (!passes_) passes_ = std::make_unique<FinalFramePasses>(ctx_, *renderer_);
+        passes_->restart();  // this frame's view and instances
+        return passes_->denoise(render.current());
+    }
+
     const gpu::Context& ctx_;
     const FrameJob& job_;
     std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<FinalFramePasses> passes_;  // after the renderer: destroyed first
 };
 
 // The viewer's frame (render/interactive_renderer.h), history carried from frame to frame as in

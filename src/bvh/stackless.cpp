@@ -24,33 +24,39 @@ std::uint32_t leafWord(const shader::BvhNode& node, std::uint32_t index) {
 
 }  // namespace
 
+void threadTree(std::span<const shader::BvhNode> nodes, std::uint32_t root, std::span<shader::StacklessNode> out) {
+    const auto count = std::uint32_t(nodes.size());
+    PN_CHECK(out.size() == nodes.size() && root < count);
+    // Depth first, carrying the escape each node inherits: a left child escapes to its sibling, a
+    // right child where its parent escapes to.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pending{{root, PN_STACKLESS_END}};  // (node, its escape)
+    while (!pending.empty()) {
+        const auto [n, escape] = pending.back();
+        pending.pop_back();
+        out[n].boundsMin = nodes[n].boundsMin;
+        out[n].boundsMax = nodes[n].boundsMax;
+        out[n].escape = escape;
+        out[n].leaf = nodes[n].triCount > 0 ? leafWord(nodes[n], n) : 0u;
+        if (nodes[n].triCount > 0) continue;
+        const std::uint32_t left = n + 1, right = nodes[n].firstOrRight;
+        PN_CHECK(left < count && right < count && right > left);
+        pending.push_back({right, escape});
+        pending.push_back({left, right});
+    }
+}
+
 std::vector<shader::StacklessNode> threadNodes(std::span<const shader::BvhNode> nodes,
                                                std::span<const std::uint32_t> roots) {
     const auto count = std::uint32_t(nodes.size());
     std::vector<shader::StacklessNode> out(nodes.size());
+    // Nodes no root reaches keep their box and end the walk (none in the builder's arrays).
     for (std::uint32_t i = 0; i < count; ++i) {
         out[i].boundsMin = nodes[i].boundsMin;
         out[i].boundsMax = nodes[i].boundsMax;
         out[i].escape = PN_STACKLESS_END;
         out[i].leaf = nodes[i].triCount > 0 ? leafWord(nodes[i], i) : 0u;
     }
-    // Depth first from each root, carrying the escape each node inherits: a left child escapes to
-    // its sibling, a right child where its parent escapes to.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pending;  // (node, its escape)
-    for (std::uint32_t root : roots) {
-        PN_CHECK(root < count);
-        pending.push_back({root, PN_STACKLESS_END});
-        while (!pending.empty()) {
-            const auto [n, escape] = pending.back();
-            pending.pop_back();
-            out[n].escape = escape;
-            if (nodes[n].triCount > 0) continue;
-            const std::uint32_t left = n + 1, right = nodes[n].firstOrRight;
-            PN_CHECK(left < count && right < count && right > left);
-            pending.push_back({right, escape});
-            pending.push_back({left, right});
-        }
-    }
+    for (std::uint32_t root : roots) threadTree(nodes, root, out);
     return out;
 }
 

@@ -20,6 +20,10 @@ namespace penumbra::bvh {
 std::vector<shader::StacklessNode> threadNodes(std::span<const shader::BvhNode> nodes,
                                                std::span<const std::uint32_t> roots);
 
+// The tree at `root` threaded again into `out` (threadNodes' result for the same array, same
+// indices), its other trees left as they are: a top level rebuilt in place when instances move.
+void threadTree(std::span<const shader::BvhNode> nodes, std::uint32_t root, std::span<shader::StacklessNode> out);
+
 // The stackless walk over a flat tree (root 0), as the shader takes it: each box tested on
 // arrival, left child first. closestHit's answers (the same t; ties may pick another primitive).
 Hit closestHitStackless(std::span<const shader::StacklessNode> nodes, std::span<const shader::TriVerts> tris,

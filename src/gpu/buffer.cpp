@@ -69,6 +69,18 @@ Buffer uploadStorageBuffer(const Context& ctx, Commands& commands, const void* d
     return dst;
 }
 
+void uploadToBuffer(const Context& ctx, Commands& commands, const Buffer& dst, const void* data, VkDeviceSize bytes) {
+    PN_CHECK(bytes <= dst.size());
+    if (bytes == 0) return;
+    Buffer staging(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::HostVisible);
+    std::memcpy(staging.mapped(), data, bytes);
+    commands.run([&](VkCommandBuffer cmd) {
+        computeBarrier(cmd);  // passes still reading the buffer finish first
+        VkBufferCopy region{0, 0, bytes};
+        vkCmdCopyBuffer(cmd, staging.get(), dst.get(), 1, &region);
+    });
+}
+
 void downloadBuffer(const Context& ctx, Commands& commands, const Buffer& src, void* dst, VkDeviceSize bytes) {
     if (bytes == 0) return;
     PN_CHECK(bytes <= src.size());

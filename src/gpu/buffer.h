@@ -50,6 +50,15 @@ Buffer uploadStorageBuffer(const Context& ctx, Commands& commands, std::span<con
     return uploadStorageBuffer(ctx, commands, items.data(), items.size_bytes());
 }
 
+// Copies `bytes` from the host to the start of an existing buffer (its descriptors stay valid),
+// after the work submitted before has finished with it.
+void uploadToBuffer(const Context& ctx, Commands& commands, const Buffer& dst, const void* data, VkDeviceSize bytes);
+
+template <typename T>
+void uploadToBuffer(const Context& ctx, Commands& commands, const Buffer& dst, std::span<const T> items) {
+    uploadToBuffer(ctx, commands, dst, items.data(), items.size_bytes());
+}
+
 // Copies a device buffer's first `bytes` back to the host.
 void downloadBuffer(const Context& ctx, Commands& commands, const Buffer& src, void* dst, VkDeviceSize bytes);
 

@@ -39,22 +39,51 @@ FinalFramePasses::FinalFramePasses(const gpu::Context& ctx, const Renderer& rend
       commands_(ctx) {
     viewerUniforms_ = gpu::Buffer(ctx, sizeof(shader::ViewerUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                   gpu::MemoryKind::HostVisible);
-    const auto* frame = static_cast<const shader::FrameUniforms*>(renderer.frameUniforms().mapped());
-    const shader::ViewerUniforms v = stillCameraUniforms(*frame, FinalDenoiseSettings{});
-    std::memcpy(viewerUniforms_.mapped(), &v, sizeof v);
-    gbuffer_ = gpu::Buffer(ctx, VkDeviceSize(width_) * height_ * sizeof(shader::GBufferTexel), kPixelUsage,
-                           gpu::MemoryKind::DeviceLocal);
+    gbuffer_ = pixelBuffer(sizeof(shader::GBufferTexel));
+    restart();
 }
 
 FinalFramePasses::~FinalFramePasses() = default;
 
+void FinalFramePasses::restart() {
+    const auto* frame = static_cast<const shader::FrameUniforms*>(renderer_.frameUniforms().mapped());
+    const shader::ViewerUniforms v = stillCameraUniforms(*frame, FinalDenoiseSettings{});
+    std::memcpy(viewerUniforms_.mapped(), &v, sizeof v);
+    gbufferDone_ = false;
+}
+
+gpu::Buffer FinalFramePasses::pixelBuffer(VkDeviceSize bytesPerPixel) const {
+    return gpu::Buffer(ctx_, VkDeviceSize(width_) * height_ * bytesPerPixel, kPixelUsage, gpu::MemoryKind::DeviceLocal);
+}
+
+void FinalFramePasses::makeDenoiser() {
+    if (atrous_) return;
+    historyIn_ = pixelBuffer(sizeof(shader::HistoryTexel));
+    current_ = pixelBuffer(sizeof(Vec4));
+    historyOut_ = pixelBuffer(sizeof(shader::HistoryTexel));
+    filterA_ = pixelBuffer(sizeof(Vec4));
+    filterB_ = pixelBuffer(sizeof(Vec4));
+    guide_ = pixelBuffer(PN_DENOISE_GUIDE_BYTES);
+    estimates_ = pixelBuffer(sizeof(Vec4));  // written, never read: there is no next pass
+    temporal_ = std::make_unique<TemporalPass>(
+        ctx_, TemporalBuffers{&renderer_.frameUniforms(), &viewerUniforms_, &current_, &gbuffer_, &gbuffer_, &historyIn_,
+                              &historyOut_, &filterA_, &guide_, &estimates_});
+    atrous_ = std::make_unique<DenoisePass>(ctx_, renderer_.frameUniforms(), viewerUniforms_, gbuffer_, guide_,
+                                            historyOut_, filterA_, filterB_);
+}
+
 void FinalFramePasses::runGBuffer() {
     if (gbufferDone_) return;
     const std::size_t n = std::size_t(width_) * height_;
-    GBufferPass pass(ctx_, renderer_.gpuScene(), renderer_.frameUniforms(), viewerUniforms_, gbuffer_,
-                     renderer_.kernelSpec().withOption(PN_OPTION_FRAME_STATS, false));
+    if (!gbufferPass_)
+        gbufferPass_ = std::make_unique<GBufferPass>(
+            ctx_, renderer_.gpuScene(), renderer_.frameUniforms(), viewerUniforms_, gbuffer_,
+            renderer_.kernelSpec().withOption(PN_OPTION_FRAME_STATS, false));
     auto trace = [&](int subpixel) {
-        commands_.run([&](VkCommandBuffer cmd) { pass.record(cmd, width_, height_, subpixel); });
+        commands_.run([&](VkCommandBuffer cmd) {
+            gpu::computeBarrier(cmd);  // the last frame's denoiser has done reading the G-buffer
+            gbufferPass_->record(cmd, width_, height_, subpixel);
+        });
         return gpu::downloadBuffer<shader::GBufferTexel>(ctx_, commands_, gbuffer_, n);
     };
     // The centre ray's surface, normal and depth guide the filter; the albedo is averaged over
@@ -82,7 +111,7 @@ void FinalFramePasses::runGBuffer() {
         texels[i].albedo = demodulation[i];
         texels[i].flags &= ~PN_GBUFFER_UNFILTERED;
     }
-    gbuffer_ = gpu::uploadStorageBuffer(ctx_, commands_, std::span<const shader::GBufferTexel>(texels));
+    gpu::uploadToBuffer(ctx_, commands_, gbuffer_, std::span<const shader::GBufferTexel>(texels));
     gbufferDone_ = true;
 }
 
@@ -119,24 +148,15 @@ ImageRgb FinalFramePasses::denoise(const PixelAccumulator& sums, const FinalDeno
         history[i] = shader::HistoryTexel{mean.pixels[i], float(taken), float(m1), float(m2), 0.0f, 0.0f};
         current[i] = Vec4{mean.pixels[i].x, mean.pixels[i].y, mean.pixels[i].z, float(m2)};
     }
-    gpu::Buffer historyIn = gpu::uploadStorageBuffer(ctx_, commands_, std::span<const shader::HistoryTexel>(history));
-    gpu::Buffer accumulation = gpu::uploadStorageBuffer(ctx_, commands_, std::span<const Vec4>(current));
-    auto pixelBuffer = [&](VkDeviceSize bytes) {
-        return gpu::Buffer(ctx_, VkDeviceSize(n) * bytes, kPixelUsage, gpu::MemoryKind::DeviceLocal);
-    };
-    gpu::Buffer historyOut = pixelBuffer(sizeof(shader::HistoryTexel));
-    gpu::Buffer filterA = pixelBuffer(sizeof(Vec4)), filterB = pixelBuffer(sizeof(Vec4));
-    gpu::Buffer guide = pixelBuffer(PN_DENOISE_GUIDE_BYTES);
-    gpu::Buffer estimates = pixelBuffer(sizeof(Vec4));  // written, never read: there is no next pass
-    TemporalPass temporal(ctx_, TemporalBuffers{&renderer_.frameUniforms(), &viewerUniforms_, &accumulation, &gbuffer_,
-                                                &gbuffer_, &historyIn, &historyOut, &filterA, &guide, &estimates});
-    DenoisePass atrous(ctx_, renderer_.frameUniforms(), viewerUniforms_, gbuffer_, guide, historyOut, filterA, filterB);
+    makeDenoiser();
+    gpu::uploadToBuffer(ctx_, commands_, historyIn_, std::span<const shader::HistoryTexel>(history));
+    gpu::uploadToBuffer(ctx_, commands_, current_, std::span<const Vec4>(current));
     const gpu::Buffer* result = nullptr;
     commands_.run([&](VkCommandBuffer cmd) {
         gpu::computeBarrier(cmd);
-        temporal.record(cmd, width_, height_);
+        temporal_->record(cmd, width_, height_);
         gpu::computeBarrier(cmd);
-        result = &atrous.record(cmd, width_, height_, settings.iterations);
+        result = &atrous_->record(cmd, width_, height_, settings.iterations);
     });
     const auto filtered = gpu::downloadBuffer<Vec4>(ctx_, commands_, *result, n);
     ImageRgb out{int(width_), int(height_)};

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "gpu/buffer.h"
@@ -40,24 +41,41 @@ struct FinalDenoiseSettings {
     float sigmaDepth = 1.0f;
 };
 
+class GBufferPass;
+class TemporalPass;
+class DenoisePass;
+
 class FinalFramePasses {
 public:
-    // Uses the renderer's scene, camera and image size; holds its own buffers.
+    // Uses the renderer's scene, camera and image size; holds its own buffers and passes, made on
+    // first use and kept for every frame the renderer renders (a video's frames: compiling the
+    // passes' pipelines anew each frame would cost more than the denoising).
     FinalFramePasses(const gpu::Context& ctx, const Renderer& renderer);
     ~FinalFramePasses();
 
+    // The renderer now shows another view or moved instances (Renderer::restart,
+    // setInstanceTransforms): the next guides() or denoise() traces the G-buffer again.
+    void restart();
     FrameGuides guides();
     // The denoised image of `sums` (their mean, filtered).
     ImageRgb denoise(const PixelAccumulator& sums, const FinalDenoiseSettings& settings = {});
 
 private:
     void runGBuffer();
+    void makeDenoiser();  // the buffers and passes denoise() needs, once
+    gpu::Buffer pixelBuffer(VkDeviceSize bytesPerPixel) const;
 
     const gpu::Context& ctx_;
     const Renderer& renderer_;
     std::uint32_t width_, height_;
     gpu::Commands commands_;
     gpu::Buffer viewerUniforms_, gbuffer_;  // after runGBuffer: centre texels, albedo for demodulation
+    // The render as temporal.comp's history and current frame, what it writes (the history, the
+    // filter's input, the guide, the roulette estimates nobody reads) and the a-trous scratch.
+    gpu::Buffer historyIn_, current_, historyOut_, filterA_, filterB_, guide_, estimates_;
+    std::unique_ptr<GBufferPass> gbufferPass_;
+    std::unique_ptr<TemporalPass> temporal_;
+    std::unique_ptr<DenoisePass> atrous_;
     std::vector<shader::GBufferTexel> centre_;
     std::vector<Vec3> albedo_;  // averaged over the pixel, 0 for misses (the AOV)
     bool gbufferDone_ = false;

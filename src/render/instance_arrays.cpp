@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 
 #include "bvh/triangle.h"
 #include "bvh/two_level.h"
 #include "core/error.h"
+#include "render/rest_tree.h"
+#include "render/walks.h"
 #include "scene/objects.h"
 
 namespace penumbra {
@@ -72,6 +75,7 @@ void appendInstanceLevels(const Scene& scene, SceneArrays& out, const bvh::Build
                                                   static_cast<std::uint32_t>(k)));
         out.instanceBounds.push_back(level.bounds);
     }
+    appendRestTree(out);
     out.bottomNodeCount = static_cast<std::uint32_t>(out.nodes.size());
     out.uniqueMeshes = static_cast<std::uint32_t>(std::count(built.begin(), built.end(), true));
     rebuildTopLevel(out);
@@ -84,6 +88,21 @@ void rebuildTopLevel(SceneArrays& arrays) {
     bvh::replaceTopLevel(arrays.nodes, arrays.bottomNodeCount, arrays.instances, arrays.instanceBounds,
                          arrays.topLevelScratch);
     arrays.topRoot = arrays.bottomNodeCount;
+    refreshTopLevelRecords(arrays);
+}
+
+bool moveInstances(SceneArrays& arrays, const Scene& scene) {
+    bool changed = false;
+    for (shader::Instance& i : arrays.instances) {
+        if (i.id == PN_NO_HIT || i.id >= scene.instances.size()) continue;  // the world
+        const shader::Instance moved =
+            bvh::makeInstance(scene.instances[i.id].transform, i.rootNode, i.firstPrimitive, i.primitiveCount, i.id);
+        if (std::memcmp(&moved, &i, sizeof(moved)) == 0) continue;
+        i = moved;
+        changed = true;
+    }
+    if (changed) rebuildTopLevel(arrays);  // the same node count: one leaf per instance
+    return changed;
 }
 
 void setInstanceTransform(SceneArrays& arrays, std::uint32_t index, const Affine& objectToWorld) {

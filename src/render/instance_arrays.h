@@ -18,8 +18,15 @@ namespace penumbra {
 // alone, exactly as before).
 void appendInstanceLevels(const Scene& scene, SceneArrays& out, const bvh::BuildOptions& options);
 
-// Rebuilds the top level from the instances' current transforms (what a moved instance needs).
+// Rebuilds the top level from the instances' current transforms (what a moved instance needs),
+// and the walks' records of it (render/walks.h refreshTopLevelRecords).
 void rebuildTopLevel(SceneArrays& arrays);
+
+// Moves the instances to where `scene` now places them (the scene the arrays were built from, its
+// instances moved: an animation, a Doom door) and, if any moved, rebuilds the top level; no bottom
+// level is rebuilt. Returns whether any moved. Instances of emissive prototypes were baked into
+// the world where they stood (scene/instances.h bakeEmissiveInstances) and do not move here.
+bool moveInstances(SceneArrays& arrays, const Scene& scene);
 
 // Moves instance `index` of arrays.instances (0 is the world when it has geometry; see
 // shader::Instance::id for the scene's number) and rebuilds the top level.

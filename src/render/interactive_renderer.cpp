@@ -5,16 +5,16 @@
 #include <span>
 #include <utility>
 
-#include "bvh/child_pairs.h"
 #include "bvh/depth_boxes.h"
-#include "bvh/two_level.h"
 #include "core/error.h"
 #include "gpu/check.h"
 #include "render/frame_uniforms.h"
 #include "render/instance_arrays.h"
+#include "render/instance_upload.h"
 #include "render/kernel_features.h"
 #include "render/passes/gbuffer_pass.h"
 #include "render/ray_counters.h"
+#include "render/rest_tree.h"
 #include "shared/animation.h"
 
 namespace penumbra {
@@ -116,9 +116,8 @@ void InteractiveRenderer::loadScene(const Scene& scene, SceneArrays arrays, bool
                                scene.environment.rotationDegrees};
     gpuScene_ = std::make_unique<GpuScene>(ctx_, commands_, arrays_);
     instancesPrev_ = gpu::uploadStorageBuffer<shader::Instance>(ctx_, commands_, arrays_.instances);
-    const std::size_t topNodes = arrays_.nodes.size() - std::min<std::size_t>(arrays_.bottomNodeCount, arrays_.nodes.size());
-    instanceStaging_ = gpu::Buffer(ctx_, 2 * arrays_.instances.size() * sizeof(shader::Instance) +
-                                             topNodes * sizeof(shader::BvhPair),
+    // The previous frame's instances (for instancesPrev_), then what a move uploads.
+    instanceStaging_ = gpu::Buffer(ctx_, arrays_.instances.size() * sizeof(shader::Instance) + instanceUploadBytes(arrays_),
                                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryKind::HostVisible);
     lastFrameInstances_ = arrays_.instances;
     prevMatchesCurrent_ = true;
@@ -162,18 +161,7 @@ void InteractiveRenderer::setUnsampledEmission(std::uint32_t index, Vec3 emissio
     historyValid_ = false;
 }
 
-void InteractiveRenderer::setInstanceTransforms(const Scene& scene) {
-    bool changed = false;
-    for (shader::Instance& i : arrays_.instances) {
-        if (i.id == PN_NO_HIT || i.id >= scene.instances.size()) continue;  // the world, or baked
-        const shader::Instance moved =
-            bvh::makeInstance(scene.instances[i.id].transform, i.rootNode, i.firstPrimitive, i.primitiveCount, i.id);
-        if (std::memcmp(&moved, &i, sizeof(moved)) == 0) continue;
-        i = moved;
-        changed = true;
-    }
-    if (changed) rebuildTopLevel(arrays_);  // the same node count: one leaf per instance
-}
+void InteractiveRenderer::setInstanceTransforms(const Scene& scene) { moveInstances(arrays_, scene); }
 
 void InteractiveRenderer::uploadInstances(VkCommandBuffer cmd, bool moved) {
     const std::vector<shader::Instance>& now = arrays_.instances;
@@ -182,23 +170,11 @@ void InteractiveRenderer::uploadInstances(VkCommandBuffer cmd, bool moved) {
     const bool objectMotion = moved && objectMotionVectors_ && historyValid_;
     const std::vector<shader::Instance>& prev = objectMotion ? lastFrameInstances_ : now;
     const VkDeviceSize instanceBytes = now.size() * sizeof(shader::Instance);
-    auto* staging = static_cast<std::uint8_t*>(instanceStaging_.mapped());
-    std::memcpy(staging, prev.data(), instanceBytes);
+    std::memcpy(instanceStaging_.mapped(), prev.data(), instanceBytes);
     const VkBufferCopy toPrev{0, 0, instanceBytes};
     vkCmdCopyBuffer(cmd, instanceStaging_.get(), instancesPrev_.get(), 1, &toPrev);
     if (moved) {
-        const std::size_t topNodes = arrays_.nodes.size() - arrays_.bottomNodeCount;
-        const VkDeviceSize topOffset = VkDeviceSize(arrays_.bottomNodeCount) * sizeof(shader::BvhPair);
-        const VkDeviceSize topBytes = topNodes * sizeof(shader::BvhPair);
-        PN_CHECK(2 * instanceBytes + topBytes <= instanceStaging_.size() && topOffset + topBytes <= gpuScene_->nodes.size());
-        std::memcpy(staging + instanceBytes, now.data(), instanceBytes);
-        // The walk's records of the rebuilt top level (its children lie in it).
-        bvh::writeChildPairs(arrays_.nodes, arrays_.bottomNodeCount,
-                             std::span(reinterpret_cast<shader::BvhPair*>(staging + 2 * instanceBytes), topNodes));
-        VkBufferCopy toInstances{instanceBytes, 0, instanceBytes};
-        vkCmdCopyBuffer(cmd, instanceStaging_.get(), gpuScene_->instances.get(), 1, &toInstances);
-        VkBufferCopy toNodes{2 * instanceBytes, topOffset, topBytes};
-        if (topBytes > 0) vkCmdCopyBuffer(cmd, instanceStaging_.get(), gpuScene_->nodes.get(), 1, &toNodes);
+        recordInstanceUpload(cmd, arrays_, *gpuScene_, instanceStaging_, instanceBytes);
         lastFrameInstances_ = now;
         boxesDepth_.reset();  // the overlay's boxes include the top level
     }
@@ -296,7 +272,7 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     PN_CHECK(width_ > 0 && height_ > 0);
     trace_->reserve(width_, height_, s.samplesPerFrame);  // before this frame records anything
     startHistory(s);
-    const shader::FrameUniforms f = frameUniforms(camera, s);
+    shader::FrameUniforms f = frameUniforms(camera, s);
     // An animated texture that turned to its next frame changed the image: blend history as for a
     // moving camera. Between its ticks the image holds still and the mean keeps converging.
     const bool animating = previousFrame_ && animationTicked(arrays_.textures, previousFrame_->time, f.time);
@@ -304,6 +280,9 @@ void InteractiveRenderer::record(VkCommandBuffer cmd, const Camera& camera, cons
     const bool instancesMoved =
         !arrays_.instances.empty() && std::memcmp(lastFrameInstances_.data(), arrays_.instances.data(),
                                                   arrays_.instances.size() * sizeof(shader::Instance)) != 0;
+    // At rest since the frame before too: the rest tree's flat walk (render/rest_tree.h). The frame
+    // an instance comes to rest still walks two levels, so its last step has its motion vectors.
+    if (!instancesMoved && atRest(arrays_)) walkRestTree(f, arrays_);
     const bool moved = previousFrame_ && (!sameCamera(*previousFrame_, f) || animating || instancesMoved);
     if (s.preview && moved) return recordPreview(cmd, camera, s, f, instancesMoved);
     // A still view whose G-buffers both hold it reuses them (recordGBuffer): the temporal pass is

@@ -73,15 +73,18 @@ void addListedBoxes(SceneArrays& a, const std::vector<Aabb>& leafOf, std::uint32
     }
 }
 
-// Two levels: an identity instance (the world's own geometry, a mesh left where it was modelled)
-// is split by object like a flat scene; a moved one is one box, its top-level leaf's.
+// Two levels: the world's own geometry (the identity instance of no scene instance) is split by
+// object like a flat scene; every scene instance is one box, its top-level leaf's, walked in its
+// space (exact for an identity placement too). Deciding by the world rather than by the identity
+// keeps the number of boxes and slots when an instance moves from or to where it was modelled
+// (a Doom door at rest), so a move overwrites the boxes in place.
 void instanceObjectBoxes(SceneArrays& a, const std::vector<Aabb>& leafOf) {
     std::vector<Aabb> worldBox(a.instances.size());
     for (std::size_t n = a.topRoot; n < a.nodes.size(); ++n)
         if (a.nodes[n].triCount > 0) worldBox.at(a.nodes[n].firstOrRight) = nodeBox(a.nodes[n]);
     for (std::uint32_t k = 0; k < a.instances.size(); ++k) {
         const shader::Instance& inst = a.instances[k];
-        if (inst.rootNode & PN_INSTANCE_IDENTITY)
+        if (inst.id == PN_NO_HIT)
             addListedBoxes(a, leafOf, inst.firstPrimitive, inst.firstPrimitive + inst.primitiveCount, k);
         else
             a.objectBoxes.push_back(toObjectBox(worldBox[k], inst.firstPrimitive, inst.primitiveCount, k, false));

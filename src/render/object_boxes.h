@@ -1,8 +1,8 @@
 // The boxes of --accel objects (shared/accel_layouts.h ObjectBox, walked by
 // shaders/lib/object_boxes.glsl): a flat scene gets one box per scene object (a mesh, a sphere;
 // primitives of no object, such as light spheres and sprites, share one more box); a two-level
-// scene splits its identity instances (the world's own geometry) the same way and gives each
-// moved instance one box.
+// scene splits the world's own geometry (its identity instance) the same way and gives each scene
+// instance one box.
 #pragma once
 
 #include "render/scene_arrays.h"

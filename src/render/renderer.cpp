@@ -6,8 +6,11 @@
 
 #include "core/error.h"
 #include "render/frame_uniforms.h"
+#include "render/instance_arrays.h"
+#include "render/instance_upload.h"
 #include "render/kernel_features.h"
 #include "render/ray_counters.h"
+#include "render/rest_tree.h"
 
 namespace penumbra {
 
@@ -19,8 +22,7 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
     environment_ = Environment{std::nullopt, std::nullopt, scene.environment.intensity, scene.environment.rotationDegrees};
     frameUniforms_ = gpu::Buffer(ctx, sizeof(shader::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                  gpu::MemoryKind::HostVisible);
-    const shader::FrameUniforms frame =
-        makeSceneFrameUniforms(scene.camera, background_, environment_, settings_, *gpuScene_);
+    const shader::FrameUniforms frame = sceneUniforms(scene.camera);
     std::memcpy(frameUniforms_.mapped(), &frame, sizeof(frame));
 
     const VkDeviceSize pixels = VkDeviceSize(settings_.width) * settings_.height;
@@ -35,6 +37,12 @@ Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSett
                               gpu::MemoryKind::DeviceLocal);
     spec_ = penumbra::kernelSpec(arrays_, settings_.cullBackfaces);
     makeTracePass();
+}
+
+shader::FrameUniforms Renderer::sceneUniforms(const Camera& camera) const {
+    shader::FrameUniforms f = makeSceneFrameUniforms(camera, background_, environment_, settings_, *gpuScene_);
+    if (atRest(arrays_)) walkRestTree(f, arrays_);  // every instance where it was modelled
+    return f;
 }
 
 void Renderer::makeTracePass() {
@@ -80,6 +88,18 @@ void Renderer::setMaterial(std::uint32_t index, const Material& material) {
         spec_ = spec;
         makeTracePass();
     }
+}
+
+void Renderer::setInstanceTransforms(const Scene& scene) {
+    if (!moveInstances(arrays_, scene)) return;
+    if (instanceStaging_.get() == VK_NULL_HANDLE)
+        instanceStaging_ = gpu::Buffer(ctx_, instanceUploadBytes(arrays_), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                       gpu::MemoryKind::HostVisible);
+    // renderPasses starts with a barrier that makes transfer writes visible to the trace.
+    commands_.run([&](VkCommandBuffer cmd) {
+        gpu::computeBarrier(cmd);  // passes still reading the top level finish first
+        recordInstanceUpload(cmd, arrays_, *gpuScene_, instanceStaging_, 0);
+    });
 }
 
 double Renderer::renderPasses(std::uint32_t passes, bool countRays, bool masked) {
@@ -128,7 +148,7 @@ void Renderer::render(const std::function<void(std::uint32_t)>& onProgress) {
 }
 
 void Renderer::restart(const Camera& camera) {
-    const shader::FrameUniforms frame = makeSceneFrameUniforms(camera, background_, environment_, settings_, *gpuScene_);
+    const shader::FrameUniforms frame = sceneUniforms(camera);
     std::memcpy(frameUniforms_.mapped(), &frame, sizeof(frame));
     commands_.run([&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, accumulation_.get(), 0, VK_WHOLE_SIZE, 0); });
     passesDone_ = 0;
@@ -140,27 +160,9 @@ void Renderer::restart(const Camera& camera, float time) {
     restart(camera);
 }
 
-namespace {
-
-// Copies host data into an existing device buffer through a staging buffer.
-void copyToBuffer(const gpu::Context& ctx, gpu::Commands& commands, const gpu::Buffer& dst, const void* data,
-                  VkDeviceSize bytes) {
-    PN_CHECK(bytes <= dst.size());
-    if (bytes == 0) return;
-    gpu::Buffer staging(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryKind::HostVisible);
-    std::memcpy(staging.mapped(), data, bytes);
-    commands.run([&](VkCommandBuffer cmd) {
-        gpu::computeBarrier(cmd);  // passes still reading the buffer finish first
-        VkBufferCopy region{0, 0, bytes};
-        vkCmdCopyBuffer(cmd, staging.get(), dst.get(), 1, &region);
-    });
-}
-
-}  // namespace
-
 void Renderer::setActiveMask(std::span<const std::uint32_t> mask) {
     PN_CHECK(mask.size() == std::size_t(settings_.width) * settings_.height);
-    copyToBuffer(ctx_, commands_, activeMask_, mask.data(), mask.size_bytes());
+    gpu::uploadToBuffer(ctx_, commands_, activeMask_, mask.data(), mask.size_bytes());
 }
 
 std::vector<Vec4> Renderer::takeAccumulation() {
@@ -174,7 +176,7 @@ std::vector<Vec4> Renderer::takeAccumulation() {
 
 void Renderer::loadAccumulation(std::span<const Vec4> sums) {
     PN_CHECK(sums.size() == std::size_t(settings_.width) * settings_.height);
-    copyToBuffer(ctx_, commands_, accumulation_, sums.data(), sums.size_bytes());
+    gpu::uploadToBuffer(ctx_, commands_, accumulation_, sums.data(), sums.size_bytes());
 }
 
 void Renderer::setPassesDone(std::uint32_t passes) {

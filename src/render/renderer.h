@@ -57,6 +57,13 @@ public:
     // updated in place; kernels that lack what it now needs are remade. Its emission must stay
     // as it was (the light tables weigh emitters by power). Call restart() after.
     void setMaterial(std::uint32_t index, const Material& material);
+    // Moves the instances to where `scene` (the scene this renderer was made from, its instances
+    // moved: a Doom door, an animation) now places them: the top level is rebuilt on the CPU and
+    // copied over the GPU's, as InteractiveRenderer::setInstanceTransforms does, instead of a new
+    // Renderer. Instances of emissive prototypes stay where they were baked (moveInstances). The
+    // light grid keeps the bounds the scene had when built: points a move takes beyond them use
+    // the light tree's own weights (unbiased; a new renderer would fit them). Call restart() after.
+    void setInstanceTransforms(const Scene& scene);
     std::uint32_t passesDone() const { return passesDone_; }
     void setPassesDone(std::uint32_t passes);
 
@@ -77,6 +84,8 @@ public:
 
 private:
     void makeTracePass();  // with spec_
+    // The frame's uniforms for this camera; the rest tree's flat walk while every instance rests.
+    shader::FrameUniforms sceneUniforms(const Camera& camera) const;
 
     const gpu::Context& ctx_;
     RenderSettings settings_;
@@ -90,6 +99,7 @@ private:
     gpu::Buffer counters_;
     gpu::Buffer activeMask_;  // uint per pixel (adaptive sampling)
     KernelSpec spec_;
+    gpu::Buffer instanceStaging_;  // what a move uploads (render/instance_upload.h); made on the first move
     std::unique_ptr<TracePass> trace_;
     gpu::GpuTimer timer_;
     std::uint32_t passesDone_ = 0;

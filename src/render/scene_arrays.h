@@ -59,6 +59,9 @@ struct SceneArrays {
     std::vector<shader::Instance> instances;
     std::vector<Aabb> instanceBounds;  // host only: each instance's bottom-level bounds, object space
     std::uint32_t bottomNodeCount = 0;  // nodes before the top level
+    // The rest tree's root (render/rest_tree.h), among the nodes before the top level; PN_NO_HIT
+    // for none. Frames walk it alone while every instance is at rest.
+    std::uint32_t restRoot = PN_NO_HIT;
     std::uint32_t topRoot = 0;
     std::uint32_t uniqueMeshes = 0;     // bottom levels built for prototypes
     bvh::TopLevelScratch topLevelScratch;  // host only: reused by every top-level rebuild

@@ -31,6 +31,8 @@ struct RenderTuning {
     bool lightGrid = true;              // PENUMBRA_LIGHT_GRID=0: no grid, the plain light-tree walk
     LightGridOptions lightGridOptions;  // PENUMBRA_LIGHT_GRID_LEVELS, _MB, _DRAW
     bool forceInstances = false;  // PENUMBRA_FORCE_INSTANCES: the world's meshes as one instance
+    // PENUMBRA_REST_TREE=0: a two-level scene at rest walks its two levels (render/rest_tree.h).
+    bool restTree = true;
 };
 
 // The process's tuning (the defaults until set). Set it before renderers are made: each reads it

@@ -73,11 +73,20 @@ void buildWalkRecords(SceneArrays& arrays, Accel accel) {
         roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
         if (arrays.instances.empty()) roots = {0u};
         else roots.push_back(arrays.topRoot);
+        if (arrays.restRoot != PN_NO_HIT) roots.push_back(arrays.restRoot);
         arrays.stacklessNodes = bvh::threadNodes(arrays.nodes, roots);
     }
     if (accel == Accel::Objects) buildObjectBoxes(arrays);
     const bool wideFallsBack = accel == Accel::Wide && arrays.wideNodes.empty();
     arrays.walk = wideFallsBack ? PN_ACCEL_BVH : walkInfo(accel).shaderId;
+}
+
+void refreshTopLevelRecords(SceneArrays& arrays) {
+    if (arrays.instances.empty()) return;
+    // Only the top level's escapes change: the bottom levels' nodes are untouched.
+    if (!arrays.stacklessNodes.empty()) bvh::threadTree(arrays.nodes, arrays.topRoot, arrays.stacklessNodes);
+    // A moved instance's box is its top-level leaf's; rebuilt whole (a comparison walk: simple wins).
+    if (!arrays.objectBoxes.empty()) buildObjectBoxes(arrays);
 }
 
 }  // namespace penumbra

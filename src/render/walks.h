@@ -33,5 +33,9 @@ std::string accelHelp();
 // kernels are specialised for (wide without a wide tree, as in two-level scenes, walks the
 // binary one). Throws Error when the tree does not fit the walk's records.
 void buildWalkRecords(SceneArrays& arrays, Accel accel);
+// After a rebuild of the top level in place (instances moved, render/instance_arrays.h): the
+// records buildWalkRecords made of it, made again. Their sizes stay the same, so the GPU's copies
+// can be overwritten (render/instance_upload.h).
+void refreshTopLevelRecords(SceneArrays& arrays);
 
 }  // namespace penumbra

@@ -39,6 +39,9 @@ public:
     ScopedTuning& genericKernel(bool on) {
         return edit([&](RenderTuning& t) { t.genericKernel = on; });
     }
+    ScopedTuning& restTree(bool on) {
+        return edit([&](RenderTuning& t) { t.restTree = on; });
+    }
 
 private:
     template <typename Edit>

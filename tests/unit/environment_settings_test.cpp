@@ -19,7 +19,7 @@ constexpr const char* kVariables[] = {
     "PENUMBRA_TRACE_KERNEL",   "PENUMBRA_WAVE_TAIL_PATHS", "PENUMBRA_WAVE_STAGE_TIMES",
     "PENUMBRA_GENERIC_KERNEL", "PENUMBRA_LIGHT_GRID",      "PENUMBRA_LIGHT_GRID_LEVELS",
     "PENUMBRA_LIGHT_GRID_MB",  "PENUMBRA_LIGHT_GRID_DRAW", "PENUMBRA_FORCE_INSTANCES",
-    "PENUMBRA_CACHE_DIR",      "XDG_CACHE_HOME",           "HOME"};
+    "PENUMBRA_REST_TREE",      "PENUMBRA_CACHE_DIR",      "XDG_CACHE_HOME",           "HOME"};
 
 class EnvironmentSettingsTest : public ::testing::Test {
 protected:
@@ -50,6 +50,7 @@ TEST_F(EnvironmentSettingsTest, NothingSetGivesTheShippedDefaults) {
     EXPECT_EQ(t.lightGridOptions.maxWords, shipped.lightGridOptions.maxWords);
     EXPECT_TRUE(t.lightGridOptions.drawInClusters);
     EXPECT_FALSE(t.forceInstances);
+    EXPECT_TRUE(t.restTree);
     EXPECT_TRUE(bvhCacheDirectoryFromEnvironment().empty());
 }
 
@@ -63,6 +64,7 @@ TEST_F(EnvironmentSettingsTest, EachVariableSetsItsSetting) {
     set("PENUMBRA_LIGHT_GRID_MB", "2");
     set("PENUMBRA_LIGHT_GRID_DRAW", "0");
     set("PENUMBRA_FORCE_INSTANCES", "1");
+    set("PENUMBRA_REST_TREE", "0");
     const RenderTuning t = renderTuningFromEnvironment();
     EXPECT_EQ(t.traceKernel, TraceKernel::Megakernel);
     EXPECT_EQ(t.waveTailPaths, 0u);
@@ -73,6 +75,7 @@ TEST_F(EnvironmentSettingsTest, EachVariableSetsItsSetting) {
     EXPECT_EQ(t.lightGridOptions.maxWords, 2u << 18);  // 2 MiB of 4-byte words
     EXPECT_FALSE(t.lightGridOptions.drawInClusters);
     EXPECT_TRUE(t.forceInstances);
+    EXPECT_FALSE(t.restTree);
     set("PENUMBRA_TRACE_KERNEL", "wavefront");
     EXPECT_EQ(renderTuningFromEnvironment().traceKernel, TraceKernel::Wavefront);
 }

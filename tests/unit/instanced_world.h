@@ -49,6 +49,44 @@ inline Scene instancedRoom(int instances = 5, int rings = 6, int segments = 9) {
     return s;
 }
 
+// A room whose movers lie where the map put them, like a Doom map's doors and lifts at rest: a
+// door (a slab across the doorway of a wall) and a lift (a raised platform), each a prototype
+// modelled in world space and placed once by the identity. doorRaised(up): a placement raised by
+// `up` (the identity for 0, as a door back at rest).
+inline Affine doorRaised(float up) { return up == 0.0f ? Affine{} : Affine::translation({0.0f, up, 0.0f}); }
+
+inline Scene moversAtRest() {
+    Scene s;
+    s.name = "movers at rest";
+    const std::uint32_t floor = addMaterial(s, "floor", Vec3{0.6f});
+    const std::uint32_t wall = addMaterial(s, "wall", {0.7f, 0.2f, 0.15f});
+    const std::uint32_t door = addMaterial(s, "door", {0.3f, 0.5f, 0.8f});
+    const std::uint32_t panel = addMaterial(s, "panel", Vec3{0}, {5.0f, 5.0f, 4.5f});
+    addQuadMesh(s, "floor", floor, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2});
+    addQuadMesh(s, "wall left", wall, {-2, 0, -1}, {-0.5f, 0, -1}, {-0.5f, 2.5f, -1}, {-2, 2.5f, -1});
+    addQuadMesh(s, "wall right", wall, {0.5f, 0, -1}, {2, 0, -1}, {2, 2.5f, -1}, {0.5f, 2.5f, -1});
+    addQuadMesh(s, "panel", panel, {-0.9f, 2.2f, -0.3f}, {-0.3f, 2.2f, -0.3f}, {-0.3f, 2.2f, 0.3f}, {-0.9f, 2.2f, 0.3f});
+    Mesh slab;
+    slab.name = "door";
+    slab.material = door;
+    addQuad(slab, {-0.5f, 0, -0.95f}, {0.5f, 0, -0.95f}, {0.5f, 1.8f, -0.95f}, {-0.5f, 1.8f, -0.95f});
+    addQuad(slab, {0.5f, 0, -1.05f}, {-0.5f, 0, -1.05f}, {-0.5f, 1.8f, -1.05f}, {0.5f, 1.8f, -1.05f});
+    Mesh lift;
+    lift.name = "lift";
+    lift.material = floor;
+    addQuad(lift, {0.8f, 0.3f, 0.2f}, {0.8f, 0.3f, 1.2f}, {1.8f, 0.3f, 1.2f}, {1.8f, 0.3f, 0.2f});
+    addQuad(lift, {0.8f, 0.0f, 1.2f}, {1.8f, 0.0f, 1.2f}, {1.8f, 0.3f, 1.2f}, {0.8f, 0.3f, 1.2f});
+    s.prototypes.push_back({"door", {slab}});
+    s.prototypes.push_back({"lift", {lift}});
+    s.instances.push_back({0, Affine{}});
+    s.instances.push_back({1, Affine{}});
+    s.background = Vec3{0.15f};
+    s.camera.position = {0.4f, 1.2f, 3.6f};
+    s.camera.lookAt = {-0.1f, 0.5f, 0.0f};
+    s.camera.fovYDegrees = 50.0f;
+    return s;
+}
+
 // The same world with every instance baked into world meshes (what duplicating the mesh gives).
 inline Scene baked(Scene s) {
     bakeAllInstances(s);
