@@ -1,15 +1,24 @@
 #version 460
-// GPU BVH build, step 5: boxes, SAH costs and the collapse into leaves, bottom-up (Karras 2012,
-// section 4.3): each leaf's invocation climbs towards the root; at every interior node the first
-// child to arrive stops and the second, which then knows both children are done, computes the
-// node. Costs are the SAH's times the node's area: a subtree becomes one leaf when it holds at
-// most maxLeaf primitives and testing them all costs no more than its best split.
+// GPU BVH build, step 6: boxes, SAH costs and the collapse into leaves, bottom-up, one tree level
+// per dispatch: an interior node finishes in the first pass after both its children did. (Karras
+// 2012 climbs from every leaf with an atomic counter per node, the second child to arrive going
+// on; on lavapipe the climbing lanes went astray, so the levels are passes here. A node is only
+// read once its pass is over, so no atomics or memory model subtleties are needed; the root is
+// done after as many passes as the tree is deep.) Costs are the SAH's times the node's area: a
+// subtree becomes one leaf when it holds at most maxLeaf primitives and testing them all costs no
+// more than its best split.
 #extension GL_GOOGLE_include_directive : require
 
 #include "lib/lbvh.glsl"
 
-void finishInterior(uint i) {
+// Finished in an earlier pass (one finished in this pass has donePass = pass + 1).
+bool finishedBefore(uint node) { return nodes[node].donePass != 0u && nodes[node].donePass <= push.pass; }
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i + 1u >= push.count || nodes[i].donePass != 0u) return;
     uint l = nodes[i].left, r = nodes[i].right;
+    if (!finishedBefore(l) || !finishedBefore(r)) return;
     vec3 lo = min(nodes[l].boundsMin, nodes[r].boundsMin), hi = max(nodes[l].boundsMax, nodes[r].boundsMax);
     float area = pnHalfArea(lo, hi);
     uint leaves = nodes[i].leaves;
@@ -21,28 +30,5 @@ void finishInterior(uint i) {
     nodes[i].cost = collapse ? leafCost : splitCost;
     nodes[i].emitNodes = collapse ? 1u : 1u + nodes[l].emitNodes + nodes[r].emitNodes;
     nodes[i].collapsed = collapse ? 1u : 0u;
-}
-
-void main() {
-    uint j = gl_GlobalInvocationID.x, n = push.count;
-    if (j >= n) return;
-    uint leaf = n - 1u + j;
-    BvhNode box = boxes[valuesA[j]];
-    nodes[leaf].boundsMin = box.boundsMin;
-    nodes[leaf].boundsMax = box.boundsMax;
-    nodes[leaf].left = PN_LBVH_NONE;
-    nodes[leaf].right = PN_LBVH_NONE;
-    nodes[leaf].first = j;
-    nodes[leaf].leaves = 1u;
-    nodes[leaf].emitNodes = 1u;
-    nodes[leaf].cost = pnHalfArea(box.boundsMin, box.boundsMax) * push.intersectCost;
-    nodes[leaf].collapsed = 1u;
-    uint node = nodes[leaf].parent;
-    while (node != PN_LBVH_NONE) {
-        memoryBarrierBuffer();  // this child's writes before the arrival that publishes them
-        if (atomicAdd(arrivals[node], 1u) == 0u) return;  // the sibling is not done: it will go on
-        memoryBarrierBuffer();
-        finishInterior(node);
-        node = nodes[node].parent;
-    }
+    nodes[i].donePass = push.pass + 1u;
 }

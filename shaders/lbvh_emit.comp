@@ -1,5 +1,5 @@
 #version 460
-// GPU BVH build, step 6: the depth-first BvhNode array the walks read (bvh/builder.h), every node
+// GPU BVH build, step 7: the depth-first BvhNode array the walks read (bvh/builder.h), every node
 // at once. A node's place is known from its path: going to a left child adds 1 (the child follows
 // its parent), to a right child 1 plus the nodes of its left sibling's subtree. Nodes inside a
 // collapsed subtree are not written; a collapsed node is a leaf over its sorted range.
@@ -16,7 +16,9 @@ void main() {
         sEmitted = 0u;
     }
     barrier();
-    if (push.count >= 2u && k < 2u * push.count - 1u) {
+    // An unfinished root: the tree is deeper than the bounds passes (and the walks) allow.
+    if (k == 0u && nodes[0].donePass == 0u) atomicMax(state.maxDepth, 0xffffu);
+    if (push.count >= 2u && k < 2u * push.count - 1u && nodes[0].donePass != 0u) {
         uint place = 0u, depth = 1u;
         bool hidden = false;
         for (uint c = k, p = nodes[k].parent; p != PN_LBVH_NONE; c = p, p = nodes[p].parent) {

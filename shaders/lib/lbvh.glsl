@@ -12,9 +12,7 @@ layout(std430, set = 0, binding = PN_LBVH_BIND_VALUES_A) buffer ValuesA { uint v
 layout(std430, set = 0, binding = PN_LBVH_BIND_KEYS_B) buffer KeysB { uint keysB[]; };
 layout(std430, set = 0, binding = PN_LBVH_BIND_VALUES_B) buffer ValuesB { uint valuesB[]; };
 layout(std430, set = 0, binding = PN_LBVH_BIND_COUNTS) buffer Counts { uint counts[]; };
-// coherent: the bottom-up pass reads boxes another invocation wrote moments before.
-layout(std430, set = 0, binding = PN_LBVH_BIND_NODES) coherent buffer Nodes { LbvhNode nodes[]; };
-layout(std430, set = 0, binding = PN_LBVH_BIND_ARRIVALS) coherent buffer Arrivals { uint arrivals[]; };
+layout(std430, set = 0, binding = PN_LBVH_BIND_NODES) buffer Nodes { LbvhNode nodes[]; };
 layout(std430, set = 0, binding = PN_LBVH_BIND_OUTPUT) writeonly buffer Output { BvhNode outNodes[]; };
 layout(push_constant) uniform PushBlock { LbvhPush push; };
 

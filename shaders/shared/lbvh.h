@@ -1,5 +1,5 @@
 // The GPU BVH build's records (shaders/lbvh_*.comp, render/gpu_bvh_build.cpp): Morton codes, a
-// radix sort, Karras 2012's hierarchy emitted in parallel, bounds bottom-up, then the depth-first
+// radix sort, Karras 2012's hierarchy emitted in parallel, bounds bottom-up a level per pass, then the depth-first
 // BvhNode array every walk reads. Valid GLSL and C++; sizes and offsets are checked beside each
 // struct.
 #ifndef PENUMBRA_SHADER_LBVH_H
@@ -18,6 +18,9 @@ namespace penumbra::shader {
 #define PN_LBVH_RADIX_PASSES 8   // 32 bits of key (the codes use 30); even, so the keys end where they began
 #define PN_LBVH_SCAN_GROUP 1024  // the one group that scans the digit counts
 #define PN_LBVH_MAX_LEAF 4       // primitives a collapsed leaf may hold (bvh::BuildOptions' default)
+// Bounds passes, one tree level each: a tree the walks may take (PN_BVH_MAX_DEPTH levels) has its
+// root done by the last; a deeper one is left unfinished, which the emit pass reports.
+#define PN_LBVH_BOUNDS_PASSES PN_BVH_MAX_DEPTH
 
 // ---- binding indices (one descriptor set; each kernel declares the ones it uses) ----
 #define PN_LBVH_BIND_BOXES 0     // BvhNode per primitive: its sanitized box (count unused), input order
@@ -28,8 +31,7 @@ namespace penumbra::shader {
 #define PN_LBVH_BIND_VALUES_B 5
 #define PN_LBVH_BIND_COUNTS 6    // uint per (digit, block), digit-major: counts, then their exclusive sums
 #define PN_LBVH_BIND_NODES 7     // LbvhNode per node: n - 1 interior (root 0), then n leaves
-#define PN_LBVH_BIND_ARRIVALS 8  // uint per interior node: children that finished (the bottom-up pass)
-#define PN_LBVH_BIND_OUTPUT 9    // BvhNode per emitted node, depth-first (bvh/builder.h's layout)
+#define PN_LBVH_BIND_OUTPUT 8    // BvhNode per emitted node, depth-first (bvh/builder.h's layout)
 
 // One push constant block for every kernel; fields a kernel does not use are ignored.
 PN_STRUCT(LbvhPush) {
@@ -40,7 +42,7 @@ PN_STRUCT(LbvhPush) {
     float traversalCost;  // Ct and Ci: the SAH weights the collapse compares (bvh::BuildOptions)
     float intersectCost;
     uint maxLeaf;     // at most PN_LBVH_MAX_LEAF
-    uint pad;
+    uint pass;        // the bounds pass (1, 2, ...; lbvh_bounds.comp)
 };
 #ifdef __cplusplus
 static_assert(sizeof(LbvhPush) == 32 && offsetof(LbvhPush, traversalCost) == 16 && offsetof(LbvhPush, maxLeaf) == 24);
@@ -71,11 +73,12 @@ PN_STRUCT(LbvhNode) {
     uint emitNodes;   //  4: nodes its subtree takes in the output (1 when collapsed into a leaf)
     float cost;       //  4: the subtree's SAH cost times its root area (the cheaper of leaf and split)
     uint collapsed;   //  4: 1 when the subtree becomes one leaf of `leaves` primitives
-    uint pad0, pad1;  //  8
+    uint donePass;    //  4: the bounds pass that finished it plus 1 (leaves 1; 0: not yet)
+    uint pad;         //  4
 };
 #ifdef __cplusplus
 static_assert(sizeof(LbvhNode) == 64 && offsetof(LbvhNode, left) == 28 && offsetof(LbvhNode, cost) == 48 &&
-              offsetof(LbvhNode, collapsed) == 52);
+              offsetof(LbvhNode, collapsed) == 52 && offsetof(LbvhNode, donePass) == 56);
 #endif
 
 #define PN_LBVH_NONE 0xffffffffu

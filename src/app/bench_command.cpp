@@ -19,6 +19,7 @@ struct BenchArgs {
     std::string map;
     std::string device;
     std::string accel = "bvh";
+    BvhBuild bvhBuild = BvhBuild::Cpu;
     bool cullBackfaces = false;
     std::uint32_t width = 1920, height = 1080, bounces = 4;
     int repeats = 20;
@@ -186,6 +187,7 @@ void runBench(const BenchArgs& args) {
     settings.maxBounces = args.bounces;
     settings.samplesPerPixel = 1;
     settings.accel = parseAccel(args.accel);
+    settings.bvhBuild = args.bvhBuild;
     settings.cullBackfaces = args.cullBackfaces;
     validateSettings(settings);
     Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env, args.wad);
@@ -257,6 +259,7 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--bounces", args->bounces, "bounces of the timed frame (default 4)");
     cmd->add_option("--repeats", args->repeats, "timed runs per figure; medians are reported (default 20)");
     cmd->add_option("--accel", args->accel, accelHelp());
+    addBvhBuildOption(*cmd, args->bvhBuild);
     cmd->add_flag("--cull-backfaces", args->cullBackfaces,
                   "closest-hit walks skip triangles seen from behind (not shadow rays, not glass)");
     cmd->add_flag("--json", args->json, "print one JSON object instead of text");

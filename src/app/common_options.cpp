@@ -20,6 +20,13 @@ void addDeviceOption(CLI::App& cmd, std::string& device) {
                    "Vulkan device: index from 'penumbra info' or part of its name (default: best; env PENUMBRA_DEVICE)");
 }
 
+void addBvhBuildOption(CLI::App& cmd, BvhBuild& where) {
+    cmd.add_option_function<std::string>(
+        "--bvh-build", [&where](const std::string& name) { where = parseBvhBuild(name); },
+        "where the BVH is built: cpu (binned SAH, default) or gpu (Morton codes, radix sort and Karras's hierarchy "
+        "in compute shaders; instances' own trees stay the CPU's)");
+}
+
 namespace {
 bool noBvhCache = false;
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <span>
+#include <vector>
 
 #include "bvh/builder.h"
 #include "core/aabb.h"
@@ -29,6 +30,9 @@ public:
     // Leaves of at most options.maxLeafSize (up to PN_LBVH_MAX_LEAF) primitives, chosen by the
     // SAH weights of `options`; primOrder and leaf ranges as build() gives them.
     GpuBvhBuild build(std::span<const Aabb> primBounds, const bvh::BuildOptions& options = {}) const;
+
+    // The build's radix sort alone, for tests: the stable order of `keys` (indices, ties in input order).
+    std::vector<std::uint32_t> sortOrder(std::span<const std::uint32_t> keys) const;
 
 private:
     struct Kernels;

@@ -241,6 +241,15 @@ Primitives gatherPrimitives(const Scene& scene) {
     return p;
 }
 
+// The spheres' boxes, then the sprites': the primitives after the triangles.
+std::vector<Aabb> extraPrimitiveBounds(const Scene& scene, const Primitives& prims) {
+    std::vector<Aabb> extraBounds;
+    extraBounds.reserve(prims.spheres.spheres.size() + scene.sprites.size());
+    for (const Sphere& s : prims.spheres.spheres) extraBounds.push_back(bvh::sphereBounds(s.center, s.radius));
+    for (const Sprite& s : scene.sprites) extraBounds.push_back(spriteBounds(s));
+    return extraBounds;
+}
+
 // Every primitive's box in the order the builders number them: triangles, then the extra boxes.
 std::vector<Aabb> primitiveBounds(std::span<const bvh::Triangle> tris, std::span<const Aabb> extra) {
     std::vector<Aabb> boxes;
@@ -255,10 +264,7 @@ std::vector<Aabb> primitiveBounds(std::span<const bvh::Triangle> tris, std::span
 std::vector<std::uint32_t> buildTree(const Scene& scene, const Primitives& prims, const bvh::BuildOptions& options,
                                      Accel accel, const GpuBvhBuilder* gpuBuilder, SceneArrays& out) {
     const auto start = std::chrono::steady_clock::now();
-    std::vector<Aabb> extraBounds;  // the spheres', then the sprites'
-    extraBounds.reserve(prims.spheres.spheres.size() + scene.sprites.size());
-    for (const Sphere& s : prims.spheres.spheres) extraBounds.push_back(bvh::sphereBounds(s.center, s.radius));
-    for (const Sprite& s : scene.sprites) extraBounds.push_back(spriteBounds(s));
+    const std::vector<Aabb> extraBounds = extraPrimitiveBounds(scene, prims);
     bvh::Bvh tree;
     if (gpuBuilder) {
         GpuBvhBuild built = gpuBuilder->build(primitiveBounds(prims.geometry, extraBounds), options);
@@ -404,6 +410,14 @@ void markAlphaTested(SceneArrays& out) {
 }
 
 }  // namespace
+
+std::vector<Aabb> worldPrimitiveBounds(const Scene& input) {
+    std::vector<std::uint32_t> keptFrom;
+    const std::optional<Scene> baked = sceneToBuild(input, keptFrom);
+    const Scene& scene = baked ? *baked : input;
+    const Primitives prims = gatherPrimitives(scene);
+    return primitiveBounds(prims.geometry, extraPrimitiveBounds(scene, prims));
+}
 
 SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& options, Accel accel,
                              const GpuBvhBuilder* gpuBuilder) {

@@ -30,6 +30,9 @@ Vec3 absorptionCoefficient(const Material& m);
 // instead of through bvh::buildCached; instances' bottom and top levels stay the CPU's.
 SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options = {}, Accel accel = Accel::Bvh,
                              const GpuBvhBuilder* gpuBuilder = nullptr);
+// The boxes of the primitives the flat world's tree is built over, in the builders' order (what
+// buildSceneArrays gives either builder): for comparing builds (bench and info --bvh-build gpu).
+std::vector<Aabb> worldPrimitiveBounds(const Scene& scene);
 // The same as a command asks for it: the tree built where `where` says, on ctx's GPU for Gpu.
 SceneArrays buildSceneArrays(const gpu::Context& ctx, const Scene& scene, Accel accel, BvhBuild where);
 
