@@ -7,6 +7,8 @@
 #include "app/commands.h"
 #include "app/common_options.h"
 #include "image/write.h"
+#include "render/bvh_build_compare.h"
+#include "render/gpu_scene.h"
 #include "render/ray_bench.h"
 #include "render/viewer_bench.h"
 #include "render/walks.h"
@@ -178,6 +180,18 @@ void runViewerBenchCommand(const BenchArgs& args) {
     else printViewerText(scene, *ctx, o, r);
 }
 
+// --bvh-build and, for gpu, the GPU build's median time (timestamps) and SAH cost beside the CPU's:
+// JSON members, each line ending in a comma.
+void printGpuBuildJson(const gpu::Context& ctx, const Scene& scene, BvhBuild where, int repeats) {
+    std::printf("  \"bvh_build\": \"%s\",\n", bvhBuildName(where));
+    if (where != BvhBuild::Gpu) return;
+    const BvhBuildComparison c = compareBvhBuilds(ctx, worldPrimitiveBounds(scene), repeats);
+    std::printf("  \"gpu_bvh_build_ms\": %.4f,\n  \"gpu_bvh_build_repeats\": %d,\n  \"gpu_bvh_built_on_gpu\": %s,\n"
+                "  \"gpu_bvh_sah_cost\": %.3f,\n  \"cpu_bvh_sah_cost\": %.3f,\n  \"gpu_bvh_sah_ratio\": %.4f,\n",
+                c.gpuMilliseconds, c.repeats, c.onGpu ? "true" : "false", c.gpuSahCost, c.cpuSahCost,
+                c.cpuSahCost > 0 ? c.gpuSahCost / c.cpuSahCost : 0.0);
+}
+
 void runBench(const BenchArgs& args) {
     if (args.viewer) return runViewerBenchCommand(args);
     if (args.repeats < 1 || args.repeats > 10000) throw UsageError("--repeats must be between 1 and 10000");
@@ -210,6 +224,7 @@ void runBench(const BenchArgs& args) {
             a.buildMilliseconds, a.bvhFromCache ? "true" : "false", mrays(r.primaryRays, r.primaryMs), mrays(r.shadowRays, r.shadowMs), mrays(r.diffuseRays, r.diffuseMs),
             r.primaryMs, r.shadowMs, r.diffuseMs, r.frameMs, static_cast<unsigned long long>(r.frameRays),
             mrays(r.frameRays, r.frameMs));
+        printGpuBuildJson(*ctx, scene, settings.bvhBuild, args.repeats);
         std::printf("  \"traversal\": {");
         const char* sep = "";
         for (const auto& [kind, w] : rayWork(r)) {
@@ -229,7 +244,13 @@ void runBench(const BenchArgs& args) {
                 settings.width, settings.height, accelName(settings.accel),
                 settings.cullBackfaces ? " culling back faces" : "", r.repeats);
     std::printf("  bvh build        %10.3f ms  (%zu triangles, %zu nodes, SAH cost %.2f%s)\n", a.buildMilliseconds,
-                a.triVerts.size(), a.nodes.size(), a.stats.sahCost, a.bvhFromCache ? ", read from the cache" : "");
+                a.triVerts.size(), a.nodes.size(), a.stats.sahCost,
+                a.bvhFromCache ? ", read from the cache" : a.bvhBuiltOnGpu ? ", on the GPU, wall clock" : "");
+    if (settings.bvhBuild == BvhBuild::Gpu) {
+        const BvhBuildComparison c = compareBvhBuilds(*ctx, worldPrimitiveBounds(scene), args.repeats);
+        std::printf("  gpu bvh build    %10.3f ms  (GPU timestamps, median of %d; SAH cost %.2f, the CPU build's %.2f)\n",
+                    c.gpuMilliseconds, c.repeats, c.gpuSahCost, c.cpuSahCost);
+    }
     if (!a.env.alias.empty())
         std::printf("  env table build  %10.3f ms  (%ux%u texels)\n", a.envBuildMilliseconds, a.env.width, a.env.height);
     std::printf("  primary rays     %10.1f Mrays/s  (%.3f ms)\n", mrays(r.primaryRays, r.primaryMs), r.primaryMs);
