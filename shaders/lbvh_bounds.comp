@@ -12,11 +12,11 @@
 #include "lib/lbvh.glsl"
 
 // Finished in an earlier pass (one finished in this pass has donePass = pass + 1).
-bool finishedBefore(uint node) { return nodes[node].donePass != 0u && nodes[node].donePass <= push.pass; }
+bool finishedBefore(uint node) { return donePass[node] != 0u && donePass[node] <= push.pass; }
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
-    if (i + 1u >= push.count || nodes[i].donePass != 0u) return;
+    if (i + 1u >= push.count || donePass[i] != 0u) return;
     uint l = nodes[i].left, r = nodes[i].right;
     if (!finishedBefore(l) || !finishedBefore(r)) return;
     vec3 lo = min(nodes[l].boundsMin, nodes[r].boundsMin), hi = max(nodes[l].boundsMax, nodes[r].boundsMax);
@@ -30,5 +30,5 @@ void main() {
     nodes[i].cost = collapse ? leafCost : splitCost;
     nodes[i].emitNodes = collapse ? 1u : 1u + nodes[l].emitNodes + nodes[r].emitNodes;
     nodes[i].collapsed = collapse ? 1u : 0u;
-    nodes[i].donePass = push.pass + 1u;
+    donePass[i] = push.pass + 1u;
 }

@@ -17,8 +17,8 @@ void main() {
     }
     barrier();
     // An unfinished root: the tree is deeper than the bounds passes (and the walks) allow.
-    if (k == 0u && nodes[0].donePass == 0u) atomicMax(state.maxDepth, 0xffffu);
-    if (push.count >= 2u && k < 2u * push.count - 1u && nodes[0].donePass != 0u) {
+    if (k == 0u && donePass[0] == 0u) atomicMax(state.maxDepth, 0xffffu);
+    if (push.count >= 2u && k < 2u * push.count - 1u && donePass[0] != 0u) {
         uint place = 0u, depth = 1u;
         bool hidden = false;
         for (uint c = k, p = nodes[k].parent; p != PN_LBVH_NONE; c = p, p = nodes[p].parent) {

@@ -46,7 +46,7 @@ void main() {
     nodes[i].right = right;
     nodes[i].first = uint(first);
     nodes[i].leaves = uint(last - first + 1);
-    nodes[i].donePass = 0u;
+    donePass[i] = 0u;
     nodes[left].parent = uint(i);
     nodes[right].parent = uint(i);
     if (i == 0) nodes[0].parent = PN_LBVH_NONE;

@@ -19,5 +19,5 @@ void main() {
     nodes[leaf].emitNodes = 1u;
     nodes[leaf].cost = pnHalfArea(box.boundsMin, box.boundsMax) * push.intersectCost;
     nodes[leaf].collapsed = 1u;
-    nodes[leaf].donePass = 1u;
+    donePass[leaf] = 1u;
 }

@@ -14,6 +14,7 @@ layout(std430, set = 0, binding = PN_LBVH_BIND_VALUES_B) buffer ValuesB { uint v
 layout(std430, set = 0, binding = PN_LBVH_BIND_COUNTS) buffer Counts { uint counts[]; };
 layout(std430, set = 0, binding = PN_LBVH_BIND_NODES) buffer Nodes { LbvhNode nodes[]; };
 layout(std430, set = 0, binding = PN_LBVH_BIND_OUTPUT) writeonly buffer Output { BvhNode outNodes[]; };
+layout(std430, set = 0, binding = PN_LBVH_BIND_DONE) buffer Done { uint donePass[]; };
 layout(push_constant) uniform PushBlock { LbvhPush push; };
 
 // A float's bits mapped to a uint with the same order (negatives flipped whole, positives' sign

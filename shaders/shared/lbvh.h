@@ -32,6 +32,9 @@ namespace penumbra::shader {
 #define PN_LBVH_BIND_COUNTS 6    // uint per (digit, block), digit-major: counts, then their exclusive sums
 #define PN_LBVH_BIND_NODES 7     // LbvhNode per node: n - 1 interior (root 0), then n leaves
 #define PN_LBVH_BIND_OUTPUT 8    // BvhNode per emitted node, depth-first (bvh/builder.h's layout)
+// uint per node: the bounds pass that finished it plus 1 (leaves 1; 0: not yet). Apart from
+// LbvhNode because every bounds pass reads it for every node: 4 bytes each, not a 64-byte record.
+#define PN_LBVH_BIND_DONE 9
 
 // One push constant block for every kernel; fields a kernel does not use are ignored.
 PN_STRUCT(LbvhPush) {
@@ -73,12 +76,11 @@ PN_STRUCT(LbvhNode) {
     uint emitNodes;   //  4: nodes its subtree takes in the output (1 when collapsed into a leaf)
     float cost;       //  4: the subtree's SAH cost times its root area (the cheaper of leaf and split)
     uint collapsed;   //  4: 1 when the subtree becomes one leaf of `leaves` primitives
-    uint donePass;    //  4: the bounds pass that finished it plus 1 (leaves 1; 0: not yet)
-    uint pad;         //  4
+    uint pad0, pad1;  //  8
 };
 #ifdef __cplusplus
 static_assert(sizeof(LbvhNode) == 64 && offsetof(LbvhNode, left) == 28 && offsetof(LbvhNode, cost) == 48 &&
-              offsetof(LbvhNode, collapsed) == 52 && offsetof(LbvhNode, donePass) == 56);
+              offsetof(LbvhNode, collapsed) == 52);
 #endif
 
 #define PN_LBVH_NONE 0xffffffffu

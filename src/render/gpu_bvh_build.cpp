@@ -18,7 +18,7 @@
 namespace penumbra {
 namespace {
 
-constexpr std::uint32_t kBindings = 9;  // PN_LBVH_BIND_BOXES .. PN_LBVH_BIND_OUTPUT
+constexpr std::uint32_t kBindings = 10;  // PN_LBVH_BIND_BOXES .. PN_LBVH_BIND_DONE
 
 // Every kernel gets the whole set (each declares the part it reads), so one binding list serves all.
 std::array<gpu::BindingSpec, kBindings> bindingSpecs() {
@@ -54,6 +54,7 @@ struct Buffers {
         all[PN_LBVH_BIND_COUNTS] = make(VkDeviceSize(blocks) * PN_LBVH_RADIX * sizeof(std::uint32_t));
         all[PN_LBVH_BIND_NODES] = make((2 * n - 1) * sizeof(shader::LbvhNode));
         all[PN_LBVH_BIND_OUTPUT] = make((2 * n - 1) * sizeof(shader::BvhNode));
+        all[PN_LBVH_BIND_DONE] = make((2 * n - 1) * sizeof(std::uint32_t));
     }
     const gpu::Buffer& operator[](std::uint32_t binding) const { return all[binding]; }
     void upload(const gpu::Context& ctx, gpu::Commands& commands, std::uint32_t binding, const void* data,

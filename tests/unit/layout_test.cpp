@@ -243,7 +243,7 @@ TEST(Layout, GpuBvhBuildRecordsMatchInItsKernels) {
     expectMembers(emit, "LbvhNode", {0, offsetof(LbvhNode, parent), offsetof(LbvhNode, boundsMax), offsetof(LbvhNode, left),
                                      offsetof(LbvhNode, right), offsetof(LbvhNode, first), offsetof(LbvhNode, leaves),
                                      offsetof(LbvhNode, emitNodes), offsetof(LbvhNode, cost), offsetof(LbvhNode, collapsed),
-                                     offsetof(LbvhNode, donePass), offsetof(LbvhNode, pad)});
+                                     offsetof(LbvhNode, pad0), offsetof(LbvhNode, pad1)});
     expectMembers(emit, "LbvhState", {0, offsetof(LbvhState, maxDepth), offsetof(LbvhState, centreMax),
                                       offsetof(LbvhState, emitted)});
     expectMembers(emit, "LbvhPush", {0, offsetof(LbvhPush, shift), offsetof(LbvhPush, blockCount), offsetof(LbvhPush, flip),
