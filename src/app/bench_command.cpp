@@ -139,6 +139,7 @@ void runViewerBenchCommand(const BenchArgs& args) {
     o.moveSectors = args.moveSectors;
     o.view.shareCameraRays = args.shareCameraRays;
     o.cullBackfaces = args.cullBackfaces;
+    o.bvhBuild = args.bvhBuild;
     o.view.denoise = args.denoise > 0;
     o.view.denoiseIterations = std::max(args.denoise, 1u);
     o.view.denoiseConverges = !args.denoiseFilterOnly;
