@@ -7,6 +7,8 @@
 #include "app/commands.h"
 #include "app/common_options.h"
 #include "image/write.h"
+#include "render/bvh_build_compare.h"
+#include "render/gpu_scene.h"
 #include "render/ray_bench.h"
 #include "render/viewer_bench.h"
 #include "render/walks.h"
@@ -19,6 +21,7 @@ struct BenchArgs {
     std::string map;
     std::string device;
     std::string accel = "bvh";
+    BvhBuild bvhBuild = BvhBuild::Cpu;
     bool cullBackfaces = false;
     std::uint32_t width = 1920, height = 1080, bounces = 4;
     int repeats = 20;
@@ -136,6 +139,7 @@ void runViewerBenchCommand(const BenchArgs& args) {
     o.moveSectors = args.moveSectors;
     o.view.shareCameraRays = args.shareCameraRays;
     o.cullBackfaces = args.cullBackfaces;
+    o.bvhBuild = args.bvhBuild;
     o.view.denoise = args.denoise > 0;
     o.view.denoiseIterations = std::max(args.denoise, 1u);
     o.view.denoiseConverges = !args.denoiseFilterOnly;
@@ -177,6 +181,18 @@ void runViewerBenchCommand(const BenchArgs& args) {
     else printViewerText(scene, *ctx, o, r);
 }
 
+// --bvh-build and, for gpu, the GPU build's median time (timestamps) and SAH cost beside the CPU's:
+// JSON members, each line ending in a comma.
+void printGpuBuildJson(const gpu::Context& ctx, const Scene& scene, BvhBuild where, int repeats) {
+    std::printf("  \"bvh_build\": \"%s\",\n", bvhBuildName(where));
+    if (where != BvhBuild::Gpu) return;
+    const BvhBuildComparison c = compareBvhBuilds(ctx, worldPrimitiveBounds(scene), repeats);
+    std::printf("  \"gpu_bvh_build_ms\": %.4f,\n  \"gpu_bvh_build_repeats\": %d,\n  \"gpu_bvh_built_on_gpu\": %s,\n"
+                "  \"gpu_bvh_sah_cost\": %.3f,\n  \"cpu_bvh_sah_cost\": %.3f,\n  \"gpu_bvh_sah_ratio\": %.4f,\n",
+                c.gpuMilliseconds, c.repeats, c.onGpu ? "true" : "false", c.gpuSahCost, c.cpuSahCost,
+                c.cpuSahCost > 0 ? c.gpuSahCost / c.cpuSahCost : 0.0);
+}
+
 void runBench(const BenchArgs& args) {
     if (args.viewer) return runViewerBenchCommand(args);
     if (args.repeats < 1 || args.repeats > 10000) throw UsageError("--repeats must be between 1 and 10000");
@@ -186,6 +202,7 @@ void runBench(const BenchArgs& args) {
     settings.maxBounces = args.bounces;
     settings.samplesPerPixel = 1;
     settings.accel = parseAccel(args.accel);
+    settings.bvhBuild = args.bvhBuild;
     settings.cullBackfaces = args.cullBackfaces;
     validateSettings(settings);
     Scene scene = loadScene(args.scene, args.map, args.camera, nullptr, args.env, args.wad);
@@ -208,6 +225,7 @@ void runBench(const BenchArgs& args) {
             a.buildMilliseconds, a.bvhFromCache ? "true" : "false", mrays(r.primaryRays, r.primaryMs), mrays(r.shadowRays, r.shadowMs), mrays(r.diffuseRays, r.diffuseMs),
             r.primaryMs, r.shadowMs, r.diffuseMs, r.frameMs, static_cast<unsigned long long>(r.frameRays),
             mrays(r.frameRays, r.frameMs));
+        printGpuBuildJson(*ctx, scene, settings.bvhBuild, args.repeats);
         std::printf("  \"traversal\": {");
         const char* sep = "";
         for (const auto& [kind, w] : rayWork(r)) {
@@ -227,7 +245,13 @@ void runBench(const BenchArgs& args) {
                 settings.width, settings.height, accelName(settings.accel),
                 settings.cullBackfaces ? " culling back faces" : "", r.repeats);
     std::printf("  bvh build        %10.3f ms  (%zu triangles, %zu nodes, SAH cost %.2f%s)\n", a.buildMilliseconds,
-                a.triVerts.size(), a.nodes.size(), a.stats.sahCost, a.bvhFromCache ? ", read from the cache" : "");
+                a.triVerts.size(), a.nodes.size(), a.stats.sahCost,
+                a.bvhFromCache ? ", read from the cache" : a.bvhBuiltOnGpu ? ", on the GPU, wall clock" : "");
+    if (settings.bvhBuild == BvhBuild::Gpu) {
+        const BvhBuildComparison c = compareBvhBuilds(*ctx, worldPrimitiveBounds(scene), args.repeats);
+        std::printf("  gpu bvh build    %10.3f ms  (GPU timestamps, median of %d; SAH cost %.2f, the CPU build's %.2f)\n",
+                    c.gpuMilliseconds, c.repeats, c.gpuSahCost, c.cpuSahCost);
+    }
     if (!a.env.alias.empty())
         std::printf("  env table build  %10.3f ms  (%ux%u texels)\n", a.envBuildMilliseconds, a.env.width, a.env.height);
     std::printf("  primary rays     %10.1f Mrays/s  (%.3f ms)\n", mrays(r.primaryRays, r.primaryMs), r.primaryMs);
@@ -257,6 +281,7 @@ void registerBench(CLI::App& app, Action& action) {
     cmd->add_option("--bounces", args->bounces, "bounces of the timed frame (default 4)");
     cmd->add_option("--repeats", args->repeats, "timed runs per figure; medians are reported (default 20)");
     cmd->add_option("--accel", args->accel, accelHelp());
+    addBvhBuildOption(*cmd, args->bvhBuild);
     cmd->add_flag("--cull-backfaces", args->cullBackfaces,
                   "closest-hit walks skip triangles seen from behind (not shadow rays, not glass)");
     cmd->add_flag("--json", args->json, "print one JSON object instead of text");

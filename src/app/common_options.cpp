@@ -20,6 +20,20 @@ void addDeviceOption(CLI::App& cmd, std::string& device) {
                    "Vulkan device: index from 'penumbra info' or part of its name (default: best; env PENUMBRA_DEVICE)");
 }
 
+void addBvhBuildOption(CLI::App& cmd, BvhBuild& where) {
+    cmd.add_option_function<std::string>(
+        "--bvh-build",
+        [&where](const std::string& name) {
+            try {
+                where = parseBvhBuild(name);
+            } catch (const UsageError& e) {  // parse errors are CLI11's while the line is read
+                throw CLI::ValidationError(e.what());
+            }
+        },
+        "where the BVH is built: cpu (binned SAH, default) or gpu (Morton codes, radix sort and Karras's hierarchy "
+        "in compute shaders; instances' own trees stay the CPU's)");
+}
+
 namespace {
 bool noBvhCache = false;
 }  // namespace

@@ -33,6 +33,9 @@ struct CameraOverrides {
 std::string sceneArgumentHelp();
 
 void addDeviceOption(CLI::App& cmd, std::string& device);
+// --bvh-build cpu|gpu (render, view, bench, info): where the flat world's BVH is built, parsed
+// into `where` as the command line is read (a bad name is a usage error).
+void addBvhBuildOption(CLI::App& cmd, BvhBuild& where);
 // --no-bvh-cache on a command; configureBvhCache() (main, before the action) reads it.
 void addBvhCacheOption(CLI::App& cmd);
 // Turns the on-disk BVH cache (bvh/cache.h) on in its default folder (PENUMBRA_CACHE_DIR,

@@ -9,6 +9,7 @@
 #include "app/common_options.h"
 #include "app/info_ranks.h"
 #include "app/render_ranks.h"
+#include "render/bvh_build_compare.h"
 #include "render/gpu_scene.h"
 #include "render/light_grid.h"
 #include "render/light_tree.h"
@@ -25,16 +26,28 @@ struct InfoArgs {
     EnvironmentSpec env;
     WadOptions wad;
     std::string accel = "bvh";
+    BvhBuild bvhBuild = BvhBuild::Cpu;
     bool mpi = false;
 };
 
+// --bvh-build gpu: the GPU's build time (its timestamps) and its tree's SAH cost beside the CPU's.
+void printGpuBuild(const gpu::Context& ctx, const Scene& scene) {
+    const BvhBuildComparison c = compareBvhBuilds(ctx, worldPrimitiveBounds(scene), 5);
+    if (!c.onGpu) return;  // the warning said the CPU built it
+    std::printf("  bvh built on the GPU in %.3f ms (%s, median of %d builds, GPU timestamps), SAH cost %.2f beside the "
+                "CPU build's %.2f (%.2fx)\n",
+                c.gpuMilliseconds, ctx.info().name.c_str(), c.repeats, c.gpuSahCost, c.cpuSahCost,
+                c.cpuSahCost > 0 ? c.gpuSahCost / c.cpuSahCost : 0.0);
+}
+
 void printScene(const std::string& name, const std::string& map, const EnvironmentSpec& env, const WadOptions& wad,
-                Accel accel) {
+                Accel accel, BvhBuild where) {
     const auto start = std::chrono::steady_clock::now();
     Scene scene = loadScene(name, map, {}, nullptr, env, wad);
     const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const std::size_t cpuBytes = sceneBytes(scene);
-    SceneArrays arrays = buildSceneArrays(scene, {}, accel);
+    const std::unique_ptr<gpu::Context> ctx = where == BvhBuild::Gpu ? openDevice("") : nullptr;
+    SceneArrays arrays = ctx ? buildSceneArrays(*ctx, scene, accel, where) : buildSceneArrays(scene, {}, accel);
     const bvh::BvhStats& s = arrays.stats;
     const std::size_t tris = arrays.triVerts.size();
     const std::size_t gpuBytes = deviceBytes(arrays);
@@ -49,8 +62,12 @@ void printScene(const std::string& name, const std::string& map, const Environme
                     grid.cellsX, grid.cellsY, grid.cellsZ, PN_LIGHT_GRID_BINS, double(arrays.lightGrid.size()) * 4.0 / 1e6);
     }
     std::printf("  bvh: %zu nodes, %zu leaves, depth %zu, largest leaf %zu, SAH cost %.2f, %s in %.2f ms\n", s.nodes,
-                s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost, arrays.bvhFromCache ? "read from the cache" : "built",
+                s.leaves, s.maxDepth, s.maxLeafSize, s.sahCost,
+                arrays.bvhFromCache    ? "read from the cache"
+                : arrays.bvhBuiltOnGpu ? "built on the GPU (wall clock: kernels made, boxes sent, tree read back)"
+                                       : "built",
                 arrays.buildMilliseconds);
+    if (ctx) printGpuBuild(*ctx, scene);
     if (!arrays.wideNodes.empty())
         std::printf("  wide bvh (--accel wide): %zu nodes of %zu bytes, depth %u, %.1f bytes per primitive, collapsed in "
                     "%.2f ms\n",
@@ -107,7 +124,7 @@ void runInfo(const InfoArgs& args) {
     const Accel accel = parseAccel(args.accel);  // a usage error before anything is printed
     if (std::unique_ptr<distributed::Comm> comm = startRanks(args.mpi)) {
         printRanksInfo(*comm, args.device);
-        if (comm->primary() && !args.scene.empty()) printScene(args.scene, args.map, args.env, args.wad, accel);
+        if (comm->primary() && !args.scene.empty()) printScene(args.scene, args.map, args.env, args.wad, accel, args.bvhBuild);
         return;
     }
     std::string error;
@@ -127,7 +144,7 @@ void runInfo(const InfoArgs& args) {
                     l.maxComputeWorkGroupInvocations, l.maxStorageBufferRange,
                     ctx->timestampsSupported() ? "yes" : "no", double(l.timestampPeriod));
     }
-    if (!args.scene.empty()) printScene(args.scene, args.map, args.env, args.wad, accel);
+    if (!args.scene.empty()) printScene(args.scene, args.map, args.env, args.wad, accel, args.bvhBuild);
 }
 
 }  // namespace
@@ -139,6 +156,7 @@ void registerInfo(CLI::App& app, Action& action) {
     cmd->add_option("--map", args->map, "level of a .wad file");
     addDeviceOption(*cmd, args->device);
     cmd->add_option("--accel", args->accel, "the walk whose GPU memory to report (builds its records): " + walkNameList());
+    addBvhBuildOption(*cmd, args->bvhBuild);
     cmd->add_flag("--mpi", args->mpi, "list every rank's host and device (implied when started by mpirun)");
     addBvhCacheOption(*cmd);
     addEnvironmentOptions(*cmd, args->env);

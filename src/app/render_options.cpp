@@ -57,6 +57,7 @@ void addRenderOptions(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--height", a.settings.height, "image height in pixels");
     cmd.add_option("--seed", a.settings.seed, "random seed (same seed, same device: same image)");
     cmd.add_option("--accel", a.accel, accelHelp());
+    addBvhBuildOption(cmd, a.settings.bvhBuild);
     cmd.add_option("--mis", a.mis,
                    "direct light estimators: both (MIS, default), light (light sampling only) or bsdf (BSDF sampling only)");
     cmd.add_option("--shadow-roulette", a.settings.shadowRouletteShare,

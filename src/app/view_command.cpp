@@ -84,6 +84,7 @@ void registerView(CLI::App& app, Action& action) {
                   "start with anti-aliasing off: camera rays through pixel centres (the panel toggles it)");
     cmd->add_option("--debug", args->debug, "start in a debug view: normals, albedo, depth, motion, samples, nodes, triangles, boxes, leaf-depth, leaf-triangles");
     addDeviceOption(*cmd, args->options.device);
+    addBvhBuildOption(*cmd, args->options.bvhBuild);
     addBvhCacheOption(*cmd);
     addCameraOptions(*cmd, args->camera);
     addEnvironmentOptions(*cmd, args->env);

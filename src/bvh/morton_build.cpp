@@ -9,19 +9,10 @@
 
 #include "core/error.h"
 #include "core/parallel.h"
+#include "shared/morton.h"
 
 namespace penumbra::bvh {
 namespace {
-
-// The 10 low bits of v spread to every third bit.
-std::uint32_t spreadBits(std::uint32_t v) {
-    v &= 0x3ffu;
-    v = (v | (v << 16)) & 0x030000ffu;
-    v = (v | (v << 8)) & 0x0300f00fu;
-    v = (v | (v << 4)) & 0x030c30c3u;
-    v = (v | (v << 2)) & 0x09249249u;
-    return v;
-}
 
 constexpr int kPasses = 3, kRadixBits = 10;
 constexpr std::uint32_t kRadix = 1u << kRadixBits;
@@ -118,19 +109,15 @@ void computeKeys(std::span<const Aabb> primBounds, MortonScratch& scratch, bool 
         sanitizeRange(primBounds, scratch.boxes, 0, n, centres);
     }
     const Vec3 lo = centres.lo, hi = centres.hi;
-    // Cubic cells (one scale for the three axes): a thin scene's short axis gets fewer distinct
-    // codes, so the splits follow its long axes, as SAH would (per-axis scales cost 1.7x in SAH
-    // cost on the benchmark's flat field of instances).
+    // Cubic cells: shared/morton.h says why; the GPU build (shaders/lbvh_morton.comp) uses the same.
     const float size = maxComponent(hi - lo);
-    const float scale = size > 0 ? 1024.0f / size : 0.0f;
-    auto cell = [scale](float offset) { return std::uint32_t(std::clamp(offset * scale, 0.0f, 1023.0f)); };
+    const float scale = size > 0 ? float(PN_MORTON_CELLS) / size : 0.0f;
     scratch.keys.resize(n);
     auto codeRange = [&](std::size_t first, std::size_t last) {
         for (std::size_t i = first; i < last; ++i) {
             const Aabb& s = scratch.boxes[i];
             const Vec3 c = (s.lo + s.hi) * 0.5f - lo;
-            const std::uint32_t code =
-                (spreadBits(cell(c.x)) << 2) | (spreadBits(cell(c.y)) << 1) | spreadBits(cell(c.z));
+            const std::uint32_t code = shader::pnMortonCode(c, scale);
             scratch.keys[i] = (std::uint64_t(code) << 32) | std::uint64_t(i);
         }
     };

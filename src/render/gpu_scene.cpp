@@ -17,6 +17,7 @@
 #include "bvh/wide.h"
 #include "core/error.h"
 #include "render/env_table.h"
+#include "render/gpu_bvh_build.h"
 #include "render/instance_arrays.h"
 #include "render/light_grid.h"
 #include "render/light_list.h"
@@ -240,18 +241,41 @@ Primitives gatherPrimitives(const Scene& scene) {
     return p;
 }
 
-// Builds the BVH (through the BVH cache, which the command line turns on: bvh/cache.h), the wide
-// tree when asked for, and the statistics, into out; returns the primitive of each leaf slot.
-std::vector<std::uint32_t> buildTree(const Scene& scene, const Primitives& prims, const bvh::BuildOptions& options,
-                                     Accel accel, SceneArrays& out) {
-    const auto start = std::chrono::steady_clock::now();
-    std::vector<Aabb> extraBounds;  // the spheres', then the sprites'
+// The spheres' boxes, then the sprites': the primitives after the triangles.
+std::vector<Aabb> extraPrimitiveBounds(const Scene& scene, const Primitives& prims) {
+    std::vector<Aabb> extraBounds;
     extraBounds.reserve(prims.spheres.spheres.size() + scene.sprites.size());
     for (const Sphere& s : prims.spheres.spheres) extraBounds.push_back(bvh::sphereBounds(s.center, s.radius));
     for (const Sprite& s : scene.sprites) extraBounds.push_back(spriteBounds(s));
-    bvh::CachedBuild built = bvh::buildCached(prims.geometry, extraBounds, options);
-    bvh::Bvh tree = std::move(built.bvh);
-    out.bvhFromCache = built.fromCache;
+    return extraBounds;
+}
+
+// Every primitive's box in the order the builders number them: triangles, then the extra boxes.
+std::vector<Aabb> primitiveBounds(std::span<const bvh::Triangle> tris, std::span<const Aabb> extra) {
+    std::vector<Aabb> boxes;
+    boxes.reserve(tris.size() + extra.size());
+    for (const bvh::Triangle& t : tris) boxes.push_back(bvh::bounds(t));
+    boxes.insert(boxes.end(), extra.begin(), extra.end());
+    return boxes;
+}
+
+// Builds the BVH (through the BVH cache, which the command line turns on: bvh/cache.h), the wide
+// tree when asked for, and the statistics, into out; returns the primitive of each leaf slot.
+std::vector<std::uint32_t> buildTree(const Scene& scene, const Primitives& prims, const bvh::BuildOptions& options,
+                                     Accel accel, const GpuBvhBuilder* gpuBuilder, SceneArrays& out) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<Aabb> extraBounds = extraPrimitiveBounds(scene, prims);
+    bvh::Bvh tree;
+    if (gpuBuilder) {
+        GpuBvhBuild built = gpuBuilder->build(primitiveBounds(prims.geometry, extraBounds), options);
+        tree = std::move(built.bvh);
+        out.bvhBuiltOnGpu = built.onGpu;
+        out.gpuBuildMilliseconds = built.gpuMilliseconds;
+    } else {
+        bvh::CachedBuild built = bvh::buildCached(prims.geometry, extraBounds, options);
+        tree = std::move(built.bvh);
+        out.bvhFromCache = built.fromCache;
+    }
     out.buildMilliseconds = millisecondsSince(start);
     if (accel == Accel::Wide && scene.instances.empty()) {
         // The wide tree reorders the primitives, so it comes before anything indexes them.
@@ -387,7 +411,16 @@ void markAlphaTested(SceneArrays& out) {
 
 }  // namespace
 
-SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& options, Accel accel) {
+std::vector<Aabb> worldPrimitiveBounds(const Scene& input) {
+    std::vector<std::uint32_t> keptFrom;
+    const std::optional<Scene> baked = sceneToBuild(input, keptFrom);
+    const Scene& scene = baked ? *baked : input;
+    const Primitives prims = gatherPrimitives(scene);
+    return primitiveBounds(prims.geometry, extraPrimitiveBounds(scene, prims));
+}
+
+SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& options, Accel accel,
+                             const GpuBvhBuilder* gpuBuilder) {
     input.validate();
     std::vector<std::uint32_t> keptFrom;  // the input's number of each instance left after baking
     const std::optional<Scene> baked = sceneToBuild(input, keptFrom);
@@ -395,7 +428,7 @@ SceneArrays buildSceneArrays(const Scene& input, const bvh::BuildOptions& option
     const Primitives prims = gatherPrimitives(scene);
 
     SceneArrays out;
-    const std::vector<std::uint32_t> primOrder = buildTree(scene, prims, options, accel, out);
+    const std::vector<std::uint32_t> primOrder = buildTree(scene, prims, options, accel, gpuBuilder, out);
     const LeafSlots slots = fillLeafSlots(scene, prims, primOrder, out);
     std::vector<bool> punctualMoves;
     addPunctualLights(scene, out.punctual, punctualMoves);

@@ -16,6 +16,8 @@
 
 namespace penumbra {
 
+class GpuBvhBuilder;
+
 // The GPU form of one material (what buildSceneArrays stores in SceneArrays::materials).
 shader::Material toGpuMaterial(const Material& m);
 
@@ -24,7 +26,15 @@ Vec3 absorptionCoefficient(const Material& m);
 
 // accel Wide also collapses a flat scene's BVH into the wide one (which renumbers the primitives)
 // and leaves the binary nodes off the GPU; the viewer and the other walks pass Bvh or Brute.
-SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options = {}, Accel accel = Accel::Bvh);
+// gpuBuilder: the flat world's tree is built on the GPU (--bvh-build gpu, render/gpu_bvh_build.h)
+// instead of through bvh::buildCached; instances' bottom and top levels stay the CPU's.
+SceneArrays buildSceneArrays(const Scene& scene, const bvh::BuildOptions& options = {}, Accel accel = Accel::Bvh,
+                             const GpuBvhBuilder* gpuBuilder = nullptr);
+// The boxes of the primitives the flat world's tree is built over, in the builders' order (what
+// buildSceneArrays gives either builder): for comparing builds (bench and info --bvh-build gpu).
+std::vector<Aabb> worldPrimitiveBounds(const Scene& scene);
+// The same as a command asks for it: the tree built where `where` says, on ctx's GPU for Gpu.
+SceneArrays buildSceneArrays(const gpu::Context& ctx, const Scene& scene, Accel accel, BvhBuild where);
 
 // Bytes the arrays take once uploaded (what GpuScene::deviceBytes reports after the upload).
 std::size_t deviceBytes(const SceneArrays& arrays);

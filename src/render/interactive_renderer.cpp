@@ -91,9 +91,9 @@ const char* viewerPassName(ViewerPass pass) {
 }
 
 InteractiveRenderer::InteractiveRenderer(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight,
-                                         std::uint32_t seed)
-    : ctx_(ctx), commands_(ctx), seed_(seed), timer_(ctx, std::uint32_t(ViewerPass::Count)) {
-    loadScene(scene, buildSceneArrays(scene), torchIsLastLight);
+                                         std::uint32_t seed, BvhBuild bvhBuild)
+    : ctx_(ctx), commands_(ctx), seed_(seed), bvhBuild_(bvhBuild), timer_(ctx, std::uint32_t(ViewerPass::Count)) {
+    loadScene(scene, buildSceneArrays(ctx, scene, Accel::Bvh, bvhBuild_), torchIsLastLight);
     frameUniforms_ = gpu::Buffer(ctx, sizeof(shader::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                  gpu::MemoryKind::HostVisible);
     viewerUniforms_ = gpu::Buffer(ctx, sizeof(shader::ViewerUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
@@ -128,7 +128,7 @@ void InteractiveRenderer::loadScene(const Scene& scene, SceneArrays arrays, bool
 }
 
 void InteractiveRenderer::rebuildScene(const Scene& scene, bool torchIsLastLight) {
-    SceneArrays arrays = buildSceneArrays(scene);  // throws before anything is torn down
+    SceneArrays arrays = buildSceneArrays(ctx_, scene, Accel::Bvh, bvhBuild_);  // throws before anything is torn down
     PN_VK(vkDeviceWaitIdle(ctx_.device()));         // the last frame may still read the old buffers
     gpuScene_.reset();
     loadScene(scene, std::move(arrays), torchIsLastLight);

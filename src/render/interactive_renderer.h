@@ -44,7 +44,9 @@ class InteractiveRenderer {
 public:
     // torchIsLastLight: the scene's last light is the camera torch (attachTorch), which then is
     // the last punctual light too; it is moved to the camera every frame and can be switched off.
-    InteractiveRenderer(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight, std::uint32_t seed = 1);
+    // bvhBuild: where the world's BVH is built, here and by rebuildScene (view --bvh-build).
+    InteractiveRenderer(const gpu::Context& ctx, const Scene& scene, bool torchIsLastLight, std::uint32_t seed = 1,
+                        BvhBuild bvhBuild = BvhBuild::Cpu);
     ~InteractiveRenderer();
 
     // Replaces the scene (moved objects, another file): rebuilds the BVH and every GPU buffer and
@@ -146,6 +148,7 @@ private:
     Environment environment_;  // intensity and rotation only (the map itself is on the GPU)
     std::optional<std::uint32_t> torchLight_;
     std::uint32_t seed_;
+    BvhBuild bvhBuild_ = BvhBuild::Cpu;
     gpu::Buffer frameUniforms_, viewerUniforms_, counters_, heatCounters_;
     // Each frame writes one history and the G-buffer of the same letter, and reads the other two as
     // last frame's: swapping the pair every frame spares copying the G-buffer.

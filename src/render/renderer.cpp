@@ -15,7 +15,7 @@
 namespace penumbra {
 
 Renderer::Renderer(const gpu::Context& ctx, const Scene& scene, const RenderSettings& settings)
-    : ctx_(ctx), settings_(settings), arrays_(buildSceneArrays(scene, {}, settings.accel)), commands_(ctx), timer_(ctx, 1) {
+    : ctx_(ctx), settings_(settings), arrays_(buildSceneArrays(ctx, scene, settings.accel, settings.bvhBuild)), commands_(ctx), timer_(ctx, 1) {
     validateSettings(settings_);
     gpuScene_ = std::make_unique<GpuScene>(ctx, commands_, arrays_);
     background_ = scene.background;

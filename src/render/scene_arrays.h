@@ -71,7 +71,11 @@ struct SceneArrays {
     EnvTable env;  // empty without an environment map
     bvh::BvhStats stats{};
     double buildMilliseconds = 0;
-    bool bvhFromCache = false;  // read from the BVH cache (buildMilliseconds then times the read)
+    bool bvhFromCache = false;
+    // --bvh-build gpu: the tree came from the GPU (false: the CPU's, also when the GPU's was too
+    // deep), and the GPU's timestamps around its kernels (-1: none).
+    bool bvhBuiltOnGpu = false;
+    double gpuBuildMilliseconds = -1;  // read from the BVH cache (buildMilliseconds then times the read)
     double envBuildMilliseconds = 0;
 };
 

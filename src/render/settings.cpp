@@ -34,4 +34,12 @@ MisMode parseMisMode(const std::string& name) {
     throw UsageError("unknown --mis '" + name + "'; use both, light or bsdf");
 }
 
+BvhBuild parseBvhBuild(const std::string& name) {
+    if (name == "cpu") return BvhBuild::Cpu;
+    if (name == "gpu") return BvhBuild::Gpu;
+    throw UsageError("unknown --bvh-build '" + name + "'; use cpu or gpu");
+}
+
+const char* bvhBuildName(BvhBuild where) { return where == BvhBuild::Gpu ? "gpu" : "cpu"; }
+
 }  // namespace penumbra

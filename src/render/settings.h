@@ -11,6 +11,10 @@ namespace penumbra {
 // go last: checkpoints store the number.
 enum class Accel { Bvh, Brute, Wide, Objects, Stackless };
 
+// Where the flat world's BVH is built (--bvh-build): the CPU's binned SAH (through the BVH cache)
+// or the GPU's linear BVH (render/gpu_bvh_build.h). Either tree serves every walk.
+enum class BvhBuild { Cpu, Gpu };
+
 // Which estimators of direct light the integrator combines (shaders/lib/mis.glsl): both with the
 // power heuristic, light sampling only, or BSDF sampling only. All converge to the same image.
 enum class MisMode { Both, LightOnly, BsdfOnly };
@@ -35,6 +39,7 @@ struct RenderSettings {
     float shadowRouletteShare = 0.0f;
     std::uint32_t seed = 1;
     Accel accel = Accel::Bvh;
+    BvhBuild bvhBuild = BvhBuild::Cpu;
     MisMode mis = MisMode::Both;
     // Pick every light with the same probability instead of by its estimated contribution: the
     // oracle that tests compare the light sampler with (same mean, more noise).
@@ -78,6 +83,8 @@ void validateShadowRouletteShare(float share);
 
 Accel parseAccel(const std::string& name);  // a name in render/walks.h; UsageError otherwise
 const char* accelName(Accel accel);
+BvhBuild parseBvhBuild(const std::string& name);  // "cpu" or "gpu"; UsageError otherwise
+const char* bvhBuildName(BvhBuild where);
 
 MisMode parseMisMode(const std::string& name);  // "both" | "light" | "bsdf"; UsageError otherwise
 

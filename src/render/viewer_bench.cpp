@@ -124,7 +124,7 @@ ViewerBenchResult runViewerBench(const gpu::Context& ctx, const Scene& scene, bo
     if (o.frames < 1 || o.frames > 100000) throw UsageError("--frames must be between 1 and 100000");
     if (o.errorMotion != CameraMotion::Static && o.budgetFrameCount < 1)
         throw UsageError("--error-camera-motion needs --budget-frames (the motion ends on the reference's view)");
-    InteractiveRenderer renderer(ctx, scene, torchIsLastLight);
+    InteractiveRenderer renderer(ctx, scene, torchIsLastLight, 1, o.bvhBuild);
     renderer.setCullBackfaces(o.cullBackfaces);
     renderer.resize(o.width, o.height);
     double scriptTime = 0;

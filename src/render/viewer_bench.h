@@ -25,6 +25,7 @@ struct ViewerBenchOptions {
     std::uint32_t width = 1280, height = 800;
     ViewSettings view;  // spp, bounces, temporal, denoiser, torch
     bool cullBackfaces = false;  // InteractiveRenderer::setCullBackfaces
+    BvhBuild bvhBuild = BvhBuild::Cpu;  // where the scene's tree is built (bench --viewer --bvh-build)
     CameraMotion motion = CameraMotion::Static;
     double frameSeconds = 1.0 / 60.0;  // scripted time per frame (the motion does not depend on speed)
     int frames = 200;                  // timed frames (medians over these)

@@ -48,6 +48,31 @@ TEST_F(BenchCliTest, ViewerCameraMotionsRunAndBadOnesAreUsageErrors) {
     expectOneLineError(run(std::string(kTinyViewer) + " --denoise 9"), 2, "--denoise");
 }
 
+// --bvh-build gpu (docs/RENDERING.md): bench's JSON has the GPU build's time and both SAH costs,
+// info says where it was built; a bad name is one line and exit 2 for every command taking it.
+TEST_F(BenchCliTest, BvhBuildGpuReportsItsTimeAndSahCosts) {
+    RunResult r = run("bench cornell --bvh-build gpu --json --width 32 --height 24 --bounces 1 --repeats 1");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("bvh_build").get<std::string>(), "gpu");
+    EXPECT_TRUE(j.at("gpu_bvh_built_on_gpu").get<bool>());
+    EXPECT_GE(j.at("gpu_bvh_build_ms").get<double>(), 0.0);
+    const double gpuSah = j.at("gpu_bvh_sah_cost").get<double>(), cpuSah = j.at("cpu_bvh_sah_cost").get<double>();
+    EXPECT_GT(cpuSah, 0.0);
+    EXPECT_NEAR(j.at("gpu_bvh_sah_ratio").get<double>(), gpuSah / cpuSah, 1e-3);
+    EXPECT_NEAR(j.at("bvh_sah_cost").get<double>(), gpuSah, 1e-3) << "the traced tree is the GPU's";
+    RunResult cpu = run("bench cornell --json --width 32 --height 24 --bounces 1 --repeats 1");
+    ASSERT_EQ(cpu.exitCode, 0) << cpu.err;
+    const nlohmann::json c = nlohmann::json::parse(cpu.out);
+    EXPECT_EQ(c.at("bvh_build").get<std::string>(), "cpu");
+    EXPECT_FALSE(c.contains("gpu_bvh_build_ms"));
+    RunResult info = run("info cornell --bvh-build gpu");
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    EXPECT_NE(info.out.find("built on the GPU in "), std::string::npos) << info.out;
+    for (const char* command : {"info cornell", "bench cornell", "render cornell -o a.png"})
+        expectOneLineError(run(std::string(command) + " --bvh-build fpga"), 2, "use cpu or gpu");
+}
+
 // The wavefront's tuning variables are checked like flags: a bad value is one line and exit 2.
 TEST_F(BenchCliTest, ABadWavefrontTailThresholdIsAUsageError) {
     const std::string render = "render cornell --width 16 --height 12 --spp 1 -o a.png";

@@ -12,6 +12,7 @@
 #include "gpu/shaders.h"
 #include "shared/types.h"
 #include "shared/accel_layouts.h"
+#include "shared/lbvh.h"
 
 namespace penumbra {
 namespace {
@@ -230,6 +231,25 @@ TEST(Layout, ViewerStructsMatchInTheViewerShaders) {
     // Each viewer struct is used by at least one of these shaders; the check above saw it.
     for (const char* s : {"GBufferTexel", "HistoryTexel", "ViewerUniforms", "HeatCounters", "BoxOverlayPush"})
         EXPECT_GE(found[s], 1) << s << " not found in any viewer shader";
+}
+
+// The GPU BVH build's records (shared/lbvh.h) as its kernels see them.
+TEST(Layout, GpuBvhBuildRecordsMatchInItsKernels) {
+    using namespace shader;
+    const Offsets emit = readMemberOffsets(gpu::shaderCode("lbvh_emit"));
+    ASSERT_EQ(emit.count("LbvhNode"), 1u);
+    ASSERT_EQ(emit.count("LbvhState"), 1u);
+    ASSERT_EQ(emit.count("LbvhPush"), 1u);
+    expectMembers(emit, "LbvhNode", {0, offsetof(LbvhNode, parent), offsetof(LbvhNode, boundsMax), offsetof(LbvhNode, left),
+                                     offsetof(LbvhNode, right), offsetof(LbvhNode, first), offsetof(LbvhNode, leaves),
+                                     offsetof(LbvhNode, emitNodes), offsetof(LbvhNode, cost), offsetof(LbvhNode, collapsed),
+                                     offsetof(LbvhNode, pad0), offsetof(LbvhNode, pad1)});
+    expectMembers(emit, "LbvhState", {0, offsetof(LbvhState, maxDepth), offsetof(LbvhState, centreMax),
+                                      offsetof(LbvhState, emitted)});
+    expectMembers(emit, "LbvhPush", {0, offsetof(LbvhPush, shift), offsetof(LbvhPush, blockCount), offsetof(LbvhPush, flip),
+                                     offsetof(LbvhPush, traversalCost), offsetof(LbvhPush, intersectCost),
+                                     offsetof(LbvhPush, maxLeaf), offsetof(LbvhPush, pass)});
+    EXPECT_EQ(readArrayStrides(gpu::shaderCode("lbvh_emit")).at("LbvhNode"), sizeof(LbvhNode));
 }
 
 }  // namespace

@@ -501,7 +501,7 @@ void runViewer(Scene scene, const ViewerOptions& options) {
     if (!result.context) throw Error(result.error);
     gpu::Context& ctx = *result.context;
 
-    InteractiveRenderer renderer(ctx, scene, true);
+    InteractiveRenderer renderer(ctx, scene, true, 1, options.bvhBuild);
     renderer.setCullBackfaces(options.cullBackfaces);
     Presenter presenter(ctx, window, options.vsync);
     UiLayer ui(ctx, window.get(), presenter);

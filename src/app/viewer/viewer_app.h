@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "interact/input_script.h"
+#include "render/settings.h"
 #include "render/view_settings.h"
 #include "scene/scene.h"
 
@@ -23,6 +24,7 @@ struct ViewerOptions {
     bool denoise = false;
     bool antiAliasing = true;  // view --no-jitter turns it off
     bool cullBackfaces = false;  // view --cull-backfaces
+    BvhBuild bvhBuild = BvhBuild::Cpu;  // view --bvh-build: the scene's tree at open and reopen
     bool preview = false;        // view --preview: the fast preview while moving (V toggles it)
     DebugView debug = DebugView::None;
     // Scripted input (--script): played from the first frame, which then starts playing.
