@@ -33,7 +33,8 @@ NOT_ON_HOST=(mpi_cli_tests)
 # Skips that are expected on the GPU host (no display, no xvfb-run there), as extended regexes.
 EXPECTED_SKIPS='xvfb-run is not installed'
 # Real assets the tests read from Debian packages, carried xz-compressed and unpacked at the same paths.
-ASSETS=(/usr/share/games/doom/freedoom1.wad /usr/share/glmark2/models/bunny.obj)
+ASSETS=(/usr/share/games/doom/freedoom1.wad /usr/share/glmark2/models/bunny.obj
+        /usr/share/assimp/models/BLEND/Suzanne_248.blend)
 LAYER_MANIFEST=/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json
 LIMIT_MIB=64  # what the device tool carries: the working tree plus carried folders
 
