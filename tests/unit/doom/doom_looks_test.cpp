@@ -142,7 +142,7 @@ TEST(DoomLooks, FreedoomKeySpriteVanishesWhenPickedUp) {
                             [&](const Sprite& s) { return s.material == keyMaterial; }),
               1);
     EXPECT_LT(scene.materials[keyMaterial].alphaCutoff, 1.0f);  // drawn before it is taken
-    level.touchThings({kx, ky, 0});
+    level.touchThings({key.first, key.second, 0});
     const std::vector<std::uint32_t> changed = applyLooks(level, scene.materials);
     EXPECT_EQ(changed, std::vector<std::uint32_t>{keyMaterial});
     EXPECT_GT(scene.materials[keyMaterial].alphaCutoff, 1.0f);
