@@ -75,10 +75,14 @@ void FinalFramePasses::makeDenoiser() {
 void FinalFramePasses::runGBuffer() {
     if (gbufferDone_) return;
     const std::size_t n = std::size_t(width_) * height_;
-    if (!gbufferPass_)
-        gbufferPass_ = std::make_unique<GBufferPass>(
-            ctx_, renderer_.gpuScene(), renderer_.frameUniforms(), viewerUniforms_, gbuffer_,
-            renderer_.kernelSpec().withOption(PN_OPTION_FRAME_STATS, false));
+    // Kept across frames, but made again when the renderer's kernels were (Renderer::setMaterial
+    // may bring code the old ones left out).
+    const KernelSpec spec = renderer_.kernelSpec().withOption(PN_OPTION_FRAME_STATS, false);
+    if (!gbufferPass_ || gbufferSpec_ != spec) {
+        gbufferPass_ = std::make_unique<GBufferPass>(ctx_, renderer_.gpuScene(), renderer_.frameUniforms(),
+                                                     viewerUniforms_, gbuffer_, spec);
+        gbufferSpec_ = spec;
+    }
     auto trace = [&](int subpixel) {
         commands_.run([&](VkCommandBuffer cmd) {
             gpu::computeBarrier(cmd);  // the last frame's denoiser has done reading the G-buffer

@@ -74,6 +74,7 @@ private:
     // filter's input, the guide, the roulette estimates nobody reads) and the a-trous scratch.
     gpu::Buffer historyIn_, current_, historyOut_, filterA_, filterB_, guide_, estimates_;
     std::unique_ptr<GBufferPass> gbufferPass_;
+    KernelSpec gbufferSpec_;  // what gbufferPass_ was specialised for
     std::unique_ptr<TemporalPass> temporal_;
     std::unique_ptr<DenoisePass> atrous_;
     std::vector<shader::GBufferTexel> centre_;

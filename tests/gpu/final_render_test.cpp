@@ -24,12 +24,6 @@ RenderSettings finalSettings(std::uint32_t size, std::uint32_t spp, std::uint32_
     return s;
 }
 
-RenderBudget samplesBudget(std::uint32_t spp) {
-    RenderBudget b;
-    b.samplesPerPixel = spp;
-    return b;
-}
-
 ImageRgb renderStraight(const gpu::Context& ctx, const Scene& scene, const RenderSettings& s,
                         const AdaptiveSettings& adaptive) {
     Renderer renderer(ctx, scene, s);

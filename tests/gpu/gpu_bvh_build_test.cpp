@@ -15,6 +15,7 @@
 #include "bvh/triangle.h"
 #include "bvh/validate.h"
 #include "gpu_fixture.h"
+#include "scene/presets/dungeon_textures.h"
 #include "ray_query.h"
 #include "render/gpu_bvh_build.h"
 #include "scene/instances.h"
@@ -165,7 +166,7 @@ TEST_F(GpuTest, GpuAndCpuBuiltTreesGiveTheSameHitsOnTheBunny) {
 // E1M1 baked (its moving sectors' instances into the world), so the whole map is one GPU-built
 // tree, sprites included.
 TEST_F(GpuTest, GpuAndCpuBuiltTreesGiveTheSameHitsOnABakedWadMap) {
-    const std::filesystem::path wad = "/usr/share/games/doom/freedoom1.wad";
+    const std::filesystem::path wad = freedoomWadPath();
     PENUMBRA_REQUIRE_ASSET(wad);
     LoadOptions options;
     options.map = "E1M1";

@@ -40,12 +40,6 @@ RenderSettings moveSettings(Accel accel) {
     return s;
 }
 
-RenderBudget samples(std::uint32_t spp) {
-    RenderBudget b;
-    b.samplesPerPixel = spp;
-    return b;
-}
-
 // Bit for bit on lavapipe (the same arrays, seed and kernels); GPUs may round the two apart.
 void expectSameSums(const gpu::Context& ctx, const std::vector<Vec4>& a, const std::vector<Vec4>& b, const char* what) {
     ASSERT_EQ(a.size(), b.size());
@@ -118,19 +112,19 @@ TEST_F(GpuTest, DenoisingPassesKeptAcrossAMoveDenoiseAsNewOnes) {
     FinalFramePasses kept(*ctx, updated);
     {
         ProgressiveRender first(updated, AdaptiveSettings{});
-        first.run(samples(16));
+        first.run(samplesBudget(16));
         kept.denoise(first.current());
     }
     updated.setInstanceTransforms(m.after);
     updated.restart(m.after.camera);
     kept.restart();
     ProgressiveRender second(updated, AdaptiveSettings{});
-    second.run(samples(16));
+    second.run(samplesBudget(16));
     const ImageRgb a = kept.denoise(second.current());
 
     Renderer fresh(*ctx, m.after, moveSettings(Accel::Bvh));
     ProgressiveRender render(fresh, AdaptiveSettings{});
-    render.run(samples(16));
+    render.run(samplesBudget(16));
     const ImageRgb b = FinalFramePasses(*ctx, fresh).denoise(render.current());
     ASSERT_EQ(a.pixels.size(), b.pixels.size());
     double sumA = 0, sumB = 0;

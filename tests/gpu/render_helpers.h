@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/vec.h"
+#include "render/progressive.h"
 #include "render/settings.h"
 #include "scene/presets/mesh_builder.h"
 #include "scene/scene.h"
@@ -82,6 +83,13 @@ inline PixelStats pixelStats(const Vec4& sums, double samples) {
     double mean = luminance(Vec3{sums.x, sums.y, sums.z}) / samples;
     double variance = std::max(0.0, sums.w / samples - mean * mean) * samples / std::max(1.0, samples - 1);
     return {mean, std::sqrt(variance / samples)};
+}
+
+// A progressive render's budget of exactly `spp` samples per pixel (no time limit).
+inline RenderBudget samplesBudget(std::uint32_t spp) {
+    RenderBudget b;
+    b.samplesPerPixel = spp;
+    return b;
 }
 
 struct MeanEstimate {

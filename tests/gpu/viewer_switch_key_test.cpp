@@ -6,9 +6,11 @@
 #include <cmath>
 #include <filesystem>
 
+#include "../unit/io/io_test_util.h"
 #include "gpu_fixture.h"
 #include "render/interactive_renderer.h"
 #include "scene/doom/level.h"
+#include "scene/presets/dungeon_textures.h"
 #include "scene/doom/level_looks.h"
 #include "scene/doom/line_specials.h"
 #include "scene/io/wad/units.h"
@@ -21,7 +23,7 @@ namespace {
 using ViewerSwitchKeyTest = GpuTest;
 
 constexpr std::uint32_t kW = 32, kH = 24;
-constexpr const char* kFreedoom = "/usr/share/games/doom/freedoom1.wad";
+const char* const kFreedoom = freedoomWadPath();  // Debian package freedoom
 
 class Viewer {
 public:
@@ -67,10 +69,7 @@ float albedoDistance(const shader::GBufferTexel& a, const shader::GBufferTexel& 
 }
 
 TEST_F(ViewerSwitchKeyTest, UsedSwitchShowsItsOtherTextureAndTurnsBack) {
-    if (!std::filesystem::exists(kFreedoom)) {
-        if (std::getenv("CI")) FAIL() << kFreedoom << " is missing (install freedoom)";
-        GTEST_SKIP() << kFreedoom << " is not installed (apt install freedoom)";
-    }
+    PENUMBRA_REQUIRE_ASSET(kFreedoom);
     Scene scene = freedoomE1M1();
     doom::Level level = *scene.doomLevel;
     const doom::SwitchMaterial* turn = nullptr;
@@ -119,10 +118,7 @@ TEST_F(ViewerSwitchKeyTest, UsedSwitchShowsItsOtherTextureAndTurnsBack) {
 }
 
 TEST_F(ViewerSwitchKeyTest, PickedUpKeyIsDrawnNowhere) {
-    if (!std::filesystem::exists(kFreedoom)) {
-        if (std::getenv("CI")) FAIL() << kFreedoom << " is missing (install freedoom)";
-        GTEST_SKIP() << kFreedoom << " is not installed (apt install freedoom)";
-    }
+    PENUMBRA_REQUIRE_ASSET(kFreedoom);
     Scene scene = freedoomE1M1();
     doom::Level level = *scene.doomLevel;
     ASSERT_FALSE(level.keyMaterials().empty());

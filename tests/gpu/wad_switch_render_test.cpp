@@ -6,10 +6,12 @@
 #include <cmath>
 #include <filesystem>
 
+#include "../unit/io/io_test_util.h"
 #include "gpu_fixture.h"
 #include "render/renderer.h"
 #include "render_helpers.h"
 #include "scene/doom/level.h"
+#include "scene/presets/dungeon_textures.h"
 #include "scene/doom/level_looks.h"
 #include "scene/io/wad/units.h"
 #include "scene/io/wad/wad_loader.h"
@@ -19,7 +21,7 @@ namespace {
 
 using WadSwitchRenderTest = GpuTest;
 
-constexpr const char* kFreedoom = "/usr/share/games/doom/freedoom1.wad";
+const char* const kFreedoom = freedoomWadPath();  // Debian package freedoom
 
 ImageRgb renderOnce(Renderer& r) {
     r.render();
@@ -27,10 +29,7 @@ ImageRgb renderOnce(Renderer& r) {
 }
 
 TEST_F(WadSwitchRenderTest, InPlaceUpdateEqualsAFreshRenderer) {
-    if (!std::filesystem::exists(kFreedoom)) {
-        if (std::getenv("CI")) FAIL() << kFreedoom << " is missing (install freedoom)";
-        GTEST_SKIP() << kFreedoom << " is not installed (apt install freedoom)";
-    }
+    PENUMBRA_REQUIRE_ASSET(kFreedoom);
     // Glowing textures off: with SW1 and SW2 glowing, the light tree of a fresh renderer weighs
     // the switch by SW2's mean glow, the updated one still by SW1's (InteractiveRenderer::
     // setMaterial keeps the light tables): equally right, not the same random choices.
